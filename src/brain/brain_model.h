@@ -1,0 +1,61 @@
+// A creature's compiled brain: wiring and parameters in flat arrays (part of
+// the immutable CreatureModel), and the per-evaluation state that changes.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "brain/neuron_set.h"
+
+namespace bx {
+
+/// The brain of one developed creature. Values are read from one array of
+/// slots: [0, n_sensors) are sensor readings written by the simulation before
+/// each brain step; [n_sensors, n_sensors + n_neurons) are neuron outputs.
+/// All neurons update synchronously from the previous step's values.
+struct BrainModel {
+  NeuronSetId set = NeuronSetId::Sims1994;
+  int n_sensors = 0;
+
+  // neurons, in update order
+  std::vector<NeuronFnId> fn;
+  std::vector<double> bias;               ///< added to the weighted sum (WeightedSum fns)
+  std::vector<std::uint32_t> param_begin; ///< size n_neurons + 1, into `params`
+  std::vector<double> params;
+  std::vector<std::uint32_t> state_begin; ///< size n_neurons + 1, into BrainState::state
+  std::vector<std::uint32_t> input_begin; ///< size n_neurons + 1, into input_src/weight
+  std::vector<std::int32_t> input_src;    ///< value slot, or -1 for "reads 0" (positional hole)
+  std::vector<double> input_weight;
+
+  // effectors, in CreatureModel effector order
+  std::vector<double> effector_bias;
+  std::vector<std::uint32_t> effector_input_begin;  ///< size n_effectors + 1
+  std::vector<std::int32_t> effector_input_src;
+  std::vector<double> effector_input_weight;
+
+  /// Owning part of each neuron (-1: global), for viewers and lesion studies.
+  std::vector<std::int32_t> neuron_part;
+
+  int n_neurons() const { return static_cast<int>(fn.size()); }
+  int n_effectors() const { return static_cast<int>(effector_bias.size()); }
+  int n_values() const { return n_sensors + n_neurons(); }
+};
+
+/// What changes in a brain during one evaluation.
+struct BrainState {
+  std::vector<double> values;  ///< current slot values (sensors then neurons)
+  std::vector<double> next;    ///< scratch for the synchronous update
+  std::vector<double> state;   ///< per-neuron internal state
+  std::vector<double> effector_out;  ///< last effector signals, in [-1,1]
+  double t = 0;                ///< brain time (s)
+};
+
+/// State for a fresh evaluation: all zeros.
+BrainState make_brain_state(const BrainModel& m);
+
+/// One brain step of length dt: every neuron computes from the current values
+/// (sensor slots must already hold this step's readings), then all outputs are
+/// published at once and effector signals recomputed.
+void brain_step(const BrainModel& m, BrainState& s, double dt);
+
+}  // namespace bx

@@ -1,0 +1,83 @@
+// CreatureModel: what development compiles a genome into. Immutable after
+// construction and shared by every evaluation of the creature; the simulation
+// reads only this, never the genome (DESIGN.md: model vs data).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "brain/brain_model.h"
+#include "core/math.h"
+#include "genome/genome.h"
+
+namespace bx {
+
+using PartIndex = std::int32_t;
+using JointIndex = std::int32_t;
+
+/// One rigid part of a developed creature.
+struct PartModel {
+  Shape shape = Shape::Box;
+  Vec3 size;          ///< full extents in the part's local frame (see Shape)
+  double mass = 1;
+  Pose pose;          ///< initial pose in the creature frame (root at origin)
+  PartIndex parent = -1;
+  int gene = 0;       ///< node index in the genome
+  bool mirrored = false;  ///< grown through an odd number of reflections
+  int depth = 0;      ///< edges from the root
+};
+
+/// The joint between a part and its parent. Anchor and axes are in the
+/// creature frame at the initial pose; `child` moves relative to `parent`.
+struct JointModel {
+  JointType type = JointType::Hinge;
+  PartIndex parent = 0;
+  PartIndex child = 0;
+  Vec3 anchor;
+  Vec3 axis1{0, 0, 1};
+  Vec3 axis2{0, 1, 0};
+  std::vector<Limit> limits;  ///< per degree of freedom; empty: unlimited
+};
+
+/// A sensor of the developed creature; its reading goes to brain slot
+/// `index in CreatureModel::sensors`.
+struct SensorModel {
+  SensorType type = SensorType::JointAngle;
+  PartIndex part = 0;
+  JointIndex joint = -1;  ///< JointAngle: the part's joint to its parent
+  int dof = 0;
+  Face face = Face::NegZ; ///< Contact: face in the part's (proper) local frame
+};
+
+/// An effector: brain effector i drives degree of freedom `dof` of `joint`.
+struct EffectorModel {
+  JointIndex joint = 0;
+  int dof = 0;
+  /// sims1994 torque mode: strength scales with the cross-section (area) of
+  /// the larger of the two parts, perpendicular to the part's x axis.
+  double cross_section = 1;
+};
+
+/// A developed creature.
+struct CreatureModel {
+  Dialect dialect = Dialect::Sims1994;
+  std::vector<PartModel> parts;    ///< parts[0] is the root; parents precede children
+  std::vector<JointModel> joints;  ///< joints[i] attaches some part to its parent
+  std::vector<SensorModel> sensors;
+  std::vector<EffectorModel> effectors;
+  BrainModel brain;
+  /// Non-fatal remarks from development (e.g. a neuron input whose source
+  /// does not exist in this body and so reads 0).
+  std::vector<std::string> warnings;
+
+  int n_parts() const { return static_cast<int>(parts.size()); }
+  double total_mass() const;
+  /// Largest extent of the creature's bounding box at the initial pose (m):
+  /// the "body length" of locomotion results.
+  double body_length() const;
+  /// Lowest z of any part at the initial pose.
+  double min_z() const;
+};
+
+}  // namespace bx

@@ -1,0 +1,49 @@
+// Dialects: the constraints each paper puts on the genome (SYSTEMS.md S0-S2).
+#pragma once
+
+#include <optional>
+#include <string_view>
+#include <vector>
+
+#include "brain/neuron_set.h"
+#include "core/result.h"
+#include "genome/genome.h"
+
+namespace bx {
+
+/// How a part's mass is derived from its node.
+enum class MassRule {
+  Density,     ///< mass = density * volume of the shape
+  TanhVolume,  ///< miconi2006 Table 1: mass = mass_scale * tanh(x*y*z)
+};
+
+/// The rules of one dialect. Zero in a count means "no limit".
+struct DialectRules {
+  Dialect dialect;
+  NeuronSetId neuron_set;
+  int max_genes;              ///< nodes in the genome
+  int max_parts;              ///< parts after development
+  bool tree_only;             ///< every non-root node has exactly one incoming edge; no cycles
+  std::vector<Shape> shapes;
+  std::vector<JointType> joints;
+  bool hinge_axis_y_or_z;     ///< miconi2006: hinge axis is the child's y or z axis
+  double angle_step;          ///< edge rotations must be multiples of this (0: free)
+  int max_neurons_per_part;
+  int max_inputs_per_neuron;  ///< 0: the function's own arity
+  MassRule mass_rule;
+  double mass_scale;          ///< for TanhVolume
+};
+
+/// The rules of a dialect.
+const DialectRules& dialect_rules(Dialect d);
+
+/// Parses "sims1994", "miconi2006", "chaumont2007".
+std::optional<Dialect> parse_dialect(std::string_view name);
+
+/// Checks a genome against its dialect and against itself (edge targets,
+/// source indices, neuron functions and parameter ranges, sensor and
+/// effector degrees of freedom). The error names the field as a path such as
+/// `nodes[2].joint.limits[0]` and the bad value.
+Status validate(const Genome& g);
+
+}  // namespace bx

@@ -1,0 +1,151 @@
+// The Sims directed-graph genome (SYSTEMS.md S0): morphology nodes joined by
+// connections (edges), each node carrying its part's neurons, sensors and
+// effectors. This is what evolution edits; development compiles it into an
+// immutable CreatureModel and the simulation never reads it.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/math.h"
+
+namespace bx {
+
+/// Which paper's constraints and neuron set a genome follows.
+enum class Dialect { Sims1994, Miconi2006, Chaumont2007 };
+
+/// Primitive shape of a part. Dimensions (`NodeGene::size`) are full extents
+/// along the part's local x, y, z: a sphere uses x as its diameter; a capsule
+/// or cylinder lies along local x with length x and diameter y.
+enum class Shape { Box, Sphere, Capsule, Cylinder };
+
+/// Joint from a part to its parent. Degrees of freedom, in order:
+/// hinge: 1 (axis1); universal: 2 (axis1, axis2); spherical: 3 (Euler angles
+/// about axis1, the third axis, axis2); slider: 1 (translation along axis1);
+/// cylindrical: 2 (translation along axis1, rotation about axis1); fixed: 0.
+enum class JointType { Fixed, Hinge, Universal, Spherical, Slider, Cylindrical };
+
+/// Number of degrees of freedom of a joint type.
+int joint_dofs(JointType t);
+
+/// A face of a part's bounding box: the outward normal's axis and sign.
+enum class Face { PosX, NegX, PosY, NegY, PosZ, NegZ };
+inline int face_axis(Face f) { return static_cast<int>(f) / 2; }
+inline double face_sign(Face f) { return static_cast<int>(f) % 2 == 0 ? 1.0 : -1.0; }
+inline Face make_face(int axis, double sign) {
+  return static_cast<Face>(axis * 2 + (sign > 0 ? 0 : 1));
+}
+
+/// Lower and upper limit of one degree of freedom (radians or metres).
+struct Limit {
+  double lo = 0;
+  double hi = 0;
+  friend bool operator==(const Limit&, const Limit&) = default;
+};
+
+/// The joint that attaches a node's part to its parent. Axes are unit
+/// vectors in the child part's local frame.
+struct JointGene {
+  JointType type = JointType::Hinge;
+  Vec3 axis1{0, 0, 1};
+  Vec3 axis2{0, 1, 0};
+  /// One entry per degree of freedom; empty means unlimited.
+  std::vector<Limit> limits;
+};
+
+/// Where a neuron or effector input reads from, relative to the part
+/// instance that owns the neuron.
+enum class SourcePlace { Self, Parent, Child, Root, Global };
+/// What it reads there.
+enum class SourceKind { Neuron, Sensor };
+
+/// One weighted input of a neuron or effector.
+/// `Child` sources read the part(s) grown through `edge` (an index into the
+/// owning node's `edges`); when that edge grows several instances (reflection)
+/// their outputs are summed. A source that does not exist in the developed
+/// creature (no parent for the root, an edge that grew nothing, a recursion
+/// cut short) reads 0 and is reported as a development warning.
+struct InputGene {
+  SourcePlace place = SourcePlace::Self;
+  SourceKind kind = SourceKind::Neuron;
+  int index = 0;
+  int edge = 0;
+  double weight = 1.0;
+};
+
+/// A neuron: a function of the dialect's neuron set with its parameters
+/// (by the function's parameter order) and inputs.
+struct NeuronGene {
+  std::string fn;
+  std::vector<double> params;
+  std::vector<InputGene> inputs;
+};
+
+/// Kinds of sensor a part can carry.
+enum class SensorType { JointAngle, Contact };
+
+/// A sensor of a part: joint angle of one degree of freedom of the part's
+/// joint to its parent (scaled to [-1,1]), or contact on one face (+1/-1).
+struct SensorGene {
+  SensorType type = SensorType::JointAngle;
+  int dof = 0;
+  Face face = Face::NegZ;
+};
+
+/// An effector driving one degree of freedom of the part's joint to its
+/// parent. Its signal is the dialect's squashing of (sum of weighted inputs
+/// + bias) into [-1,1]; the motor model (config) turns it into force.
+struct EffectorGene {
+  int dof = 0;
+  double bias = 0;
+  std::vector<InputGene> inputs;
+};
+
+/// A connection from the owning node (parent) to node `to` (child).
+/// The child is attached at point (u, v) in [-1,1]^2 of the parent's `face`
+/// (u, v run along the face's two other axes in x,y,z order), rotated by
+/// `rotation` (intrinsic x-y-z Euler angles) relative to a frame whose x axis
+/// is the face's outward normal; the child's -x end sits at the attachment
+/// point. `reflect` lists the parent's local planes (by normal axis 0,1,2)
+/// across which mirrored copies are also grown (2^n instances).
+struct EdgeGene {
+  int to = 0;
+  Face face = Face::PosX;
+  double u = 0;
+  double v = 0;
+  Vec3 rotation{0, 0, 0};
+  double scale = 1.0;
+  std::vector<int> reflect;
+  bool terminal_only = false;
+};
+
+/// A morphology node: one kind of part.
+struct NodeGene {
+  Shape shape = Shape::Box;
+  Vec3 size{1, 1, 1};
+  double density = 1.0;
+  JointGene joint;
+  /// How many times this node may appear on one root-to-leaf path.
+  int recursive_limit = 1;
+  std::vector<NeuronGene> neurons;
+  std::vector<SensorGene> sensors;
+  std::vector<EffectorGene> effectors;
+  std::vector<EdgeGene> edges;
+};
+
+/// A whole genome: node 0 is the root.
+struct Genome {
+  Dialect dialect = Dialect::Sims1994;
+  std::vector<NodeGene> nodes;
+  std::vector<NeuronGene> global_neurons;
+};
+
+std::string_view to_string(Dialect d);
+std::string_view to_string(Shape s);
+std::string_view to_string(JointType t);
+std::string_view to_string(Face f);
+std::string_view to_string(SourcePlace p);
+std::string_view to_string(SensorType t);
+
+}  // namespace bx
