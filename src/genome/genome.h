@@ -75,10 +75,12 @@ struct InputGene {
 };
 
 /// A neuron: a function of the dialect's neuron set with its parameters
-/// (by the function's parameter order) and inputs.
+/// (by the function's parameter order), a bias (threshold theta of
+/// weighted-sum neurons; 0 for positional ones) and inputs.
 struct NeuronGene {
   std::string fn;
   std::vector<double> params;
+  double bias = 0;
   std::vector<InputGene> inputs;
 };
 
