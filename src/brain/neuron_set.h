@@ -32,6 +32,10 @@ struct ParamSpec {
 /// Dense function id, unique across all sets (index into `all_neuron_fns()`).
 using NeuronFnId = std::uint16_t;
 
+/// Largest arity of any Positional function (brain_step gathers arguments
+/// into a fixed array of this size).
+inline constexpr int kMaxNeuronArity = 3;
+
 /// Description of one neuron function.
 struct NeuronFnSpec {
   NeuronFnId id;

@@ -1,0 +1,86 @@
+// Brain runtime: a fresh state per evaluation, and one synchronous step.
+// brain_step runs every physics step for every creature: it allocates
+// nothing and reads the model's flat arrays in order.
+#include <cassert>
+#include <span>
+
+#include "brain/brain_model.h"
+
+namespace bx {
+
+BrainState make_brain_state(const BrainModel& m) {
+  BrainState s;
+  s.values.assign(m.n_values(), 0.0);
+  s.next.assign(m.n_values(), 0.0);
+  s.state.assign(m.state_begin.empty() ? 0 : m.state_begin.back(), 0.0);
+  s.effector_out.assign(m.n_effectors(), 0.0);
+  s.t = 0;
+  return s;
+}
+
+void brain_step(const BrainModel& m, BrainState& s, double dt) {
+  const int n_neurons = m.n_neurons();
+  const int n_sensors = m.n_sensors;
+  assert(static_cast<int>(s.values.size()) == m.n_values());
+  assert(static_cast<int>(s.next.size()) == m.n_values());
+  assert(static_cast<int>(m.bias.size()) == n_neurons);
+  assert(static_cast<int>(m.param_begin.size()) == n_neurons + 1 || n_neurons == 0);
+  assert(static_cast<int>(m.state_begin.size()) == n_neurons + 1 || n_neurons == 0);
+  assert(static_cast<int>(m.input_begin.size()) == n_neurons + 1 || n_neurons == 0);
+  assert(static_cast<int>(s.effector_out.size()) == m.n_effectors());
+
+  const std::vector<NeuronFnSpec>& fns = all_neuron_fns();
+  const NeuronClock clock{s.t, dt};
+  const double* values = s.values.data();
+
+  // every neuron from the current values, into next
+  for (int i = 0; i < n_neurons; ++i) {
+    const NeuronFnSpec& f = fns[m.fn[i]];
+    const std::uint32_t in_b = m.input_begin[i], in_e = m.input_begin[i + 1];
+    double args[kMaxNeuronArity] = {};
+    std::size_t n_args;
+    if (f.mode == InputMode::WeightedSum) {
+      // one argument: weighted sum plus bias
+      double sum = m.bias[i];
+      for (std::uint32_t j = in_b; j < in_e; ++j) {
+        const std::int32_t src = m.input_src[j];
+        if (src >= 0) sum += m.input_weight[j] * values[src];
+      }
+      args[0] = sum;
+      n_args = 1;
+    } else {
+      // positional: input k is argument k; holes and missing inputs read 0
+      assert(f.max_inputs <= kMaxNeuronArity);
+      n_args = static_cast<std::size_t>(f.max_inputs);
+      const std::size_t n_in = in_e - in_b;
+      const std::size_t used = n_in < n_args ? n_in : n_args;
+      for (std::size_t k = 0; k < used; ++k) {
+        const std::int32_t src = m.input_src[in_b + k];
+        if (src >= 0) args[k] = m.input_weight[in_b + k] * values[src];
+      }
+    }
+    const std::span<const double> params(m.params.data() + m.param_begin[i],
+                                         m.param_begin[i + 1] - m.param_begin[i]);
+    const std::span<double> state(s.state.data() + m.state_begin[i],
+                                  m.state_begin[i + 1] - m.state_begin[i]);
+    s.next[n_sensors + i] = eval_neuron(m.fn[i], std::span<const double>(args, n_args), params,
+                                        state, clock);
+  }
+
+  // publish all neuron outputs at once (sensor slots belong to the simulation)
+  for (int i = n_sensors; i < n_sensors + n_neurons; ++i) s.values[i] = s.next[i];
+
+  // effectors from the updated values, so sensor->effector acts this step
+  for (int e = 0; e < m.n_effectors(); ++e) {
+    double sum = m.effector_bias[e];
+    for (std::uint32_t j = m.effector_input_begin[e]; j < m.effector_input_begin[e + 1]; ++j) {
+      const std::int32_t src = m.effector_input_src[j];
+      if (src >= 0) sum += m.effector_input_weight[j] * values[src];
+    }
+    s.effector_out[e] = effector_signal(m.set, sum);
+  }
+
+  s.t += dt;
+}
+
+}  // namespace bx
