@@ -52,6 +52,7 @@ struct JointGene {
   Vec3 axis2{0, 1, 0};
   /// One entry per degree of freedom; empty means unlimited.
   std::vector<Limit> limits;
+  friend bool operator==(const JointGene&, const JointGene&) = default;
 };
 
 /// Where a neuron or effector input reads from, relative to the part
@@ -72,6 +73,7 @@ struct InputGene {
   int index = 0;
   int edge = 0;
   double weight = 1.0;
+  friend bool operator==(const InputGene&, const InputGene&) = default;
 };
 
 /// A neuron: a function of the dialect's neuron set with its parameters
@@ -82,6 +84,7 @@ struct NeuronGene {
   std::vector<double> params;
   double bias = 0;
   std::vector<InputGene> inputs;
+  friend bool operator==(const NeuronGene&, const NeuronGene&) = default;
 };
 
 /// Kinds of sensor a part can carry.
@@ -93,6 +96,7 @@ struct SensorGene {
   SensorType type = SensorType::JointAngle;
   int dof = 0;
   Face face = Face::NegZ;
+  friend bool operator==(const SensorGene&, const SensorGene&) = default;
 };
 
 /// An effector driving one degree of freedom of the part's joint to its
@@ -102,6 +106,7 @@ struct EffectorGene {
   int dof = 0;
   double bias = 0;
   std::vector<InputGene> inputs;
+  friend bool operator==(const EffectorGene&, const EffectorGene&) = default;
 };
 
 /// A connection from the owning node (parent) to node `to` (child).
@@ -120,13 +125,14 @@ struct EdgeGene {
   double scale = 1.0;
   std::vector<int> reflect;
   bool terminal_only = false;
+  friend bool operator==(const EdgeGene&, const EdgeGene&) = default;
 };
 
 /// A morphology node: one kind of part.
 struct NodeGene {
   Shape shape = Shape::Box;
   Vec3 size{1, 1, 1};
-  double density = 1.0;
+  double density = 1000;  ///< kg/m^3 (water)
   JointGene joint;
   /// How many times this node may appear on one root-to-leaf path.
   int recursive_limit = 1;
@@ -134,6 +140,7 @@ struct NodeGene {
   std::vector<SensorGene> sensors;
   std::vector<EffectorGene> effectors;
   std::vector<EdgeGene> edges;
+  friend bool operator==(const NodeGene&, const NodeGene&) = default;
 };
 
 /// A whole genome: node 0 is the root.
@@ -141,6 +148,7 @@ struct Genome {
   Dialect dialect = Dialect::Sims1994;
   std::vector<NodeGene> nodes;
   std::vector<NeuronGene> global_neurons;
+  friend bool operator==(const Genome&, const Genome&) = default;
 };
 
 std::string_view to_string(Dialect d);

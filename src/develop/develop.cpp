@@ -1,0 +1,396 @@
+// Development: traverse the genome graph from the root, grow one part per
+// visit, then compile sensors, effectors and the brain into flat arrays.
+#include "develop/develop.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "genome/dialect.h"
+#include "physics/world.h"
+
+namespace bx {
+
+namespace {
+
+// One grown part while developing. Its transform (A, p) may be improper
+// (det A = -1) inside a mirrored branch; the part's proper rotation is
+// derived from it at the end.
+struct Instance {
+  int node = 0;
+  int parent = -1;       // instance index
+  int via_edge = -1;     // edge index in the parent's node
+  Mat3 A;                // local -> creature frame, possibly improper
+  Vec3 p;
+  double scale = 1;
+  Vec3 size;             // scaled extents
+  std::vector<std::vector<int>> children;  // per edge of the node: instances grown
+};
+
+// distance from the centre to the surface along unit direction d (local frame)
+double surface_distance(Shape shape, Vec3 size, Vec3 d) {
+  switch (shape) {
+    case Shape::Box: {
+      double t = 1e300;
+      for (int i = 0; i < 3; ++i)
+        if (std::abs(d[i]) > 1e-12) t = std::min(t, size[i] / 2 / std::abs(d[i]));
+      return t;
+    }
+    case Shape::Sphere: return size.x / 2;
+    case Shape::Cylinder: {
+      double r = size.y / 2, radial = std::hypot(d.y, d.z);
+      double t = radial > 1e-12 ? r / radial : 1e300;
+      if (std::abs(d.x) > 1e-12) t = std::min(t, size.x / 2 / std::abs(d.x));
+      return t;
+    }
+    case Shape::Capsule: {
+      double r = size.y / 2, h = std::max(size.x / 2 - r, 0.0), radial = std::hypot(d.y, d.z);
+      double t = radial > 1e-12 ? r / radial : 1e300;
+      if (std::abs(t * d.x) <= h) return t;
+      // the end cap: |t d - c| = r with c = (+-h, 0, 0)
+      double cx = d.x >= 0 ? h : -h, dc = d.x * cx;
+      return dc + std::sqrt(std::max(dc * dc - cx * cx + r * r, 0.0));
+    }
+  }
+  return 0;
+}
+
+// half extent of a part along its own x axis
+double half_x(Shape shape, Vec3 size) { return size.x / 2; }
+
+// the attachment point of an edge on the parent's surface, parent-local
+Vec3 attach_point(Shape shape, Vec3 size, const EdgeGene& e) {
+  int a = face_axis(e.face), b = (a + 1) % 3, c = (a + 2) % 3;
+  if (b > c) std::swap(b, c);  // u, v run along the other two axes in x,y,z order
+  Vec3 q;
+  q[a] = face_sign(e.face) * size[a] / 2;
+  q[b] = e.u * size[b] / 2;
+  q[c] = e.v * size[c] / 2;
+  if (shape == Shape::Box) return q;
+  // other shapes: move the box-face point onto the surface along its ray
+  Vec3 d = normalized(q);
+  return surface_distance(shape, size, d) * d;
+}
+
+// frame on a face: x = outward normal, right-handed
+Mat3 face_frame(Face f) {
+  int a = face_axis(f);
+  Vec3 n, t1;
+  n[a] = face_sign(f);
+  t1[(a + 1) % 3] = 1;
+  return Mat3::from_columns(n, t1, cross(n, t1));
+}
+
+double volume(Shape shape, Vec3 s) {
+  switch (shape) {
+    case Shape::Box: return s.x * s.y * s.z;
+    case Shape::Sphere: return 4.0 / 3.0 * kPi * std::pow(s.x / 2, 3);
+    case Shape::Cylinder: return kPi * std::pow(s.y / 2, 2) * s.x;
+    case Shape::Capsule: {
+      double r = s.y / 2;
+      return kPi * r * r * std::max(s.x - 2 * r, 0.0) + 4.0 / 3.0 * kPi * r * r * r;
+    }
+  }
+  return 0;
+}
+
+// area of the cross-section perpendicular to the part's x axis
+double cross_section(Shape shape, Vec3 s) {
+  return shape == Shape::Box ? s.y * s.z : kPi * std::pow((shape == Shape::Sphere ? s.x : s.y) / 2, 2);
+}
+
+// unit vector perpendicular to a, as close to b as possible
+Vec3 orthogonalize(Vec3 a, Vec3 b) {
+  Vec3 r = b - dot(a, b) * a;
+  if (norm(r) < 1e-9) r = cross(a, std::abs(a.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0});
+  return normalized(r);
+}
+
+class Grower {
+ public:
+  Grower(const Genome& g, int max_parts) : g_(g), max_parts_(max_parts) {}
+
+  /// The instances in depth-first order; empty if more than max_parts.
+  std::vector<Instance> grow() {
+    Instance root;
+    root.node = 0;
+    root.size = g_.nodes[0].size;
+    root.children.resize(g_.nodes[0].edges.size());
+    out_.push_back(root);
+    expand(0);
+    if (overflow_) return {};
+    return std::move(out_);
+  }
+
+ private:
+  // times node n occurs on the path from the root to instance i (inclusive)
+  int occurrences(int i, int n) const {
+    int k = 0;
+    for (; i >= 0; i = out_[i].parent) k += out_[i].node == n;
+    return k;
+  }
+
+  void expand(int i) {
+    if (overflow_) return;
+    const NodeGene& node = g_.nodes[out_[i].node];
+    bool at_limit = occurrences(i, out_[i].node) >= node.recursive_limit;
+    for (std::size_t k = 0; k < node.edges.size(); ++k) {
+      const EdgeGene& e = node.edges[k];
+      if (e.terminal_only && !at_limit) continue;
+      if (occurrences(i, e.to) >= g_.nodes[e.to].recursive_limit) continue;
+      // one instance per combination of reflections: 2^n
+      int copies = 1 << e.reflect.size();
+      for (int mask = 0; mask < copies; ++mask) {
+        Vec3 flip{1, 1, 1};
+        for (std::size_t r = 0; r < e.reflect.size(); ++r)
+          if (mask & (1 << r)) flip[e.reflect[r]] = -1;
+        if (static_cast<int>(out_.size()) >= max_parts_) {
+          overflow_ = true;
+          return;
+        }
+        int c = add_child(i, static_cast<int>(k), Mat3::diag(flip.x, flip.y, flip.z));
+        out_[i].children[k].push_back(c);
+        expand(c);
+      }
+    }
+  }
+
+  int add_child(int i, int edge, const Mat3& mirror) {
+    const Instance& par = out_[i];
+    const NodeGene& pnode = g_.nodes[par.node];
+    const EdgeGene& e = pnode.edges[edge];
+    const NodeGene& cnode = g_.nodes[e.to];
+    Instance ch;
+    ch.node = e.to;
+    ch.parent = i;
+    ch.via_edge = edge;
+    ch.scale = par.scale * e.scale;
+    ch.size = ch.scale * cnode.size;
+    ch.children.resize(cnode.edges.size());
+    // child frame relative to the parent: face frame, then the edge's rotation
+    Mat3 Q = face_frame(e.face) * euler_xyz(e.rotation);
+    Vec3 q = attach_point(pnode.shape, par.size, e);
+    Vec3 centre = q + Q * Vec3{half_x(cnode.shape, ch.size), 0, 0};
+    Mat3 AM = par.A * mirror;
+    ch.A = AM * Q;
+    ch.p = par.p + AM * centre;
+    anchors_.resize(out_.size() + 1);
+    anchors_[out_.size()] = par.p + AM * q;
+    out_.push_back(std::move(ch));
+    return static_cast<int>(out_.size()) - 1;
+  }
+
+ public:
+  std::vector<Vec3> anchors_;  // anchor of each instance's joint (creature frame)
+
+ private:
+  const Genome& g_;
+  int max_parts_;
+  bool overflow_ = false;
+  std::vector<Instance> out_;
+};
+
+// Resolves one input gene of instance `inst` to a value slot (-1: reads 0).
+class Wiring {
+ public:
+  Wiring(const Genome& g, const std::vector<Instance>& inst, CreatureModel& m)
+      : g_(g), inst_(inst), m_(m) {}
+
+  std::vector<int> sensor_base, neuron_base;
+  int global_base = 0;
+
+  int slot(int owner, const InputGene& in, const std::string& where) {
+    int target = -1;
+    switch (in.place) {
+      case SourcePlace::Self: target = owner; break;
+      case SourcePlace::Parent: target = owner >= 0 ? inst_[owner].parent : -1; break;
+      case SourcePlace::Root: target = 0; break;
+      case SourcePlace::Child: {
+        // the first instance grown through that edge (the unreflected copy)
+        const auto& kids = inst_[owner].children;
+        if (in.edge < static_cast<int>(kids.size()) && !kids[in.edge].empty())
+          target = kids[in.edge][0];
+        break;
+      }
+      case SourcePlace::Global:
+        if (in.index < static_cast<int>(g_.global_neurons.size()))
+          return m_.brain.n_sensors + global_base + in.index;
+        return missing(where);
+    }
+    if (target < 0) return missing(where);
+    const NodeGene& tn = g_.nodes[inst_[target].node];
+    if (in.kind == SourceKind::Sensor) {
+      if (in.index >= static_cast<int>(tn.sensors.size())) return missing(where);
+      return sensor_base[target] + in.index;
+    }
+    if (in.index >= static_cast<int>(tn.neurons.size())) return missing(where);
+    return m_.brain.n_sensors + neuron_base[target] + in.index;
+  }
+
+ private:
+  int missing(const std::string& where) {
+    if (std::find(reported_.begin(), reported_.end(), where) == reported_.end()) {
+      reported_.push_back(where);
+      m_.warnings.push_back(where + ": its source does not exist in this body; it reads 0");
+    }
+    return -1;
+  }
+  const Genome& g_;
+  const std::vector<Instance>& inst_;
+  CreatureModel& m_;
+  std::vector<std::string> reported_;
+};
+
+// compiles one neuron (or global neuron) into the brain arrays
+void add_neuron(BrainModel& b, const NeuronGene& ng, int part, int owner, Wiring& wiring,
+                const std::string& where) {
+  const NeuronFnSpec* spec = find_neuron_fn(b.set, ng.fn);
+  b.fn.push_back(spec->id);
+  b.bias.push_back(ng.bias);
+  // parameters: the gene's, then defaults for the rest
+  for (std::size_t k = 0; k < spec->params.size(); ++k)
+    b.params.push_back(k < ng.params.size() ? ng.params[k] : spec->params[k].default_value);
+  std::span<const double> ps(b.params.data() + b.param_begin.back(), spec->params.size());
+  b.param_begin.push_back(static_cast<std::uint32_t>(b.params.size()));
+  b.state_begin.push_back(b.state_begin.back() + spec->state_size(ps));
+  for (std::size_t k = 0; k < ng.inputs.size(); ++k) {
+    b.input_src.push_back(
+        wiring.slot(owner, ng.inputs[k], where + ".inputs[" + std::to_string(k) + "]"));
+    b.input_weight.push_back(ng.inputs[k].weight);
+  }
+  b.input_begin.push_back(static_cast<std::uint32_t>(b.input_src.size()));
+  b.neuron_part.push_back(part);
+}
+
+}  // namespace
+
+Development develop(const Genome& g, const DevelopDef& def) {
+  const DialectRules& rules = dialect_rules(g.dialect);
+  int max_parts = def.max_parts > 0 ? def.max_parts : (rules.max_parts > 0 ? rules.max_parts : 1000);
+
+  // grow the tree of part instances
+  Grower grower(g, max_parts);
+  std::vector<Instance> inst = grower.grow();
+  if (inst.empty()) return {std::nullopt, "too many parts: more than " + std::to_string(max_parts)};
+  const auto& anchors = grower.anchors_;
+
+  CreatureModel m;
+  m.dialect = g.dialect;
+  int n = static_cast<int>(inst.size());
+  std::vector<bool> flipped(n);  // improper frame: proper rotation flips local z
+
+  // parts and joints
+  for (int i = 0; i < n; ++i) {
+    const Instance& in = inst[i];
+    const NodeGene& node = g.nodes[in.node];
+    PartModel part;
+    part.shape = node.shape;
+    part.size = in.size;
+    part.mass = rules.mass_rule == MassRule::TanhVolume
+                    ? rules.mass_scale * std::tanh(in.size.x * in.size.y * in.size.z)
+                    : node.density * volume(node.shape, in.size);
+    flipped[i] = in.A.det() < 0;
+    part.pose = {in.p, flipped[i] ? in.A * Mat3::diag(1, 1, -1) : in.A};
+    part.parent = in.parent;
+    part.gene = in.node;
+    part.mirrored = flipped[i];
+    part.depth = in.parent < 0 ? 0 : m.parts[in.parent].depth + 1;
+    m.parts.push_back(part);
+  }
+  std::vector<int> joint_of(n, -1);
+  for (int i = 1; i < n; ++i) {
+    const Instance& in = inst[i];
+    const JointGene& jg = g.nodes[in.node].joint;
+    JointModel j;
+    j.type = jg.type;
+    j.parent = in.parent;
+    j.child = i;
+    j.anchor = anchors[i];
+    // axes are pseudovectors: in a mirrored frame they flip with the determinant
+    double s = flipped[i] ? -1.0 : 1.0;
+    Vec3 a1 = normalized(s * (in.A * jg.axis1));
+    Vec3 a2 = s * (in.A * jg.axis2);
+    j.axis1 = a1;
+    j.axis2 = orthogonalize(a1, normalized(a2));
+    j.limits = jg.limits;
+    if (j.limits.empty() && j.type == JointType::Hinge && rules.default_hinge_limits)
+      j.limits = {*rules.default_hinge_limits};
+    joint_of[i] = static_cast<int>(m.joints.size());
+    m.joints.push_back(j);
+  }
+
+  // self-intersection of parts not joined to each other
+  auto [a, b] = find_self_intersection(m, def.overlap_margin);
+  if (a >= 0)
+    return {std::nullopt, "self-intersection: parts " + std::to_string(a) + " (gene " +
+                              std::to_string(m.parts[a].gene) + ") and " + std::to_string(b) +
+                              " (gene " + std::to_string(m.parts[b].gene) + ") overlap"};
+
+  // sensors, then neuron numbering
+  BrainModel& brain = m.brain;
+  brain.set = rules.neuron_set;
+  Wiring wiring(g, inst, m);
+  wiring.sensor_base.resize(n);
+  wiring.neuron_base.resize(n);
+  int n_neurons = 0;
+  for (int i = 0; i < n; ++i) {
+    const NodeGene& node = g.nodes[inst[i].node];
+    wiring.sensor_base[i] = static_cast<int>(m.sensors.size());
+    wiring.neuron_base[i] = n_neurons;
+    n_neurons += static_cast<int>(node.neurons.size());
+    for (const SensorGene& sg : node.sensors) {
+      SensorModel s;
+      s.type = sg.type;
+      s.part = i;
+      s.joint = joint_of[i];
+      s.dof = sg.dof;
+      // a contact face in a mirrored frame: the proper frame flips local z
+      s.face = flipped[i] && face_axis(sg.face) == 2 ? make_face(2, -face_sign(sg.face)) : sg.face;
+      m.sensors.push_back(s);
+    }
+  }
+  brain.n_sensors = static_cast<int>(m.sensors.size());
+  wiring.global_base = n_neurons;
+
+  // neurons of every part, then the global neurons
+  brain.param_begin = {0};
+  brain.state_begin = {0};
+  brain.input_begin = {0};
+  for (int i = 0; i < n; ++i) {
+    const NodeGene& node = g.nodes[inst[i].node];
+    for (std::size_t k = 0; k < node.neurons.size(); ++k)
+      add_neuron(brain, node.neurons[k], i, i, wiring,
+                 "nodes[" + std::to_string(inst[i].node) + "].neurons[" + std::to_string(k) + "]");
+  }
+  for (std::size_t k = 0; k < g.global_neurons.size(); ++k)
+    add_neuron(brain, g.global_neurons[k], -1, 0, wiring,
+               "global_neurons[" + std::to_string(k) + "]");
+
+  // effectors of every part that has a joint
+  brain.effector_input_begin = {0};
+  for (int i = 1; i < n; ++i) {
+    const NodeGene& node = g.nodes[inst[i].node];
+    for (std::size_t k = 0; k < node.effectors.size(); ++k) {
+      const EffectorGene& eg = node.effectors[k];
+      EffectorModel e;
+      e.joint = joint_of[i];
+      e.dof = eg.dof;
+      const PartModel& pc = m.parts[i];
+      const PartModel& pp = m.parts[inst[i].parent];
+      e.cross_section = std::max(cross_section(pc.shape, pc.size), cross_section(pp.shape, pp.size));
+      m.effectors.push_back(e);
+      brain.effector_bias.push_back(eg.bias);
+      std::string where =
+          "nodes[" + std::to_string(inst[i].node) + "].effectors[" + std::to_string(k) + "]";
+      for (std::size_t q = 0; q < eg.inputs.size(); ++q) {
+        brain.effector_input_src.push_back(
+            wiring.slot(i, eg.inputs[q], where + ".inputs[" + std::to_string(q) + "]"));
+        brain.effector_input_weight.push_back(eg.inputs[q].weight);
+      }
+      brain.effector_input_begin.push_back(static_cast<std::uint32_t>(brain.effector_input_src.size()));
+    }
+  }
+  return {std::move(m), {}};
+}
+
+}  // namespace bx

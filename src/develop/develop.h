@@ -1,0 +1,36 @@
+// Development: the compiler from Genome to CreatureModel (DESIGN.md).
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "develop/creature_model.h"
+#include "genome/genome.h"
+
+namespace bx {
+
+/// Settings of development. Defaults come from the genome's dialect.
+struct DevelopDef {
+  /// Most parts after development; 0 takes the dialect's max_parts.
+  int max_parts = 0;
+  /// Self-intersection test: parts are shrunk by this much (m) on every side,
+  /// so parts that merely touch are not counted as overlapping.
+  double overlap_margin = 0.005;
+};
+
+/// What development made of a genome: a viable creature, or the reason it is
+/// not viable. Non-viability is a value, never an exception.
+struct Development {
+  std::optional<CreatureModel> model;
+  std::string reason;  ///< empty when viable
+  bool viable() const { return model.has_value(); }
+};
+
+/// Grows the genome from its root: honours recursive limits, terminal-only
+/// edges, reflections (mirrored geometry, joint axes and contact faces) and
+/// scale; places each child by its edge; compiles the brain into flat arrays.
+/// The genome must be valid (see validate()). Not viable when it would grow
+/// more than max_parts parts or two parts not joined to each other overlap.
+Development develop(const Genome& g, const DevelopDef& def = {});
+
+}  // namespace bx

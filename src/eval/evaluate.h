@@ -1,0 +1,44 @@
+// Evaluation: a pure function of (creature, config, seed).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "develop/creature_model.h"
+#include "eval/sim_config.h"
+
+namespace bx {
+
+/// One recorded moment of an evaluation.
+struct ReplayFrame {
+  double t = 0;
+  std::vector<double> poses;    ///< 7 per part: x y z qw qx qy qz
+  std::vector<double> neurons;  ///< every neuron's output
+  std::vector<double> effectors;  ///< every effector's signal
+  Vec3 com;
+};
+
+/// Frames of an evaluation, sampled at SimConfig::replay_fps.
+struct Replay {
+  std::vector<ReplayFrame> frames;
+};
+
+/// What an evaluation measured.
+struct EvalResult {
+  bool failed = false;      ///< a numerical explosion ended it (fitness is 0)
+  std::string failure;      ///< why, when failed
+  double fitness = 0;
+  double distance = 0;      ///< m, by the task's metric
+  double seconds = 0;       ///< simulated time
+  long steps = 0;
+  std::vector<std::string> warnings;
+};
+
+/// Simulates the creature on flat ground with its own brain. Reseeds ODE's
+/// generator from `seed` first, so equal inputs give bit-identical results.
+/// When `replay` is given, frames are appended to it.
+EvalResult evaluate(const CreatureModel& m, const SimConfig& cfg, std::uint64_t seed,
+                    Replay* replay = nullptr);
+
+}  // namespace bx

@@ -1,0 +1,45 @@
+#include "eval/sim_config.h"
+
+namespace bx {
+
+SimConfig default_sim_config(Dialect d) {
+  SimConfig c;
+  switch (d) {
+    case Dialect::Miconi2006:
+      // Table 1: step 0.01 s, ERP 0.015, CFM 0.01, motors 4 N and 4 rad/s;
+      // 10,000 steps per evaluation; distance along x after the first 1/8 (5.2)
+      c.physics.dt = 0.01;
+      c.physics.erp = 0.015;
+      c.physics.cfm = 0.01;
+      c.motor.model = MotorModel::Servo;
+      c.motor.max_speed = 4;
+      c.motor.max_force = 4;
+      c.task.seconds = 100;
+      c.task.metric = DistanceMetric::AlongX;
+      c.task.skip_fraction = 1.0 / 8;
+      break;
+    case Dialect::Chaumont2007:
+      // 5.4: step 1/60 s; 5.3: motors at saturation, force from the signal;
+      // 3.4: joint strength proportional to the larger block's cross-section;
+      // 3.5: 20 s evaluations; 3.6: friction "set high" (our value: 2)
+      c.physics.dt = 1.0 / 60;
+      c.physics.friction = 2.0;
+      c.motor.model = MotorModel::Saturation;
+      c.motor.max_speed = 10;
+      c.motor.strength = 300;
+      c.task.seconds = 20;
+      break;
+    case Dialect::Sims1994:
+      // Sims (1994): effector torque scaled by cross-section; two brain steps per
+      // physics step
+      c.physics.dt = 0.01;
+      c.motor.model = MotorModel::Torque;
+      c.motor.strength = 1000;
+      c.brain_steps_per_physics_step = 2;
+      c.task.seconds = 10;
+      break;
+  }
+  return c;
+}
+
+}  // namespace bx

@@ -1,0 +1,26 @@
+// Everything an evaluation needs besides the creature and the seed, with
+// each dialect's paper constants as defaults.
+#pragma once
+
+#include "develop/develop.h"
+#include "genome/genome.h"
+#include "physics/physics_def.h"
+#include "task/locomotion.h"
+
+namespace bx {
+
+/// The settings of one simulation. Config files (io/config.h) map onto these
+/// fields one to one, section by section.
+struct SimConfig {
+  PhysicsDef physics;
+  MotorDef motor;
+  int brain_steps_per_physics_step = 1;
+  DevelopDef develop;
+  LocomotionDef task;
+  double replay_fps = 30;  ///< frames per simulated second in replays
+};
+
+/// The defaults of a dialect (its paper's constants; docs/config.md lists them).
+SimConfig default_sim_config(Dialect d);
+
+}  // namespace bx

@@ -1,0 +1,104 @@
+#include "io/replay_file.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+#include "brain/neuron_set.h"
+#include "core/files.h"
+
+namespace bx {
+
+namespace {
+
+using nlohmann::json;
+
+// Rounding keeps files small: 10 micrometres, 1e-5 of a quaternion, 1e-4 of a
+// signal. Going through decimal text gives the double nearest the rounded
+// decimal, which prints short.
+double round_to(double v, double q) {
+  int digits = static_cast<int>(std::lround(-std::log10(q)));
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
+  double r = std::strtod(buf, nullptr);
+  return r == 0 ? 0.0 : r;  // no "-0.0"
+}
+
+json vec_json(Vec3 v, double q) { return json::array({round_to(v.x, q), round_to(v.y, q), round_to(v.z, q)}); }
+
+}  // namespace
+
+std::string replay_to_string(const CreatureModel& m, const Replay& r, const EvalResult& res,
+                             const ReplayInfo& info) {
+  json j;
+  j["format"] = "bestiary-replay";
+  j["version"] = 1;
+  j["bestiary"] = std::string(BESTIARY_VERSION);
+  j["genome"] = info.genome_source;
+  j["dialect"] = std::string(to_string(m.dialect));
+  j["seed"] = info.seed;
+  j["dt"] = info.dt;
+  // the scene: ground and props, each drawn from its description
+  j["scene"] = {{"ground", {{"type", "plane"}, {"z", 0.0}, {"friction", info.friction}}},
+                {"props", json::array()}};
+  // parts and joints at the initial pose
+  json parts = json::array();
+  for (const auto& p : m.parts)
+    parts.push_back({{"shape", std::string(to_string(p.shape))},
+                     {"size", vec_json(p.size, 1e-6)},
+                     {"mass", p.mass},
+                     {"gene", p.gene},
+                     {"parent", p.parent},
+                     {"mirrored", p.mirrored}});
+  j["parts"] = parts;
+  json joints = json::array();
+  for (const auto& jm : m.joints)
+    joints.push_back({{"type", std::string(to_string(jm.type))},
+                      {"parent", jm.parent},
+                      {"child", jm.child},
+                      {"anchor", vec_json(jm.anchor, 1e-6)},
+                      {"axis1", vec_json(jm.axis1, 1e-6)},
+                      {"axis2", vec_json(jm.axis2, 1e-6)}});
+  j["joints"] = joints;
+  json neurons = json::array();
+  for (int i = 0; i < m.brain.n_neurons(); ++i)
+    neurons.push_back({{"part", m.brain.neuron_part[i]},
+                       {"fn", std::string(all_neuron_fns()[m.brain.fn[i]].name)}});
+  j["neurons"] = neurons;
+  json effectors = json::array();
+  for (const auto& e : m.effectors) effectors.push_back({{"joint", e.joint}, {"dof", e.dof}});
+  j["effectors"] = effectors;
+  // frames
+  json frames = json::array();
+  for (const auto& f : r.frames) {
+    json poses = json::array();
+    for (std::size_t i = 0; i + 6 < f.poses.size(); i += 7)
+      poses.push_back({round_to(f.poses[i], 1e-5), round_to(f.poses[i + 1], 1e-5),
+                       round_to(f.poses[i + 2], 1e-5), round_to(f.poses[i + 3], 1e-5),
+                       round_to(f.poses[i + 4], 1e-5), round_to(f.poses[i + 5], 1e-5),
+                       round_to(f.poses[i + 6], 1e-5)});
+    json nv = json::array(), ev = json::array();
+    for (double v : f.neurons) nv.push_back(round_to(v, 1e-4));
+    for (double v : f.effectors) ev.push_back(round_to(v, 1e-4));
+    frames.push_back({{"t", round_to(f.t, 1e-6)},
+                      {"poses", poses},
+                      {"com", vec_json(f.com, 1e-5)},
+                      {"neurons", nv},
+                      {"effectors", ev}});
+  }
+  j["frames"] = frames;
+  j["result"] = {{"fitness", res.fitness},   {"distance", res.distance},
+                 {"failed", res.failed},     {"failure", res.failure},
+                 {"seconds", res.seconds},   {"steps", res.steps},
+                 {"warnings", res.warnings}};
+  return j.dump() + "\n";
+}
+
+Status save_replay(const std::string& path, const CreatureModel& m, const Replay& r,
+                   const EvalResult& res, const ReplayInfo& info) {
+  return write_file_atomic(path, replay_to_string(m, r, res, info));
+}
+
+}  // namespace bx

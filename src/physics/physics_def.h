@@ -1,0 +1,43 @@
+// Definitions of the physics world and the motors, with their defaults in one
+// place (DESIGN.md: definition structs). Config files map onto these; presets
+// and dialects override them.
+#pragma once
+
+namespace bx {
+
+/// The physics world. Defaults are ODE's usual values; each dialect sets its
+/// paper's constants (see io/config.cpp).
+struct PhysicsDef {
+  double dt = 0.01;              ///< step length (s)
+  double gravity = -9.81;        ///< along z (m/s^2)
+  double erp = 0.2;              ///< ODE error reduction parameter
+  double cfm = 1e-5;             ///< ODE constraint force mixing
+  double friction = 1.0;         ///< Coulomb coefficient, ground and part-part contacts
+  int solver_iterations = 20;    ///< QuickStep iterations
+  int max_contacts = 4;          ///< contact points per colliding pair
+  bool self_collision = true;    ///< non-adjacent parts collide with each other
+  // numerical-explosion tests (chaumont2007 5.4): exceeding any ends the evaluation
+  double max_speed = 50;         ///< a part's linear speed (m/s)
+  double max_step_jump = 0.5;    ///< a part's displacement in one step (m)
+  double max_joint_gap = 0.5;    ///< distance between a joint's anchors on its two parts (m)
+};
+
+/// How effector signals in [-1,1] move joints.
+enum class MotorModel {
+  Servo,       ///< miconi2006: target velocity max_speed*s, force capped at max_force
+  Saturation,  ///< chaumont2007 5.3: target velocity sign(s)*max_speed, force cap |s|*max_force
+  Torque,      ///< sims1994: torque s*strength*cross-section of the larger part
+  PD,          ///< rivercrossing: T = kp(theta_d - theta) - kd*dtheta, theta_d from s
+};
+
+/// The motors of every effector of a creature.
+struct MotorDef {
+  MotorModel model = MotorModel::Servo;
+  double max_speed = 4;   ///< rad/s (or m/s for sliders)
+  double max_force = 4;   ///< N m (or N)
+  double strength = 50;   ///< Torque: N m per m^2 of cross-section
+  double kp = 0.25;       ///< PD gain
+  double kd = 0.175;      ///< PD damping
+};
+
+}  // namespace bx

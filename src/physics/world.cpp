@@ -1,0 +1,531 @@
+// ODE implementation of the physics world.
+#include "physics/world.h"
+
+#include <ode/ode.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <mutex>
+
+namespace bx {
+
+namespace {
+
+std::once_flag g_ode_once;
+
+// ODE matrices are 3x4 row-major
+void to_ode(const Mat3& R, dMatrix3 out) {
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) out[i * 4 + j] = R.m[i][j];
+    out[i * 4 + 3] = 0;
+  }
+}
+
+Mat3 from_ode(const dReal* r) {
+  Mat3 R;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) R.m[i][j] = r[i * 4 + j];
+  return R;
+}
+
+Vec3 vec(const dReal* v) { return {v[0], v[1], v[2]}; }
+
+// rotation taking ODE's z-aligned capsules and cylinders to our x-aligned ones
+Mat3 z_to_x() { return Mat3::rotation({0, 1, 0}, kPi / 2); }
+
+// geometry of one part, sizes shrunk by `margin` on every side
+dGeomID make_geom(dSpaceID space, Shape shape, Vec3 size, double margin) {
+  auto shrink = [&](double full) { return std::max(full - 2 * margin, 1e-4); };
+  switch (shape) {
+    case Shape::Box:
+      return dCreateBox(space, shrink(size.x), shrink(size.y), shrink(size.z));
+    case Shape::Sphere:
+      return dCreateSphere(space, shrink(size.x) / 2);
+    case Shape::Capsule: {
+      double r = shrink(size.y) / 2;
+      return dCreateCapsule(space, r, std::max(shrink(size.x) - 2 * r, 0.0));
+    }
+    case Shape::Cylinder:
+      return dCreateCylinder(space, shrink(size.y) / 2, shrink(size.x));
+  }
+  return nullptr;
+}
+
+// sets a geom's world pose, turning z-aligned ODE primitives to lie along x
+void place_geom(dGeomID g, Shape shape, const Pose& pose) {
+  dGeomSetPosition(g, pose.p.x, pose.p.y, pose.p.z);
+  Mat3 R = pose.R;
+  if (shape == Shape::Capsule || shape == Shape::Cylinder) R = R * z_to_x();
+  dMatrix3 m;
+  to_ode(R, m);
+  dGeomSetRotation(g, m);
+}
+
+bool is_linear_dof(JointType t, int dof) {
+  return t == JointType::Slider || (t == JointType::Cylindrical && dof == 0);
+}
+
+}  // namespace
+
+void ensure_ode_initialized() {
+  std::call_once(g_ode_once, [] {
+    dInitODE2(0);
+    // ODE prints and aborts on internal errors; keep messages on stderr short
+    dSetMessageHandler([](int, const char*, va_list) {});
+  });
+  static thread_local bool thread_ready = false;
+  if (!thread_ready) {
+    dAllocateODEDataForThread(dAllocateMaskAll);
+    thread_ready = true;
+  }
+}
+
+void reseed_physics(std::uint64_t seed) {
+  ensure_ode_initialized();
+  dRandSetSeed(static_cast<unsigned long>(seed & 0xffffffffULL));
+}
+
+struct World::Impl {
+  struct Joint {
+    dJointID id = nullptr;
+    dJointID amotor = nullptr;  // spherical joints: Euler angular motor for angles/limits/motors
+    JointType type = JointType::Fixed;
+    int parent = 0, child = 0;
+  };
+
+  PhysicsDef def;
+  dWorldID world = nullptr;
+  dSpaceID space = nullptr;
+  dJointGroupID contact_group = nullptr;
+  dThreadingImplementationID threading = nullptr;
+  std::vector<dBodyID> bodies;
+  std::vector<dGeomID> geoms;
+  std::vector<double> masses;
+  std::vector<Joint> joints;
+  std::vector<std::uint8_t> contact_mask;
+  std::vector<Vec3> prev_pos;
+  std::vector<std::array<double, 3>> joint_torque;  // Torque/PD accumulation per joint
+  std::vector<dContact> contact_buf;
+  double total_mass = 0;
+  double t = 0;
+
+  // joint parameter of one degree of freedom
+  void set_param(const Joint& j, int dof, int param, double v) const {
+    int p = param + dParamGroup * dof;
+    switch (j.type) {
+      case JointType::Hinge: dJointSetHingeParam(j.id, param, v); break;
+      case JointType::Universal: dJointSetUniversalParam(j.id, p, v); break;
+      case JointType::Slider: dJointSetSliderParam(j.id, param, v); break;
+      case JointType::Cylindrical: dJointSetPistonParam(j.id, p, v); break;
+      case JointType::Spherical: dJointSetAMotorParam(j.amotor, p, v); break;
+      case JointType::Fixed: break;
+    }
+  }
+
+  double position(const Joint& j, int dof) const {
+    switch (j.type) {
+      case JointType::Hinge: return dJointGetHingeAngle(j.id);
+      case JointType::Universal:
+        return dof == 0 ? dJointGetUniversalAngle1(j.id) : dJointGetUniversalAngle2(j.id);
+      case JointType::Slider: return dJointGetSliderPosition(j.id);
+      case JointType::Cylindrical:
+        return dof == 0 ? dJointGetPistonPosition(j.id) : dJointGetPistonAngle(j.id);
+      case JointType::Spherical: return dJointGetAMotorAngle(j.amotor, dof);
+      case JointType::Fixed: return 0;
+    }
+    return 0;
+  }
+
+  double rate(const Joint& j, int dof) const {
+    switch (j.type) {
+      case JointType::Hinge: return dJointGetHingeAngleRate(j.id);
+      case JointType::Universal:
+        return dof == 0 ? dJointGetUniversalAngle1Rate(j.id) : dJointGetUniversalAngle2Rate(j.id);
+      case JointType::Slider: return dJointGetSliderPositionRate(j.id);
+      case JointType::Cylindrical:
+        return dof == 0 ? dJointGetPistonPositionRate(j.id) : dJointGetPistonAngleRate(j.id);
+      case JointType::Spherical: return dJointGetAMotorAngleRate(j.amotor, dof);
+      case JointType::Fixed: return 0;
+    }
+    return 0;
+  }
+
+  // adds the accumulated torques (Torque and PD motor models)
+  void apply_torques() {
+    for (std::size_t k = 0; k < joints.size(); ++k) {
+      auto& tq = joint_torque[k];
+      const Joint& j = joints[k];
+      switch (j.type) {
+        case JointType::Hinge: dJointAddHingeTorque(j.id, tq[0]); break;
+        case JointType::Universal: dJointAddUniversalTorques(j.id, tq[0], tq[1]); break;
+        case JointType::Slider: dJointAddSliderForce(j.id, tq[0]); break;
+        case JointType::Cylindrical: {
+          dJointAddPistonForce(j.id, tq[0]);
+          dVector3 a;
+          dJointGetPistonAxis(j.id, a);
+          dBodyAddTorque(bodies[j.parent], tq[1] * a[0], tq[1] * a[1], tq[1] * a[2]);
+          dBodyAddTorque(bodies[j.child], -tq[1] * a[0], -tq[1] * a[1], -tq[1] * a[2]);
+          break;
+        }
+        case JointType::Spherical: dJointAddAMotorTorques(j.amotor, tq[0], tq[1], tq[2]); break;
+        case JointType::Fixed: break;
+      }
+      tq = {0, 0, 0};
+    }
+  }
+
+  static void near_callback(void* data, dGeomID a, dGeomID b) {
+    static_cast<Impl*>(data)->collide(a, b);
+  }
+
+  void collide(dGeomID a, dGeomID b) {
+    dBodyID ba = dGeomGetBody(a), bb = dGeomGetBody(b);
+    if (ba && bb) {
+      // parts joined by a joint never collide; others only with self_collision
+      if (!def.self_collision || dAreConnectedExcluding(ba, bb, dJointTypeContact)) return;
+    }
+    int n = dCollide(a, b, def.max_contacts, &contact_buf[0].geom, sizeof(dContact));
+    for (int i = 0; i < n; ++i) {
+      dContact& c = contact_buf[i];
+      c.surface.mode = dContactApprox1;
+      c.surface.mu = def.friction;
+      dJointID cj = dJointCreateContact(world, contact_group, &c);
+      dJointAttach(cj, ba, bb);
+      // ODE's normal points into geom a: a is touched on the face facing -n, b on +n
+      mark_face(a, c.geom.normal, -1);
+      mark_face(b, c.geom.normal, +1);
+    }
+  }
+
+  // sets the contact bit of the face of part geom `g` whose outward normal is
+  // closest to sign * n (a contact normal, world frame); the normal, unlike the
+  // contact point, is unambiguous at edges and corners
+  void mark_face(dGeomID g, const dReal* n, double sign) {
+    auto data = reinterpret_cast<std::intptr_t>(dGeomGetData(g));
+    if (data <= 0) return;  // ground
+    int part = static_cast<int>(data - 1);
+    dVector3 local;
+    dBodyVectorFromWorld(bodies[part], sign * n[0], sign * n[1], sign * n[2], local);
+    int axis = 0;
+    for (int k = 1; k < 3; ++k)
+      if (std::abs(local[k]) > std::abs(local[axis])) axis = k;
+    contact_mask[part] |= static_cast<std::uint8_t>(1u << static_cast<int>(make_face(axis, local[axis])));
+  }
+};
+
+World::World(const PhysicsDef& def) : impl_(std::make_unique<Impl>()) {
+  ensure_ode_initialized();
+  auto& w = *impl_;
+  w.def = def;
+  w.world = dWorldCreate();
+  dWorldSetGravity(w.world, 0, 0, def.gravity);
+  dWorldSetERP(w.world, def.erp);
+  dWorldSetCFM(w.world, def.cfm);
+  dWorldSetQuickStepNumIterations(w.world, def.solver_iterations);
+  dWorldSetAutoDisableFlag(w.world, 0);
+  // each world its own threading implementation (DESIGN.md)
+  w.threading = dThreadingAllocateSelfThreadedImplementation();
+  dWorldSetStepThreadingImplementation(w.world, dThreadingImplementationGetFunctions(w.threading),
+                                       w.threading);
+  w.space = dSimpleSpaceCreate(nullptr);
+  w.contact_group = dJointGroupCreate(0);
+  dGeomID ground = dCreatePlane(w.space, 0, 0, 1, 0);
+  dGeomSetData(ground, nullptr);
+  w.contact_buf.resize(std::max(def.max_contacts, 1));
+}
+
+World::~World() {
+  auto& w = *impl_;
+  dJointGroupDestroy(w.contact_group);
+  dSpaceDestroy(w.space);  // destroys its geoms
+  dWorldDestroy(w.world);  // destroys bodies and joints
+  dThreadingFreeImplementation(w.threading);
+}
+
+void World::add_creature(const CreatureModel& m, const Pose& placement) {
+  auto& w = *impl_;
+  int n = m.n_parts();
+  w.bodies.resize(n);
+  w.geoms.resize(n);
+  w.masses.resize(n);
+  w.contact_mask.assign(n, 0);
+  w.prev_pos.resize(n);
+  // bodies with shape, mass and pose
+  for (int i = 0; i < n; ++i) {
+    const PartModel& part = m.parts[i];
+    Pose pose{placement.apply(part.pose.p), placement.R * part.pose.R};
+    dBodyID b = dBodyCreate(w.world);
+    dMass mass;
+    const Vec3& s = part.size;
+    switch (part.shape) {
+      case Shape::Box: dMassSetBoxTotal(&mass, part.mass, s.x, s.y, s.z); break;
+      case Shape::Sphere: dMassSetSphereTotal(&mass, part.mass, s.x / 2); break;
+      case Shape::Capsule:
+        dMassSetCapsuleTotal(&mass, part.mass, 1, s.y / 2, std::max(s.x - s.y, 0.0));
+        break;
+      case Shape::Cylinder: dMassSetCylinderTotal(&mass, part.mass, 1, s.y / 2, s.x); break;
+    }
+    dBodySetMass(b, &mass);
+    dBodySetPosition(b, pose.p.x, pose.p.y, pose.p.z);
+    dMatrix3 R;
+    to_ode(pose.R, R);
+    dBodySetRotation(b, R);
+    dGeomID g = make_geom(w.space, part.shape, s, 0.0);
+    dGeomSetBody(g, b);
+    if (part.shape == Shape::Capsule || part.shape == Shape::Cylinder) {
+      dMatrix3 off;
+      to_ode(z_to_x(), off);
+      dGeomSetOffsetRotation(g, off);
+    }
+    dGeomSetData(g, reinterpret_cast<void*>(static_cast<std::intptr_t>(i + 1)));
+    w.bodies[i] = b;
+    w.geoms[i] = g;
+    w.masses[i] = part.mass;
+    w.total_mass += part.mass;
+    w.prev_pos[i] = pose.p;
+  }
+  // joints, with anchors and axes moved by the placement
+  w.joints.resize(m.joints.size());
+  w.joint_torque.assign(m.joints.size(), {0, 0, 0});
+  for (std::size_t k = 0; k < m.joints.size(); ++k) {
+    const JointModel& jm = m.joints[k];
+    Impl::Joint& j = w.joints[k];
+    j.type = jm.type;
+    j.parent = jm.parent;
+    j.child = jm.child;
+    Vec3 an = placement.apply(jm.anchor);
+    Vec3 a1 = placement.R * jm.axis1, a2 = placement.R * jm.axis2;
+    dBodyID b1 = w.bodies[jm.parent], b2 = w.bodies[jm.child];
+    switch (jm.type) {
+      case JointType::Fixed:
+        j.id = dJointCreateFixed(w.world, nullptr);
+        dJointAttach(j.id, b1, b2);
+        dJointSetFixed(j.id);
+        break;
+      case JointType::Hinge:
+        j.id = dJointCreateHinge(w.world, nullptr);
+        dJointAttach(j.id, b1, b2);
+        dJointSetHingeAnchor(j.id, an.x, an.y, an.z);
+        dJointSetHingeAxis(j.id, a1.x, a1.y, a1.z);
+        break;
+      case JointType::Universal:
+        j.id = dJointCreateUniversal(w.world, nullptr);
+        dJointAttach(j.id, b1, b2);
+        dJointSetUniversalAnchor(j.id, an.x, an.y, an.z);
+        dJointSetUniversalAxis1(j.id, a1.x, a1.y, a1.z);
+        dJointSetUniversalAxis2(j.id, a2.x, a2.y, a2.z);
+        break;
+      case JointType::Slider:
+        j.id = dJointCreateSlider(w.world, nullptr);
+        dJointAttach(j.id, b1, b2);
+        dJointSetSliderAxis(j.id, a1.x, a1.y, a1.z);
+        break;
+      case JointType::Cylindrical:
+        j.id = dJointCreatePiston(w.world, nullptr);
+        dJointAttach(j.id, b1, b2);
+        dJointSetPistonAnchor(j.id, an.x, an.y, an.z);
+        dJointSetPistonAxis(j.id, a1.x, a1.y, a1.z);
+        break;
+      case JointType::Spherical:
+        j.id = dJointCreateBall(w.world, nullptr);
+        dJointAttach(j.id, b1, b2);
+        dJointSetBallAnchor(j.id, an.x, an.y, an.z);
+        // Euler motor: axis 0 fixed to the parent, axis 2 to the child
+        j.amotor = dJointCreateAMotor(w.world, nullptr);
+        dJointAttach(j.amotor, b1, b2);
+        dJointSetAMotorMode(j.amotor, dAMotorEuler);
+        dJointSetAMotorAxis(j.amotor, 0, 1, a1.x, a1.y, a1.z);
+        dJointSetAMotorAxis(j.amotor, 2, 2, a2.x, a2.y, a2.z);
+        break;
+    }
+    // limits per degree of freedom
+    for (std::size_t d = 0; d < jm.limits.size(); ++d) {
+      w.set_param(j, static_cast<int>(d), dParamLoStop, jm.limits[d].lo);
+      w.set_param(j, static_cast<int>(d), dParamHiStop, jm.limits[d].hi);
+    }
+  }
+}
+
+void World::fix_part_to_world(int i) {
+  auto& w = *impl_;
+  dJointID j = dJointCreateFixed(w.world, nullptr);
+  dJointAttach(j, w.bodies[i], nullptr);
+  dJointSetFixed(j);
+}
+
+void World::apply_effectors(const CreatureModel& m, const MotorDef& motor,
+                            std::span<const double> signals) {
+  auto& w = *impl_;
+  bool torques = false;
+  for (std::size_t e = 0; e < m.effectors.size(); ++e) {
+    const EffectorModel& em = m.effectors[e];
+    const Impl::Joint& j = w.joints[em.joint];
+    double s = signals[e];
+    switch (motor.model) {
+      case MotorModel::Servo:
+        w.set_param(j, em.dof, dParamVel, motor.max_speed * s);
+        w.set_param(j, em.dof, dParamFMax, motor.max_force);
+        break;
+      case MotorModel::Saturation:
+        w.set_param(j, em.dof, dParamVel, s >= 0 ? motor.max_speed : -motor.max_speed);
+        w.set_param(j, em.dof, dParamFMax, std::abs(s) * motor.max_force);
+        break;
+      case MotorModel::Torque:
+        w.joint_torque[em.joint][em.dof] += s * motor.strength * em.cross_section;
+        torques = true;
+        break;
+      case MotorModel::PD: {
+        const JointModel& jm = m.joints[em.joint];
+        double target;
+        if (em.dof < static_cast<int>(jm.limits.size())) {
+          const Limit& l = jm.limits[em.dof];
+          target = 0.5 * (l.lo + l.hi) + 0.5 * s * (l.hi - l.lo);
+        } else {
+          target = s * (is_linear_dof(j.type, em.dof) ? 1.0 : kPi);
+        }
+        double err = target - w.position(j, em.dof);
+        w.joint_torque[em.joint][em.dof] += motor.kp * err - motor.kd * w.rate(j, em.dof);
+        torques = true;
+        break;
+      }
+    }
+  }
+  if (torques) w.apply_torques();
+}
+
+void World::step() {
+  auto& w = *impl_;
+  std::fill(w.contact_mask.begin(), w.contact_mask.end(), 0);
+  dSpaceCollide(w.space, &w, &Impl::near_callback);
+  dWorldQuickStep(w.world, w.def.dt);
+  dJointGroupEmpty(w.contact_group);
+  w.t += w.def.dt;
+}
+
+void World::read_sensors(const CreatureModel& m, std::span<double> out) const {
+  const auto& w = *impl_;
+  for (std::size_t i = 0; i < m.sensors.size(); ++i) {
+    const SensorModel& s = m.sensors[i];
+    if (s.type == SensorType::Contact) {
+      out[i] = (w.contact_mask[s.part] >> static_cast<int>(s.face)) & 1 ? 1.0 : -1.0;
+      continue;
+    }
+    if (s.joint < 0) {
+      out[i] = 0;  // the root has no joint to its parent
+      continue;
+    }
+    const JointModel& jm = m.joints[s.joint];
+    double x = w.position(w.joints[s.joint], s.dof);
+    double v;
+    if (s.dof < static_cast<int>(jm.limits.size()) && jm.limits[s.dof].hi > jm.limits[s.dof].lo) {
+      const Limit& l = jm.limits[s.dof];
+      v = 2 * (x - l.lo) / (l.hi - l.lo) - 1;
+    } else {
+      v = is_linear_dof(jm.type, s.dof) ? x : x / kPi;
+    }
+    out[i] = std::clamp(v, -1.0, 1.0);
+  }
+}
+
+std::string World::check_explosion() {
+  auto& w = *impl_;
+  char buf[160];
+  for (std::size_t i = 0; i < w.bodies.size(); ++i) {
+    Vec3 p = vec(dBodyGetPosition(w.bodies[i]));
+    Vec3 v = vec(dBodyGetLinearVel(w.bodies[i]));
+    if (!std::isfinite(p.x + p.y + p.z + v.x + v.y + v.z)) {
+      std::snprintf(buf, sizeof buf, "part %zu: position or velocity is not finite", i);
+      return buf;
+    }
+    double speed = norm(v);
+    if (speed > w.def.max_speed) {
+      std::snprintf(buf, sizeof buf, "part %zu: speed %.3g m/s above max_speed %.3g", i, speed,
+                    w.def.max_speed);
+      return buf;
+    }
+    double jump = norm(p - w.prev_pos[i]);
+    if (jump > w.def.max_step_jump) {
+      std::snprintf(buf, sizeof buf, "part %zu: moved %.3g m in one step, above max_step_jump %.3g",
+                    i, jump, w.def.max_step_jump);
+      return buf;
+    }
+    w.prev_pos[i] = p;
+  }
+  for (std::size_t k = 0; k < w.joints.size(); ++k) {
+    const Impl::Joint& j = w.joints[k];
+    dVector3 a, b;
+    switch (j.type) {
+      case JointType::Hinge:
+        dJointGetHingeAnchor(j.id, a);
+        dJointGetHingeAnchor2(j.id, b);
+        break;
+      case JointType::Universal:
+        dJointGetUniversalAnchor(j.id, a);
+        dJointGetUniversalAnchor2(j.id, b);
+        break;
+      case JointType::Spherical:
+        dJointGetBallAnchor(j.id, a);
+        dJointGetBallAnchor2(j.id, b);
+        break;
+      default: continue;  // fixed, slider, cylindrical: caught by speed and jump tests
+    }
+    double gap = norm(vec(a) - vec(b));
+    if (gap > w.def.max_joint_gap) {
+      std::snprintf(buf, sizeof buf, "joint %zu: anchors %.3g m apart, above max_joint_gap %.3g",
+                    k, gap, w.def.max_joint_gap);
+      return buf;
+    }
+  }
+  return {};
+}
+
+Pose World::part_pose(int i) const {
+  dBodyID b = impl_->bodies[i];
+  return {vec(dBodyGetPosition(b)), from_ode(dBodyGetRotation(b))};
+}
+
+Vec3 World::part_velocity(int i) const { return vec(dBodyGetLinearVel(impl_->bodies[i])); }
+
+Vec3 World::centre_of_mass() const {
+  const auto& w = *impl_;
+  Vec3 c;
+  for (std::size_t i = 0; i < w.bodies.size(); ++i)
+    c = c + w.masses[i] * vec(dBodyGetPosition(w.bodies[i]));
+  return (1.0 / w.total_mass) * c;
+}
+
+double World::joint_position(int j, int dof) const {
+  return impl_->position(impl_->joints[j], dof);
+}
+double World::joint_rate(int j, int dof) const { return impl_->rate(impl_->joints[j], dof); }
+std::uint8_t World::contact_mask(int i) const { return impl_->contact_mask[i]; }
+double World::time() const { return impl_->t; }
+const PhysicsDef& World::def() const { return impl_->def; }
+
+std::pair<int, int> find_self_intersection(const CreatureModel& m, double margin) {
+  ensure_ode_initialized();
+  int n = m.n_parts();
+  std::vector<dGeomID> geoms(n);
+  for (int i = 0; i < n; ++i) {
+    geoms[i] = make_geom(nullptr, m.parts[i].shape, m.parts[i].size, margin);
+    place_geom(geoms[i], m.parts[i].shape, m.parts[i].pose);
+  }
+  std::pair<int, int> hit{-1, -1};
+  dContactGeom contact;
+  for (int i = 0; i < n && hit.first < 0; ++i) {
+    for (int j = i + 1; j < n; ++j) {
+      // parts joined by a joint may touch
+      if (m.parts[j].parent == i || m.parts[i].parent == j) continue;
+      if (dCollide(geoms[i], geoms[j], 1, &contact, sizeof(dContactGeom)) > 0) {
+        hit = {i, j};
+        break;
+      }
+    }
+  }
+  for (dGeomID g : geoms) dGeomDestroy(g);
+  return hit;
+}
+
+}  // namespace bx

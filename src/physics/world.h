@@ -1,0 +1,80 @@
+// The physics world: one ODE world, a ground plane and the creature's parts,
+// joints and motors. Every ODE call of Bestiary lives in physics/; the rest of
+// the code speaks of parts, joints, motors and contacts.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "core/math.h"
+#include "develop/creature_model.h"
+#include "physics/physics_def.h"
+
+namespace bx {
+
+/// Initialises ODE for this process (once) and this thread.
+void ensure_ode_initialized();
+
+/// Reseeds ODE's process-wide random generator (QuickStep's constraint
+/// order). Call before every evaluation for reproducible results.
+void reseed_physics(std::uint64_t seed);
+
+/// A simulated world holding one creature. Not copyable; one per evaluation.
+class World {
+ public:
+  explicit World(const PhysicsDef& def);
+  ~World();
+  World(const World&) = delete;
+  World& operator=(const World&) = delete;
+
+  /// Adds the creature's parts and joints, its frame placed at `placement`.
+  /// Call once.
+  void add_creature(const CreatureModel& m, const Pose& placement);
+
+  /// Fixes part i to the static world (a pendulum's pivot, a test rig).
+  void fix_part_to_world(int i);
+
+  /// Sets every motor from the effector signals (in [-1,1], brain order).
+  void apply_effectors(const CreatureModel& m, const MotorDef& motor,
+                       std::span<const double> signals);
+
+  /// Advances one step: contacts, solver, then the contact flags of sensors.
+  void step();
+
+  /// Writes every sensor's reading into `out` (size = m.sensors.size()).
+  void read_sensors(const CreatureModel& m, std::span<double> out) const;
+
+  /// Empty if the world is sane, else why it exploded (NaN, too fast, a jump
+  /// or a torn joint), naming the part or joint and the value.
+  std::string check_explosion();
+
+  /// Current pose of part i.
+  Pose part_pose(int i) const;
+  /// Current linear velocity of part i.
+  Vec3 part_velocity(int i) const;
+  /// Mass-weighted centre of the creature.
+  Vec3 centre_of_mass() const;
+  /// Position of one degree of freedom of joint j (rad or m).
+  double joint_position(int j, int dof) const;
+  /// Rate of one degree of freedom of joint j.
+  double joint_rate(int j, int dof) const;
+  /// Bit f set when face f of part i touched something this step.
+  std::uint8_t contact_mask(int i) const;
+  /// Simulated time (s).
+  double time() const;
+  const PhysicsDef& def() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+/// Development's self-intersection test: the first pair of parts, not joined
+/// by a joint, whose shapes (each shrunk by `margin` metres on every side)
+/// overlap; {-1, -1} if none.
+std::pair<int, int> find_self_intersection(const CreatureModel& m, double margin);
+
+}  // namespace bx

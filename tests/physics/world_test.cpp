@@ -1,0 +1,286 @@
+// Physics against closed forms: free fall, a physical pendulum's period, a box
+// at rest, motors, limits, contact sensing and the explosion tests.
+#include "physics/world.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace bx {
+namespace {
+
+PartModel box_part(Vec3 size, double mass, Vec3 pos, int parent = -1) {
+  PartModel p;
+  p.shape = Shape::Box;
+  p.size = size;
+  p.mass = mass;
+  p.pose = {pos, Mat3::identity()};
+  p.parent = parent;
+  return p;
+}
+
+CreatureModel one_box(Vec3 pos) {
+  CreatureModel m;
+  m.parts.push_back(box_part({0.4, 0.4, 0.4}, 1.0, pos));
+  return m;
+}
+
+// a fixed pivot block and a thin bar hanging from a hinge about y at its top end
+CreatureModel pendulum(double length, double start_angle) {
+  CreatureModel m;
+  m.parts.push_back(box_part({0.2, 0.2, 0.2}, 10, {0, 0, 3}));
+  Vec3 anchor{0.2, 0, 3};
+  Mat3 R = Mat3::rotation({0, 1, 0}, start_angle);
+  PartModel bar = box_part({0.02, 0.02, length}, 1.0, anchor + R * Vec3{0, 0, -length / 2}, 0);
+  bar.pose.R = R;
+  m.parts.push_back(bar);
+  JointModel j;
+  j.type = JointType::Hinge;
+  j.parent = 0;
+  j.child = 1;
+  j.anchor = anchor;
+  j.axis1 = {0, 1, 0};
+  m.joints.push_back(j);
+  return m;
+}
+
+TEST(World, FreeFallMatchesClosedForm) {
+  PhysicsDef def;
+  def.dt = 0.001;
+  World w(def);
+  CreatureModel m = one_box({0, 0, 0});
+  w.add_creature(m, {{0, 0, 100}, Mat3::identity()});
+  for (int i = 0; i < 1000; ++i) w.step();
+  double t = w.time();
+  // semi-implicit Euler: velocity exact, position off by g*dt*t/2
+  EXPECT_NEAR(w.part_velocity(0).z, -9.81 * t, 1e-9);
+  EXPECT_NEAR(w.part_pose(0).p.z, 100 - 0.5 * 9.81 * t * t, 9.81 * def.dt * t);
+  EXPECT_NEAR(w.part_pose(0).p.x, 0, 1e-12);
+}
+
+TEST(World, PhysicalPendulumPeriodWithinTwoPercent) {
+  PhysicsDef def;
+  def.dt = 0.001;
+  def.solver_iterations = 50;
+  World w(def);
+  const double L = 0.5, a0 = 0.1;
+  CreatureModel m = pendulum(L, a0);
+  w.add_creature(m, {{0, 0, 0}, Mat3::identity()});
+  w.fix_part_to_world(0);
+  // period of a thin bar about one end, small amplitude: 2 pi sqrt(2L / 3g),
+  // corrected for the bar's width and the amplitude
+  double I = (L * L + 0.02 * 0.02) / 3.0 + 0.0;  // per unit mass, about the end
+  double expected = 2 * kPi * std::sqrt(I / (9.81 * L / 2)) * (1 + a0 * a0 / 16);
+  // the hinge angle starts at 0 and swings about +-a0: time upward crossings of its mean
+  std::vector<double> angle;
+  while (w.time() < 8) {
+    w.step();
+    angle.push_back(w.joint_position(0, 0));
+  }
+  auto [lo, hi] = std::minmax_element(angle.begin(), angle.end());
+  EXPECT_NEAR(*hi - *lo, 2 * a0, 0.01);
+  double mid = (*lo + *hi) / 2;
+  std::vector<double> crossings;
+  for (std::size_t i = 1; i < angle.size(); ++i) {
+    double a = angle[i - 1] - mid, b = angle[i] - mid;
+    if (a < 0 && b >= 0) crossings.push_back(def.dt * (i + 1 - b / (b - a)));
+  }
+  ASSERT_GE(crossings.size(), 3u);
+  double period = (crossings.back() - crossings.front()) / (crossings.size() - 1);
+  EXPECT_NEAR(period, expected, 0.02 * expected);
+}
+
+TEST(World, BoxAtRestStaysAtRest) {
+  World w(PhysicsDef{});
+  CreatureModel m = one_box({0, 0, 0});
+  w.add_creature(m, {{1, 2, 0.2}, Mat3::identity()});
+  for (int i = 0; i < 500; ++i) {
+    w.step();
+    ASSERT_EQ(w.check_explosion(), "");
+  }
+  Pose p = w.part_pose(0);
+  EXPECT_NEAR(p.p.x, 1, 1e-4);
+  EXPECT_NEAR(p.p.y, 2, 1e-4);
+  EXPECT_NEAR(p.p.z, 0.2, 2e-3);  // settles into the soft contact by at most a few mm
+  EXPECT_LT(norm(w.part_velocity(0)), 1e-3);
+  // it rests on its bottom face, and only there
+  EXPECT_EQ(w.contact_mask(0), 1u << static_cast<int>(Face::NegZ));
+}
+
+TEST(World, ContactSensorsReadTheTouchingFace) {
+  World w(PhysicsDef{});
+  CreatureModel m = one_box({0, 0, 0});
+  SensorModel s;
+  s.type = SensorType::Contact;
+  s.part = 0;
+  s.face = Face::NegZ;
+  m.sensors.push_back(s);
+  s.face = Face::PosZ;
+  m.sensors.push_back(s);
+  w.add_creature(m, {{0, 0, 0.2}, Mat3::identity()});
+  w.step();
+  double out[2];
+  w.read_sensors(m, out);
+  EXPECT_EQ(out[0], 1.0);
+  EXPECT_EQ(out[1], -1.0);
+}
+
+TEST(World, ServoReachesItsTargetVelocityWithinTheLimits) {
+  PhysicsDef def;
+  def.gravity = 0;
+  World w(def);
+  CreatureModel m = pendulum(0.5, 0);
+  m.joints[0].limits = {{-0.3, 0.3}};
+  EffectorModel e;
+  e.joint = 0;
+  m.effectors.push_back(e);
+  w.add_creature(m, {{0, 0, 0}, Mat3::identity()});
+  w.fix_part_to_world(0);
+  MotorDef motor;
+  motor.model = MotorModel::Servo;
+  motor.max_speed = 2;
+  motor.max_force = 10;
+  double s[1] = {0.5};
+  for (int i = 0; i < 5; ++i) {
+    w.apply_effectors(m, motor, s);
+    w.step();
+  }
+  EXPECT_NEAR(w.joint_rate(0, 0), 1.0, 0.05);
+  for (int i = 0; i < 200; ++i) {
+    w.apply_effectors(m, motor, s);
+    w.step();
+  }
+  // held at the upper stop
+  EXPECT_NEAR(w.joint_position(0, 0), 0.3, 0.03);
+  // and the joint-angle sensor reads +1 there
+  SensorModel js;
+  js.type = SensorType::JointAngle;
+  js.part = 1;
+  js.joint = 0;
+  m.sensors.push_back(js);
+  double out[1];
+  w.read_sensors(m, out);
+  EXPECT_NEAR(out[0], 1.0, 0.1);
+}
+
+TEST(World, TorqueMotorAcceleratesByTorqueOverInertia) {
+  PhysicsDef def;
+  def.gravity = 0;
+  def.dt = 0.001;
+  World w(def);
+  CreatureModel m = pendulum(0.5, 0);
+  EffectorModel e;
+  e.joint = 0;
+  e.cross_section = 0.01;
+  m.effectors.push_back(e);
+  w.add_creature(m, {{0, 0, 0}, Mat3::identity()});
+  w.fix_part_to_world(0);
+  MotorDef motor;
+  motor.model = MotorModel::Torque;
+  motor.strength = 10;  // torque = 1 * 10 * 0.01 = 0.1 N m
+  double s[1] = {1.0};
+  for (int i = 0; i < 100; ++i) {
+    w.apply_effectors(m, motor, s);
+    w.step();
+  }
+  double I = 1.0 * (0.5 * 0.5 + 0.02 * 0.02) / 3.0;  // bar about its end
+  EXPECT_NEAR(std::abs(w.joint_rate(0, 0)), 0.1 / I * w.time(), 0.02 * 0.1 / I * w.time());
+}
+
+TEST(World, ExplosionTestsNameTheirCause) {
+  PhysicsDef def;
+  def.max_speed = 1.0;
+  World w(def);
+  CreatureModel m = one_box({0, 0, 0});
+  w.add_creature(m, {{0, 0, 100}, Mat3::identity()});
+  std::string why;
+  for (int i = 0; i < 100 && why.empty(); ++i) {
+    w.step();
+    why = w.check_explosion();
+  }
+  EXPECT_NE(why.find("part 0: speed"), std::string::npos) << why;
+  EXPECT_NE(why.find("above max_speed 1"), std::string::npos) << why;
+}
+
+TEST(World, SelfIntersectionFindsOverlappingNonAdjacentParts) {
+  CreatureModel m = one_box({0, 0, 0});
+  m.parts.push_back(box_part({0.4, 0.4, 0.4}, 1, {0.3, 0, 0}, 0));  // overlaps but joined
+  EXPECT_EQ(find_self_intersection(m, 0.001), std::make_pair(-1, -1));
+  m.parts.push_back(box_part({0.4, 0.4, 0.4}, 1, {0.0, 0.3, 0}, 1));  // overlaps part 0, not joined
+  EXPECT_EQ(find_self_intersection(m, 0.001), std::make_pair(0, 2));
+  m.parts[2].pose.p = {0, 0.41, 0};  // apart
+  EXPECT_EQ(find_self_intersection(m, 0.001), std::make_pair(-1, -1));
+}
+
+}  // namespace
+}  // namespace bx
+
+namespace bx {
+namespace {
+
+// every joint type: a servo pushing each degree of freedom stops at its limit
+class JointLimits : public ::testing::TestWithParam<JointType> {};
+
+TEST_P(JointLimits, ServoStopsAtTheUpperLimitOfEveryDof) {
+  JointType type = GetParam();
+  int dofs = joint_dofs(type);
+  for (int dof = 0; dof < dofs; ++dof) {
+    PhysicsDef def;
+    def.gravity = 0;
+    World w(def);
+    CreatureModel m = pendulum(0.5, 0);
+    JointModel& j = m.joints[0];
+    j.type = type;
+    j.axis1 = {0, 0, 1};  // along the bar, so sliders and pistons slide along it
+    j.axis2 = {0, 1, 0};
+    bool linear = type == JointType::Slider || (type == JointType::Cylindrical && dof == 0);
+    for (int d = 0; d < dofs; ++d) j.limits.push_back({-0.3, 0.3});
+    if (linear) j.limits[dof] = {-0.05, 0.05};
+    EffectorModel e;
+    e.joint = 0;
+    e.dof = dof;
+    m.effectors.push_back(e);
+    w.add_creature(m, {{0, 0, 0}, Mat3::identity()});
+    w.fix_part_to_world(0);
+    MotorDef motor;
+    motor.max_speed = 1;
+    motor.max_force = 5;
+    double s[1] = {1.0};
+    for (int i = 0; i < 300; ++i) {
+      w.apply_effectors(m, motor, s);
+      w.step();
+      ASSERT_EQ(w.check_explosion(), "") << to_string(type) << " dof " << dof;
+    }
+    double hi = j.limits[dof].hi;
+    EXPECT_NEAR(std::abs(w.joint_position(0, dof)), hi, 0.1 * hi) << to_string(type) << " dof " << dof;
+    // the other degrees of freedom stay put (a ball joint's other two are free,
+    // and move in reaction to the driven one)
+    if (type == JointType::Spherical) continue;
+    for (int d = 0; d < dofs; ++d) {
+      if (d != dof) {
+        EXPECT_NEAR(w.joint_position(0, d), 0, 0.05) << to_string(type) << " dof " << d;
+      }
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(AllTypes, JointLimits,
+                         ::testing::Values(JointType::Hinge, JointType::Universal,
+                                           JointType::Spherical, JointType::Slider,
+                                           JointType::Cylindrical),
+                         [](const auto& info) { return std::string(to_string(info.param)); });
+
+TEST(World, FixedJointHoldsTheChild) {
+  World w(PhysicsDef{});
+  CreatureModel m = pendulum(0.5, 0.3);
+  m.joints[0].type = JointType::Fixed;
+  w.add_creature(m, {{0, 0, 0}, Mat3::identity()});
+  w.fix_part_to_world(0);
+  Vec3 start = w.part_pose(1).p;
+  for (int i = 0; i < 300; ++i) w.step();
+  EXPECT_LT(norm(w.part_pose(1).p - start), 0.01);
+}
+
+}  // namespace
+}  // namespace bx
