@@ -42,7 +42,7 @@ EvalResult evaluate(const CreatureModel& m, const SimConfig& cfg, std::uint64_t 
   const double dt = cfg.physics.dt;
   const int substeps = cfg.brain_steps_per_physics_step;
   const long n_steps = std::lround(cfg.task.seconds / dt);
-  const long frame_every = std::max(1L, std::lround(1.0 / (cfg.replay_fps * dt)));
+  long frames = 1;  // replay frame k is the first step at or after k / fps
   std::span<double> sensor_slots(brain.values.data(), m.brain.n_sensors);
 
   score.observe(0, world.centre_of_mass());
@@ -61,7 +61,10 @@ EvalResult evaluate(const CreatureModel& m, const SimConfig& cfg, std::uint64_t 
       break;
     }
     score.observe(world.time(), world.centre_of_mass());
-    if (replay && (step + 1) % frame_every == 0) record(m, world, brain, *replay);
+    if (replay && world.time() >= frames / cfg.replay_fps - 1e-9) {
+      record(m, world, brain, *replay);
+      ++frames;
+    }
   }
   res.seconds = world.time();
   if (!res.failed) {

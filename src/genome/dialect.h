@@ -32,6 +32,17 @@ struct DialectRules {
   int max_inputs_per_neuron;  ///< 0: the function's own arity
   MassRule mass_rule;
   double mass_scale;          ///< for TanhVolume
+  bool edge_roll_free;        ///< false: edge rotation x (roll) must be 0 (miconi2006: two polar angles)
+  std::vector<int> reflect_axes;  ///< planes an edge may reflect across (by normal axis 0,1,2)
+  /// Limits development gives a hinge whose `limits` are empty (nullopt: unlimited).
+  std::optional<Limit> default_hinge_limits;
+  bool hinge_limits_fixed;    ///< a hinge's limits must be empty or equal default_hinge_limits
+  double max_abs_bias;        ///< bound on neuron and effector bias (0: free)
+  double max_abs_weight;      ///< bound on input weights (0: free)
+  std::vector<SensorType> sensors;  ///< sensor types a part may carry
+  int max_sensors_per_part;
+  int max_effectors_per_part;
+  bool global_neurons;        ///< global neurons allowed
 };
 
 /// The rules of a dialect.
