@@ -1,6 +1,7 @@
 // `bestiary simulate`: grow one genome, simulate it, report, optionally replay.
 #include <nlohmann/json.hpp>
 
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -22,6 +23,13 @@ int fail(const std::string& msg) {
   return 2;
 }
 
+// shortest text that reads back as the same double
+std::string shortest(double v) {
+  char buf[32];
+  auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
+}
+
 }  // namespace
 
 int cmd_simulate(const SimulateArgs& a) {
@@ -33,7 +41,7 @@ int cmd_simulate(const SimulateArgs& a) {
     if (Status s = apply_config_file(cfg, a.config); !s) return fail(s.error());
   if (a.seconds) {
     if (!(*a.seconds > 0) || !std::isfinite(*a.seconds) || *a.seconds > 1e6)
-      return fail("--seconds: expected a number in (0, 1e6], got " + std::to_string(*a.seconds));
+      return fail("--seconds: expected a number in (0, 1e6], got " + shortest(*a.seconds));
     cfg.task.seconds = *a.seconds;
   }
   if (!a.replay.empty()) {

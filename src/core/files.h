@@ -2,13 +2,14 @@
 // failed write leaves any earlier file untouched.
 #pragma once
 
+#include <unistd.h>
+
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <sstream>
 #include <string>
-#include <unistd.h>
 
 #include "core/result.h"
 
@@ -17,30 +18,32 @@ namespace bx {
 /// The whole content of a file, or an error naming the path and the reason.
 inline Result<std::string> read_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) return Error{path + ": cannot open: " + std::strerror(errno)};
+  if (!in) return Error{path + ": cannot open file (" + std::strerror(errno) + ")"};
   std::ostringstream ss;
   ss << in.rdbuf();
-  if (in.bad()) return Error{path + ": read failed"};
+  if (in.bad()) return Error{path + ": cannot read file (" + std::strerror(errno) + ")"};
   return ss.str();
 }
 
-/// Writes `content` to `path.tmp.<pid>`, flushes it, then renames it over `path`.
+/// Writes `content` to `path.tmp`, flushes it to disk, then renames it over
+/// `path`. On failure nothing is left behind and any old `path` is intact.
 inline Status write_file_atomic(const std::string& path, const std::string& content) {
-  std::string tmp = path + ".tmp." + std::to_string(::getpid());
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) return Error{path + ": cannot write: " + std::strerror(errno)};
-    out << content;
-    out.flush();
-    if (!out) {
-      std::remove(tmp.c_str());
-      return Error{path + ": write failed"};
-    }
+  std::string tmp = path + ".tmp";
+  std::FILE* f = std::fopen(tmp.c_str(), "wb");
+  if (!f) return Error{path + ": cannot write file (" + std::strerror(errno) + ")"};
+  bool ok = std::fwrite(content.data(), 1, content.size(), f) == content.size();
+  ok = std::fflush(f) == 0 && ok;
+  ok = ::fsync(::fileno(f)) == 0 && ok;
+  int err = errno;
+  ok = std::fclose(f) == 0 && ok;
+  if (!ok) {
+    std::remove(tmp.c_str());
+    return Error{path + ": cannot write file (" + std::strerror(err) + ")"};
   }
   if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    int e = errno;
+    err = errno;
     std::remove(tmp.c_str());
-    return Error{path + ": cannot write: " + std::strerror(e)};
+    return Error{path + ": cannot replace file (" + std::strerror(err) + ")"};
   }
   return Ok{};
 }

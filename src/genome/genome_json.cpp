@@ -3,6 +3,8 @@
 // and the dialect's rules, so both paths report through the same messages.
 #include "genome/genome_json.h"
 
+#include "core/files.h"
+
 #include <unistd.h>
 
 #include <array>
@@ -659,12 +661,9 @@ Result<Genome> genome_from_string(std::string_view text, std::string_view source
 }
 
 Result<Genome> load_genome(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return Error{path + ": cannot open file (" + std::strerror(errno) + ")"};
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) return Error{path + ": cannot read file (" + std::strerror(errno) + ")"};
-  return genome_from_string(text.str(), path);
+  auto text = read_file(path);
+  if (!text) return Error{text.error()};
+  return genome_from_string(*text, path);
 }
 
 nlohmann::json genome_to_json(const Genome& g) { return genome_json<json>(g); }
@@ -677,26 +676,7 @@ std::string genome_to_string(const Genome& g) {
 }
 
 Status save_genome(const std::string& path, const Genome& g) {
-  std::string text = genome_to_string(g);
-  std::string tmp = path + ".tmp";
-  // write and flush the temporary file to disk, then rename it over the target
-  std::FILE* f = std::fopen(tmp.c_str(), "wb");
-  if (!f) return Error{tmp + ": cannot write file (" + std::strerror(errno) + ")"};
-  bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size();
-  ok = std::fflush(f) == 0 && ok;
-  ok = ::fsync(::fileno(f)) == 0 && ok;
-  int err = errno;
-  ok = std::fclose(f) == 0 && ok;
-  if (!ok) {
-    std::remove(tmp.c_str());
-    return Error{tmp + ": cannot write file (" + std::strerror(err) + ")"};
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    err = errno;
-    std::remove(tmp.c_str());
-    return Error{path + ": cannot replace file (" + std::strerror(err) + ")"};
-  }
-  return Ok{};
+  return write_file_atomic(path, genome_to_string(g));
 }
 
 }  // namespace bx
