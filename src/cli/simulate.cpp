@@ -45,9 +45,13 @@ int cmd_simulate(const SimulateArgs& a) {
     cfg.task.seconds = *a.seconds;
   }
   if (!a.replay.empty()) {
+    // make the replay's folder now, so a bad path fails before the simulation
     auto dir = std::filesystem::path(a.replay).parent_path();
-    if (!dir.empty() && !std::filesystem::is_directory(dir))
-      return fail("--replay: directory does not exist, got \"" + a.replay + "\"");
+    std::error_code ec;
+    if (!dir.empty()) std::filesystem::create_directories(dir, ec);
+    if (ec || (!dir.empty() && !std::filesystem::is_directory(dir)))
+      return fail("--replay: cannot create directory \"" + dir.string() + "\"" +
+                  (ec ? " (" + ec.message() + ")" : ""));
   }
 
   // grow, then simulate

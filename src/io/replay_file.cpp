@@ -53,14 +53,19 @@ std::string replay_to_string(const CreatureModel& m, const Replay& r, const Eval
                      {"parent", p.parent},
                      {"mirrored", p.mirrored}});
   j["parts"] = parts;
+  // joint anchor and axes in the child part's frame, so a viewer places them
+  // with the child's pose in any frame
   json joints = json::array();
-  for (const auto& jm : m.joints)
+  for (const auto& jm : m.joints) {
+    const Pose& c = m.parts[jm.child].pose;
+    Mat3 Rt = c.R.transposed();
     joints.push_back({{"type", std::string(to_string(jm.type))},
                       {"parent", jm.parent},
                       {"child", jm.child},
-                      {"anchor", vec_json(jm.anchor, 1e-6)},
-                      {"axis1", vec_json(jm.axis1, 1e-6)},
-                      {"axis2", vec_json(jm.axis2, 1e-6)}});
+                      {"anchor", vec_json(Rt * (jm.anchor - c.p), 1e-6)},
+                      {"axis1", vec_json(Rt * jm.axis1, 1e-6)},
+                      {"axis2", vec_json(Rt * jm.axis2, 1e-6)}});
+  }
   j["joints"] = joints;
   json neurons = json::array();
   for (int i = 0; i < m.brain.n_neurons(); ++i)

@@ -25,7 +25,8 @@ struct PhysicsDef {
 /// How effector signals in [-1,1] move joints.
 enum class MotorModel {
   Servo,       ///< miconi2006: target velocity max_speed*s, force capped at max_force
-  Saturation,  ///< chaumont2007 5.3: target velocity sign(s)*max_speed, force cap |s|*max_force
+  Saturation,  ///< chaumont2007 5.3: target velocity sign(s)*max_speed, force cap
+               ///< |s|*strength*cross-section of the larger part (3.4)
   Torque,      ///< sims1994: torque s*strength*cross-section of the larger part
   PD,          ///< rivercrossing: T = kp(theta_d - theta) - kd*dtheta, theta_d from s
 };
@@ -33,9 +34,9 @@ enum class MotorModel {
 /// The motors of every effector of a creature.
 struct MotorDef {
   MotorModel model = MotorModel::Servo;
-  double max_speed = 4;   ///< rad/s (or m/s for sliders)
-  double max_force = 4;   ///< N m (or N)
-  double strength = 50;   ///< Torque: N m per m^2 of cross-section
+  double max_speed = 4;   ///< Servo, Saturation: rad/s (or m/s for sliders)
+  double max_force = 4;   ///< Servo: N m (or N)
+  double strength = 50;   ///< Torque, Saturation: N m per m^2 of cross-section
   double kp = 0.25;       ///< PD gain
   double kd = 0.175;      ///< PD damping
 };

@@ -370,7 +370,7 @@ void World::apply_effectors(const CreatureModel& m, const MotorDef& motor,
         break;
       case MotorModel::Saturation:
         w.set_param(j, em.dof, dParamVel, s >= 0 ? motor.max_speed : -motor.max_speed);
-        w.set_param(j, em.dof, dParamFMax, std::abs(s) * motor.max_force);
+        w.set_param(j, em.dof, dParamFMax, std::abs(s) * motor.strength * em.cross_section);
         break;
       case MotorModel::Torque:
         w.joint_torque[em.joint][em.dof] += s * motor.strength * em.cross_section;

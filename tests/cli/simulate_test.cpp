@@ -138,10 +138,15 @@ TEST_F(Simulate, BadInputGivesOneErrorLineAndNoFile) {
     EXPECT_EQ(r.err.rfind("bestiary: " + c.error, 0), 0u) << r.err;
     EXPECT_FALSE(fs::exists(replay)) << c.args;
   }
-  // a replay into a directory that does not exist is refused before simulating
-  Outcome r = bestiary("simulate " + creature("box.json") + " --replay " + (dir / "no/where.json").string());
+  // a replay's missing folders are made; one that cannot be made is refused
+  Outcome ok = bestiary("simulate " + creature("box.json") + " --seconds 1 --replay " +
+                        (dir / "new/folder/r.json").string());
+  EXPECT_EQ(ok.code, 0) << ok.err;
+  EXPECT_TRUE(fs::exists(dir / "new/folder/r.json"));
+  Outcome r = bestiary("simulate " + creature("box.json") + " --replay " +
+                       (bad_cfg / "r.json").string());  // under a regular file
   EXPECT_EQ(r.code, 2);
-  EXPECT_NE(r.err.find("--replay: directory does not exist"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.rfind("bestiary: --replay: cannot create directory", 0), 0u) << r.err;
 }
 
 }  // namespace
