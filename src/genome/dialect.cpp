@@ -405,7 +405,10 @@ class Validator {
   }
 
   static std::string range_text(double bound) {
-    return "[" + json(-bound).dump() + ", " + json(bound).dump() + "]";
+    // appended piecewise: GCC 12 at -O3 warns falsely (-Wrestrict) on "[" + string&&
+    std::string s = "[";
+    s.append(json(-bound).dump()).append(", ").append(json(bound).dump()).append("]");
+    return s;
   }
 
   Problem check_inputs(const std::vector<InputGene>& inputs, const std::string& owner_path,
