@@ -284,3 +284,60 @@ TEST(World, FixedJointHoldsTheChild) {
 
 }  // namespace
 }  // namespace bx
+
+namespace bx {
+namespace {
+
+TEST(World, PDMotorHoldsTheTargetAngleFromTheSignal) {
+  PhysicsDef def;
+  def.gravity = 0;
+  World w(def);
+  CreatureModel m = pendulum(0.5, 0);
+  m.joints[0].limits = {{-1.0, 1.0}};
+  EffectorModel e;
+  e.joint = 0;
+  m.effectors.push_back(e);
+  w.add_creature(m, {{0, 0, 0}, Mat3::identity()});
+  w.fix_part_to_world(0);
+  MotorDef motor;
+  motor.model = MotorModel::PD;
+  motor.kp = 0.25;
+  motor.kd = 0.175;  // rivercrossing: damping ratio about 0.6 for this bar
+  double s[1] = {0.5};  // target: the middle of [-1, 1] plus half its half-range = 0.5 rad
+  for (int i = 0; i < 1000; ++i) {
+    w.apply_effectors(m, motor, s);
+    w.step();
+  }
+  EXPECT_NEAR(w.joint_position(0, 0), 0.5, 0.01);
+  EXPECT_NEAR(w.joint_rate(0, 0), 0, 0.01);
+}
+
+TEST(World, SaturationMotorForceScalesWithTheSignal) {
+  // against gravity, a weak signal cannot lift the bar and a strong one can
+  auto lift = [](double signal) {
+    World w(PhysicsDef{});
+    CreatureModel m = pendulum(0.5, 0);
+    EffectorModel e;
+    e.joint = 0;
+    e.cross_section = 0.01;
+    m.effectors.push_back(e);
+    w.add_creature(m, {{0, 0, 0}, Mat3::identity()});
+    w.fix_part_to_world(0);
+    MotorDef motor;
+    motor.model = MotorModel::Saturation;
+    motor.max_speed = 10;
+    motor.strength = 500;  // cap = |s| * 500 * 0.01 = 5 |s| N m
+    double s[1] = {signal};
+    for (int i = 0; i < 300; ++i) {
+      w.apply_effectors(m, motor, s);
+      w.step();
+    }
+    return std::abs(w.joint_position(0, 0));
+  };
+  // holding the bar horizontal takes m g L/2 = 2.45 N m: signal 0.3 gives 1.5, 1.0 gives 5
+  EXPECT_LT(lift(0.3), kPi / 4);
+  EXPECT_GT(lift(1.0), kPi / 2);
+}
+
+}  // namespace
+}  // namespace bx
