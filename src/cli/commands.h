@@ -1,24 +1,20 @@
-// Subcommands of `bestiary`. Each returns the process exit code: 0 on
-// success, 2 on bad input (after printing one error line to stderr).
+// Subcommands of `bestiary`. Each file of src/cli/ registers its own
+// subcommands on the app; a subcommand's callback exits with its code: 0 on
+// success, 2 on bad input (after one error line on stderr).
 #pragma once
 
-#include <cstdint>
-#include <optional>
 #include <string>
+
+namespace CLI {
+class App;
+}
 
 namespace bx {
 
-/// Arguments of `bestiary simulate`.
-struct SimulateArgs {
-  std::string genome;
-  std::string config;
-  std::optional<double> seconds;
-  std::uint64_t seed = 1;
-  std::string replay;
-  bool json = false;
-};
+/// `simulate` and `config` (src/cli/simulate.cpp).
+void add_simulate_commands(CLI::App& app);
 
-int cmd_simulate(const SimulateArgs& a);
-int cmd_config(const std::string& dialect, const std::string& config_file);
+/// Prints "bestiary: MESSAGE" on stderr and returns 2, the bad-input exit code.
+int fail(const std::string& message);
 
 }  // namespace bx

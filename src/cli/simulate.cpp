@@ -1,10 +1,12 @@
 // `bestiary simulate`: grow one genome, simulate it, report, optionally replay.
+#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
 #include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 
 #include "cli/commands.h"
 #include "develop/develop.h"
@@ -18,10 +20,15 @@ namespace bx {
 
 namespace {
 
-int fail(const std::string& msg) {
-  std::fprintf(stderr, "bestiary: %s\n", msg.c_str());
-  return 2;
-}
+/// Arguments of `bestiary simulate`.
+struct SimulateArgs {
+  std::string genome;
+  std::string config;
+  std::optional<double> seconds;
+  std::uint64_t seed = 1;
+  std::string replay;
+  bool json = false;
+};
 
 // shortest text that reads back as the same double
 std::string shortest(double v) {
@@ -29,8 +36,6 @@ std::string shortest(double v) {
   auto r = std::to_chars(buf, buf + sizeof buf, v);
   return std::string(buf, r.ptr);
 }
-
-}  // namespace
 
 int cmd_simulate(const SimulateArgs& a) {
   // inputs: genome, config, flags; all checked before any work
@@ -118,6 +123,27 @@ int cmd_config(const std::string& dialect, const std::string& config_file) {
     if (Status s = apply_config_file(cfg, config_file); !s) return fail(s.error());
   std::printf("%s", config_to_toml(cfg).c_str());
   return 0;
+}
+
+}  // namespace
+
+void add_simulate_commands(CLI::App& app) {
+  // arguments live as long as the app: parsing fills them, the callback reads them
+  static SimulateArgs sim;
+  auto* s = app.add_subcommand("simulate", "Grow a genome and simulate it on flat ground");
+  s->add_option("genome", sim.genome, "Genome file (JSON)")->required();
+  s->add_option("--config", sim.config, "TOML config overlaid on the dialect's defaults");
+  s->add_option("--seconds", sim.seconds, "Simulated seconds (default: the config's task.seconds)");
+  s->add_option("--seed", sim.seed, "Seed of the evaluation")->default_val(1);
+  s->add_option("--replay", sim.replay, "Write a replay file here (folders are made)");
+  s->add_flag("--json", sim.json, "Print one JSON object instead of text");
+  s->callback([] { std::exit(cmd_simulate(sim)); });
+
+  static std::string dialect = "sims1994", cfg_file;
+  auto* c = app.add_subcommand("config", "Print the effective config (TOML) of a dialect");
+  c->add_option("dialect", dialect, "sims1994, miconi2006 or chaumont2007");
+  c->add_option("--config", cfg_file, "TOML config overlaid on the dialect's defaults");
+  c->callback([] { std::exit(cmd_config(dialect, cfg_file)); });
 }
 
 }  // namespace bx
