@@ -37,21 +37,32 @@ EvalResult evaluate(const CreatureModel& m, const SimConfig& cfg, std::uint64_t 
   Pose placement{{0, 0, cfg.task.drop_height - m.min_z()}, Mat3::identity()};
   world.add_creature(m, placement);
   BrainState brain = make_brain_state(m.brain);
-  LocomotionScore score(cfg.task);
-
   const double dt = cfg.physics.dt;
+  LocomotionTask task(cfg.task, dt, m.n_parts());
+
   const int substeps = cfg.brain_steps_per_physics_step;
-  const long n_steps = std::lround(cfg.task.seconds / dt);
+  // the task ends the evaluation; this only bounds it
+  const LocomotionDef& td = cfg.task;
+  double longest = td.activation == Activation::Chaumont2007
+                       ? 2 * td.settle_timeout + td.burst_seconds + td.seconds
+                       : td.seconds;
+  const long max_steps = std::lround(longest / dt) + 1;
   long frames = 1;  // replay frame k is the first step at or after k / fps
   std::span<double> sensor_slots(brain.values.data(), m.brain.n_sensors);
+  const std::vector<double> motors_off(m.effectors.size(), 0.0);
+  std::vector<Vec3> parts(task.needs_parts() ? m.n_parts() : 0);
+  auto part_positions = [&]() -> const std::vector<Vec3>& {
+    for (std::size_t i = 0; i < parts.size(); ++i) parts[i] = world.part_pose(static_cast<int>(i)).p;
+    return parts;
+  };
 
-  score.observe(0, world.centre_of_mass());
+  task.start(world.centre_of_mass(), part_positions());
   if (replay) record(m, world, brain, *replay);
-  for (long step = 0; step < n_steps; ++step) {
-    // sense, think, act
+  for (long step = 0; step < max_steps && !task.done(); ++step) {
+    // sense, think, act (the task may hold the motors off)
     world.read_sensors(m, sensor_slots);
     for (int k = 0; k < substeps; ++k) brain_step(m.brain, brain, dt / substeps);
-    world.apply_effectors(m, cfg.motor, brain.effector_out);
+    world.apply_effectors(m, cfg.motor, task.controller_on() ? brain.effector_out : motors_off);
     world.step();
     res.steps = step + 1;
     // a blown-up simulation ends the evaluation with a failing score
@@ -60,16 +71,17 @@ EvalResult evaluate(const CreatureModel& m, const SimConfig& cfg, std::uint64_t 
       res.failure = "numerical explosion at t=" + std::to_string(world.time()) + " s: " + why;
       break;
     }
-    score.observe(world.time(), world.centre_of_mass());
+    task.observe(world.time(), world.centre_of_mass(), part_positions());
     if (replay && world.time() >= frames / cfg.replay_fps - 1e-9) {
       record(m, world, brain, *replay);
       ++frames;
     }
   }
   res.seconds = world.time();
+  res.note = task.note();
   if (!res.failed) {
-    res.distance = score.distance();
-    res.fitness = res.distance;
+    res.distance = task.distance();
+    res.fitness = task.fitness(m);
   }
   return res;
 }

@@ -28,6 +28,7 @@ struct Replay {
 struct EvalResult {
   bool failed = false;      ///< a numerical explosion ended it (fitness is 0)
   std::string failure;      ///< why, when failed
+  std::string note;         ///< why the task scored 0 by rule (e.g. never settled), or empty
   double fitness = 0;
   double distance = 0;      ///< m, by the task's metric
   double seconds = 0;       ///< simulated time

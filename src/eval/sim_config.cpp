@@ -27,7 +27,12 @@ SimConfig default_sim_config(Dialect d) {
       c.motor.model = MotorModel::Saturation;
       c.motor.max_speed = 10;
       c.motor.strength = 300;
+      // 3.3-3.4: dropped from a safe height, the activation sequence, eq. 1
       c.task.seconds = 20;
+      c.task.drop_height = 0.1;
+      c.task.activation = Activation::Chaumont2007;
+      c.task.fitness = LocomotionFitness::Chaumont2007;
+      c.task.kappa = 1.02;
       break;
     case Dialect::Sims1994:
       // Sims (1994): effector torque scaled by cross-section; two brain steps per
@@ -37,6 +42,7 @@ SimConfig default_sim_config(Dialect d) {
       c.motor.strength = 1000;
       c.brain_steps_per_physics_step = 2;
       c.task.seconds = 10;
+      c.task.fitness = LocomotionFitness::Speed;  // speed of the centre of mass
       break;
   }
   return c;

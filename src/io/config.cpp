@@ -56,6 +56,13 @@ const std::vector<Field>& fields() {
       {"task", "drop_height", Field::Real, 0, 1e3, {}, [](SimConfig& c) -> void* { return &c.task.drop_height; }},
       {"task", "metric", Field::Choice, 0, 0, {"planar", "x"}, [](SimConfig& c) -> void* { return &c.task.metric; }},
       {"task", "skip_fraction", Field::Real, 0, 1, {}, [](SimConfig& c) -> void* { return &c.task.skip_fraction; }},
+      {"task", "fitness", Field::Choice, 0, 0, {"distance", "speed", "chaumont2007"}, [](SimConfig& c) -> void* { return &c.task.fitness; }},
+      {"task", "activation", Field::Choice, 0, 0, {"always", "chaumont2007"}, [](SimConfig& c) -> void* { return &c.task.activation; }},
+      {"task", "settle_threshold", Field::Real, 0, 1e3, {}, [](SimConfig& c) -> void* { return &c.task.settle_threshold; }},
+      {"task", "settle_steps", Field::Int, 1, 1000000, {}, [](SimConfig& c) -> void* { return &c.task.settle_steps; }},
+      {"task", "settle_timeout", Field::Real, 0, 1e4, {}, [](SimConfig& c) -> void* { return &c.task.settle_timeout; }},
+      {"task", "burst_seconds", Field::Real, 0, 1e4, {}, [](SimConfig& c) -> void* { return &c.task.burst_seconds; }},
+      {"task", "kappa", Field::Real, 0, 10, {}, [](SimConfig& c) -> void* { return &c.task.kappa; }},
       {"replay", "fps", Field::Real, 1e-3, 1e4, {}, [](SimConfig& c) -> void* { return &c.replay_fps; }},
   };
   return f;

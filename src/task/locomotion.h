@@ -1,9 +1,15 @@
-// Locomotion on flat ground: how far the creature's centre of mass travels.
+// Locomotion on flat ground: how far, or how fast, the creature's centre of
+// mass travels, with chaumont2007's activation sequence as an option.
 #pragma once
+
+#include <string>
+#include <vector>
 
 #include "core/math.h"
 
 namespace bx {
+
+struct CreatureModel;
 
 /// Which displacement counts as distance.
 enum class DistanceMetric {
@@ -11,39 +17,88 @@ enum class DistanceMetric {
   AlongX,  ///< signed displacement along +x (miconi2006 5.2)
 };
 
+/// What the fitness is made of.
+enum class LocomotionFitness {
+  Distance,      ///< the distance (miconi2006)
+  Speed,         ///< distance over the measured time (sims1994)
+  Chaumont2007,  ///< eq. 1: D_w * (C_v / (C_s C_l)) * kappa^N
+};
+
+/// When the controller drives the motors.
+enum class Activation {
+  Always,        ///< from the first step
+  Chaumont2007,  ///< 3.3: settle (off), 1 s on, settle (off), then on and measured
+};
+
 /// A locomotion task.
 struct LocomotionDef {
-  double seconds = 10;        ///< evaluation length (s)
+  /// Evaluation length (s). With the chaumont2007 sequence: the measured
+  /// last phase; the settling and first burst come before it.
+  double seconds = 10;
   double drop_height = 0.0;   ///< gap between the lowest part and the ground at the start (m)
   DistanceMetric metric = DistanceMetric::Planar;
   /// Distance is measured from this fraction of the evaluation on
   /// (miconi2006 5.2: 1/8, so falling over does not count).
   double skip_fraction = 0.0;
+  LocomotionFitness fitness = LocomotionFitness::Distance;
+  Activation activation = Activation::Always;
+  // chaumont2007 3.3: stable = every part moves less than settle_threshold per
+  // step (m) for settle_steps consecutive steps; never stable within
+  // settle_timeout (s) -> fitness 0
+  double settle_threshold = 1.0 / 300;
+  int settle_steps = 30;
+  double settle_timeout = 10;
+  double burst_seconds = 1.0;  ///< the first controller activation (s)
+  double kappa = 1.02;         ///< eq. 1's reward per block
 };
 
-/// Accumulates a locomotion score over an evaluation.
-class LocomotionScore {
+/// The phases of an evaluation.
+enum class Phase { Settle1, Burst, Settle2, Measure, Done };
+
+/// Runs a locomotion task alongside the simulation: says when the controller
+/// is on and when the evaluation ends, and scores it.
+class LocomotionTask {
  public:
-  explicit LocomotionScore(const LocomotionDef& def) : def_(def) {}
-  /// Call after every physics step with the time and the centre of mass.
-  void observe(double t, Vec3 com) {
-    if (!started_ && t >= def_.skip_fraction * def_.seconds - 1e-9) {
-      started_ = true;
-      start_ = com;
-    }
-    last_ = com;
-  }
-  /// Distance travelled since measurement started (0 if it never did).
-  double distance() const {
-    if (!started_) return 0;
-    Vec3 d = last_ - start_;
-    return def_.metric == DistanceMetric::AlongX ? d.x : std::hypot(d.x, d.y);
-  }
+  LocomotionTask(const LocomotionDef& def, double dt, int n_parts);
+
+  /// True when the motors follow the brain this step.
+  bool controller_on() const { return phase_ == Phase::Burst || phase_ == Phase::Measure; }
+  /// True once the evaluation is over.
+  bool done() const { return phase_ == Phase::Done; }
+  Phase phase() const { return phase_; }
+
+  /// Call at the start with the centre of mass and every part's position.
+  void start(Vec3 com, const std::vector<Vec3>& parts);
+  /// Call after every physics step.
+  void observe(double t, Vec3 com, const std::vector<Vec3>& parts);
+
+  /// Distance travelled while measured (0 if measuring never started).
+  double distance() const;
+  /// Seconds measured.
+  double measured_seconds() const { return measured_ ? t_ - t_start_ : 0; }
+  /// The fitness of the evaluation, given the creature (for eq. 1's block terms).
+  double fitness(const CreatureModel& m) const;
+  /// Why the score is 0 by rule (e.g. never settled), or empty.
+  const std::string& note() const { return note_; }
+  /// Whether the part positions are needed by observe() (else pass an empty vector).
+  bool needs_parts() const { return def_.activation == Activation::Chaumont2007; }
 
  private:
+  void settle(double t, const std::vector<Vec3>& parts, Phase next);
+  void begin_measure(double t, Vec3 com);
+
   LocomotionDef def_;
-  bool started_ = false;
+  double dt_;
+  Phase phase_ = Phase::Measure;
+  bool measured_ = false;
   Vec3 start_, last_;
+  double t_ = 0, t_start_ = 0, phase_start_ = 0;
+  int still_steps_ = 0;
+  std::vector<Vec3> prev_parts_;
+  std::string note_;
 };
+
+/// chaumont2007 eq. 1's size factor C_v / (C_s C_l) * kappa^N of a creature's blocks.
+double chaumont_size_factor(const CreatureModel& m, double kappa);
 
 }  // namespace bx

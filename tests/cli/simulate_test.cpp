@@ -74,7 +74,7 @@ TEST_F(Simulate, JsonReportsTheResult) {
   auto j = nlohmann::json::parse(r.out);
   EXPECT_TRUE(j["viable"].get<bool>());
   EXPECT_GE(j["distance"].get<double>(), j["body_length"].get<double>());
-  EXPECT_EQ(j["fitness"], j["distance"]);
+  EXPECT_NEAR(j["fitness"].get<double>(), j["distance"].get<double>() / 10, 1e-9);  // speed
   EXPECT_EQ(j["parts"], 5);
   EXPECT_TRUE(j["warnings"].is_array());
   EXPECT_EQ(j["steps"], 1000);

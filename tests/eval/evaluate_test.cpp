@@ -28,7 +28,7 @@ TEST(Evaluate, WalkerMovesAtLeastOneBodyLengthInTenSeconds) {
     EvalResult r = evaluate(m, cfg, seed);
     EXPECT_FALSE(r.failed) << r.failure;
     EXPECT_GE(r.distance, m.body_length()) << "seed " << seed;
-    EXPECT_EQ(r.fitness, r.distance);
+    EXPECT_NEAR(r.fitness, r.distance / 10.0, 1e-9);  // sims1994: speed
     EXPECT_EQ(r.steps, 1000);
   }
 }
@@ -68,22 +68,23 @@ TEST(Evaluate, ExplosionEndsTheEvaluationWithAFailingScore) {
   EXPECT_NE(r.failure.find("above max_speed 0.05"), std::string::npos) << r.failure;
 }
 
-TEST(Evaluate, MiconiTaskCountsDistanceAlongXAfterTheFirstEighth) {
-  LocomotionDef def;
-  def.seconds = 8;
-  def.metric = DistanceMetric::AlongX;
-  def.skip_fraction = 1.0 / 8;
-  LocomotionScore s(def);
-  s.observe(0, {0, 0, 0});
-  s.observe(0.5, {5, 0, 0});  // falling over in the first second does not count
-  s.observe(1.0, {6, 3, 0});
-  s.observe(8.0, {4, 9, 0});
-  EXPECT_DOUBLE_EQ(s.distance(), -2.0);
-  def.metric = DistanceMetric::Planar;
-  LocomotionScore p(def);
-  p.observe(1.0, {6, 3, 0});
-  p.observe(8.0, {9, 7, 0});
-  EXPECT_DOUBLE_EQ(p.distance(), 5.0);
+TEST(Evaluate, ChaumontSequenceSettlesBurstsSettlesThenMeasures) {
+  SimConfig cfg = default_sim_config(Dialect::Chaumont2007);
+  CreatureModel m = grow("box.json");
+  m.dialect = Dialect::Chaumont2007;
+  cfg.task.seconds = 2;
+  EvalResult r = evaluate(m, cfg, 1);
+  // a box dropped 0.1 m settles, sits through the burst, settles, then 2 s measured
+  EXPECT_FALSE(r.failed) << r.failure;
+  EXPECT_EQ(r.note, "");
+  EXPECT_GT(r.seconds, 2 + 1.0 + 2 * 30 / 60.0 - 1e-9);
+  EXPECT_LT(r.distance, 1e-3);
+  // a creature that never stops moving is never measured and scores 0
+  cfg.task.settle_threshold = 0;
+  r = evaluate(m, cfg, 1);
+  EXPECT_EQ(r.fitness, 0);
+  EXPECT_EQ(r.note, "never settled within settle_timeout");
+  EXPECT_NEAR(r.seconds, cfg.task.settle_timeout, 2 * cfg.physics.dt);
 }
 
 }  // namespace

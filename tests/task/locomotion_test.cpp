@@ -1,0 +1,99 @@
+// Locomotion scoring: metrics, the measurement window, chaumont2007's
+// activation sequence and eq. 1.
+#include "task/locomotion.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "develop/creature_model.h"
+
+namespace bx {
+namespace {
+
+TEST(Locomotion, MiconiCountsDistanceAlongXAfterTheFirstEighth) {
+  LocomotionDef def;
+  def.seconds = 8;
+  def.metric = DistanceMetric::AlongX;
+  def.skip_fraction = 1.0 / 8;
+  LocomotionTask t(def, 0.5, 1);
+  t.start({0, 0, 0}, {});
+  t.observe(0.5, {5, 0, 0}, {});  // falling over in the first second does not count
+  t.observe(1.0, {6, 3, 0}, {});
+  EXPECT_FALSE(t.done());
+  t.observe(8.0, {4, 9, 0}, {});
+  EXPECT_TRUE(t.done());
+  EXPECT_DOUBLE_EQ(t.distance(), -2.0);
+  EXPECT_DOUBLE_EQ(t.measured_seconds(), 7.0);
+}
+
+TEST(Locomotion, PlanarDistanceAndSpeed) {
+  LocomotionDef def;
+  def.seconds = 4;
+  def.fitness = LocomotionFitness::Speed;
+  LocomotionTask t(def, 1.0, 1);
+  t.start({1, 1, 0}, {});
+  for (int i = 1; i <= 4; ++i) t.observe(i, {1 + 0.75 * i, 1 + 1.0 * i, 0.3}, {});
+  EXPECT_DOUBLE_EQ(t.distance(), 5.0);
+  CreatureModel m;
+  EXPECT_DOUBLE_EQ(t.fitness(m), 1.25);
+}
+
+TEST(Locomotion, ChaumontSequenceGatesTheControllerAndMeasuresOnlyTheLastPhase) {
+  LocomotionDef def;
+  def.activation = Activation::Chaumont2007;
+  def.seconds = 2;
+  def.burst_seconds = 1;
+  def.settle_steps = 3;
+  def.settle_threshold = 0.01;
+  const double dt = 0.1;
+  LocomotionTask t(def, dt, 1);
+  double time = 0;
+  Vec3 p{0, 0, 1};
+  t.start(p, {p});
+  auto step = [&](Vec3 to) {
+    time += dt;
+    p = to;
+    t.observe(time, p, {p});
+  };
+  // falling: not settled, controller off
+  step({0, 0, 0.5});
+  step({0, 0, 0.0});
+  EXPECT_EQ(t.phase(), Phase::Settle1);
+  EXPECT_FALSE(t.controller_on());
+  // three still steps: settled, the burst begins
+  for (int i = 0; i < 3; ++i) step(p);
+  EXPECT_EQ(t.phase(), Phase::Burst);
+  EXPECT_TRUE(t.controller_on());
+  // motion during the burst is not counted
+  for (int i = 0; i < 10; ++i) step({p.x + 0.5, 0, 0});
+  EXPECT_EQ(t.phase(), Phase::Settle2);
+  EXPECT_FALSE(t.controller_on());
+  for (int i = 0; i < 3; ++i) step(p);
+  EXPECT_EQ(t.phase(), Phase::Measure);
+  Vec3 start = p;
+  for (int i = 0; i < 20; ++i) step({p.x + 0.1, 0, 0});
+  EXPECT_TRUE(t.done());
+  EXPECT_NEAR(t.distance(), norm(p - start), 1e-12);
+  EXPECT_NEAR(t.distance(), 2.0, 1e-9);
+}
+
+TEST(Locomotion, ChaumontFitnessFollowsEquationOne) {
+  CreatureModel m;
+  PartModel a, b;
+  a.size = {1, 2, 3};
+  b.size = {2, 2, 2};
+  m.parts = {a, b};
+  // C_l = mean(6, 6) = 6, C_s = mean(22, 24) = 23, C_v = mean(6, 8) = 7
+  EXPECT_NEAR(chaumont_size_factor(m, 1.02), 7.0 / (23.0 * 6.0) * 1.02 * 1.02, 1e-15);
+  LocomotionDef def;
+  def.seconds = 1;
+  def.fitness = LocomotionFitness::Chaumont2007;
+  LocomotionTask t(def, 1.0, 2);
+  t.start({0, 0, 0}, {});
+  t.observe(1.0, {3, 4, 0}, {});
+  EXPECT_NEAR(t.fitness(m), 5.0 * chaumont_size_factor(m, 1.02), 1e-15);
+}
+
+}  // namespace
+}  // namespace bx
