@@ -1,0 +1,276 @@
+#include "eval/evaluator.h"
+
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstdlib>
+#include <cstring>
+#include <deque>
+#include <nlohmann/json.hpp>
+#include <thread>
+
+#include "develop/develop.h"
+#include "genome/genome_json.h"
+
+namespace bx {
+
+EvalOutcome evaluate_genome(const Genome& g, const SimConfig& cfg, std::uint64_t seed) {
+  EvalOutcome out;
+  Development dev = develop(g, cfg.develop);
+  if (!dev.viable()) {
+    out.viable = false;
+    out.reason = dev.reason;
+    return out;
+  }
+  out.result = evaluate(*dev.model, cfg, seed);
+  return out;
+}
+
+std::vector<EvalOutcome> SerialEvaluator::evaluate(const std::vector<EvalJob>& jobs) {
+  std::vector<EvalOutcome> out;
+  out.reserve(jobs.size());
+  for (const auto& j : jobs) out.push_back(evaluate_genome(*j.genome, cfg_, j.seed));
+  return out;
+}
+
+namespace {
+
+using nlohmann::json;
+
+// length-prefixed messages over pipes
+bool write_all(int fd, const void* data, std::size_t n) {
+  auto* p = static_cast<const char*>(data);
+  while (n > 0) {
+    ssize_t w = ::write(fd, p, n);
+    if (w < 0 && errno == EINTR) continue;
+    if (w <= 0) return false;
+    p += w;
+    n -= static_cast<std::size_t>(w);
+  }
+  return true;
+}
+
+bool read_all(int fd, void* data, std::size_t n) {
+  auto* p = static_cast<char*>(data);
+  while (n > 0) {
+    ssize_t r = ::read(fd, p, n);
+    if (r < 0 && errno == EINTR) continue;
+    if (r <= 0) return false;
+    p += r;
+    n -= static_cast<std::size_t>(r);
+  }
+  return true;
+}
+
+bool send_message(int fd, const std::string& s) {
+  auto n = static_cast<std::uint32_t>(s.size());
+  return write_all(fd, &n, sizeof n) && write_all(fd, s.data(), s.size());
+}
+
+bool receive_message(int fd, std::string& s) {
+  std::uint32_t n = 0;
+  if (!read_all(fd, &n, sizeof n)) return false;
+  s.resize(n);
+  return read_all(fd, s.data(), n);
+}
+
+json outcome_to_json(const EvalOutcome& o) {
+  const EvalResult& r = o.result;
+  return {{"viable", o.viable}, {"reason", o.reason},   {"fitness", r.fitness},
+          {"distance", r.distance}, {"failed", r.failed}, {"failure", r.failure},
+          {"note", r.note},       {"seconds", r.seconds}, {"steps", r.steps},
+          {"warnings", r.warnings}};
+}
+
+EvalOutcome outcome_from_json(const json& j) {
+  EvalOutcome o;
+  o.viable = j.at("viable");
+  o.reason = j.at("reason");
+  EvalResult& r = o.result;
+  r.fitness = j.at("fitness");
+  r.distance = j.at("distance");
+  r.failed = j.at("failed");
+  r.failure = j.at("failure");
+  r.note = j.at("note");
+  r.seconds = j.at("seconds");
+  r.steps = j.at("steps");
+  r.warnings = j.at("warnings").get<std::vector<std::string>>();
+  return o;
+}
+
+// test-only triggers: a worker aborts, or hangs, on the job with this seed
+std::uint64_t env_seed(const char* name) {
+  const char* v = std::getenv(name);
+  return v ? std::strtoull(v, nullptr, 10) : 0;
+}
+
+// the worker's life: read a job, evaluate it, answer; until the pipe closes
+[[noreturn]] void worker_main(int in, int out, const SimConfig& cfg) {
+  const std::uint64_t abort_seed = env_seed("BESTIARY_TEST_ABORT_SEED");
+  const std::uint64_t hang_seed = env_seed("BESTIARY_TEST_HANG_SEED");
+  std::string msg;
+  while (receive_message(in, msg)) {
+    json job = json::parse(msg);
+    std::uint64_t seed = job.at("seed");
+    if (abort_seed && seed == abort_seed) std::abort();
+    if (hang_seed && seed == hang_seed) ::pause();
+    auto g = genome_from_json(job.at("genome"), "job");
+    EvalOutcome o;
+    if (!g) {
+      o.result.failed = true;
+      o.result.failure = "worker could not read the genome: " + g.error();
+    } else {
+      o = evaluate_genome(*g, cfg, seed);
+    }
+    if (!send_message(out, outcome_to_json(o).dump())) break;
+  }
+  ::_exit(0);
+}
+
+}  // namespace
+
+struct ProcessPoolEvaluator::Impl {
+  struct Worker {
+    pid_t pid = -1;
+    int to = -1, from = -1;  // pipe ends: jobs out, results in
+    int job = -1;            // index of the job it is working on, or -1
+    std::chrono::steady_clock::time_point deadline;
+  };
+
+  SimConfig cfg;
+  double timeout;
+  std::vector<Worker> workers;
+
+  void spawn(Worker& w) {
+    int jobs[2], results[2];
+    if (::pipe(jobs) != 0 || ::pipe(results) != 0) throw std::runtime_error("pipe failed");
+    pid_t pid = ::fork();
+    if (pid < 0) throw std::runtime_error("fork failed");
+    if (pid == 0) {
+      // the child keeps only its own two ends
+      ::close(jobs[1]);
+      ::close(results[0]);
+      for (auto& other : workers) {
+        if (other.to >= 0) ::close(other.to);
+        if (other.from >= 0) ::close(other.from);
+      }
+      worker_main(jobs[0], results[1], cfg);
+    }
+    ::close(jobs[0]);
+    ::close(results[1]);
+    ::fcntl(jobs[1], F_SETFD, FD_CLOEXEC);
+    ::fcntl(results[0], F_SETFD, FD_CLOEXEC);
+    w.pid = pid;
+    w.to = jobs[1];
+    w.from = results[0];
+    w.job = -1;
+  }
+
+  // ends a worker (killing it if need be) and says how it ended
+  std::string reap(Worker& w, bool kill) {
+    if (kill) ::kill(w.pid, SIGKILL);
+    ::close(w.to);
+    ::close(w.from);
+    int status = 0;
+    ::waitpid(w.pid, &status, 0);
+    w.pid = -1;
+    w.to = w.from = -1;
+    if (WIFSIGNALED(status)) return "signal " + std::to_string(WTERMSIG(status)) + " (" + strsignal(WTERMSIG(status)) + ")";
+    return "exit code " + std::to_string(WEXITSTATUS(status));
+  }
+};
+
+ProcessPoolEvaluator::ProcessPoolEvaluator(SimConfig cfg, int workers, double timeout_seconds)
+    : impl_(std::make_unique<Impl>()) {
+  ::signal(SIGPIPE, SIG_IGN);  // a dead worker shows as a failed write, not a dead parent
+  impl_->cfg = std::move(cfg);
+  impl_->timeout = timeout_seconds;
+  impl_->workers.resize(std::max(workers, 1));
+  for (auto& w : impl_->workers) impl_->spawn(w);
+}
+
+ProcessPoolEvaluator::~ProcessPoolEvaluator() {
+  for (auto& w : impl_->workers)
+    if (w.pid > 0) impl_->reap(w, false);  // closing its pipe ends the worker
+}
+
+int ProcessPoolEvaluator::workers() const { return static_cast<int>(impl_->workers.size()); }
+
+std::vector<EvalOutcome> ProcessPoolEvaluator::evaluate(const std::vector<EvalJob>& jobs) {
+  auto& im = *impl_;
+  std::vector<EvalOutcome> out(jobs.size());
+  std::deque<int> pending;
+  for (int i = 0; i < static_cast<int>(jobs.size()); ++i) pending.push_back(i);
+  std::size_t done = 0;
+  auto fail_job = [&](int job, const std::string& why) {
+    out[job].result.failed = true;
+    out[job].result.failure = why;
+    ++done;
+  };
+
+  while (done < jobs.size()) {
+    // hand jobs to idle workers
+    for (auto& w : im.workers) {
+      if (w.job >= 0 || pending.empty()) continue;
+      int j = pending.front();
+      pending.pop_front();
+      json msg = {{"seed", jobs[j].seed}, {"genome", genome_to_json(*jobs[j].genome)}};
+      w.job = j;
+      w.deadline = std::chrono::steady_clock::now() +
+                   std::chrono::milliseconds(static_cast<long>(im.timeout * 1000));
+      if (!send_message(w.to, msg.dump())) {
+        fail_job(j, "worker crashed: " + im.reap(w, true));
+        im.spawn(w);
+      }
+    }
+    // wait for an answer, or for the nearest deadline
+    std::vector<pollfd> fds;
+    std::vector<Impl::Worker*> busy;
+    auto now = std::chrono::steady_clock::now();
+    auto next = now + std::chrono::hours(1);
+    for (auto& w : im.workers) {
+      if (w.job < 0) continue;
+      fds.push_back({w.from, POLLIN, 0});
+      busy.push_back(&w);
+      next = std::min(next, w.deadline);
+    }
+    if (fds.empty()) continue;
+    int wait_ms = static_cast<int>(std::max<long>(
+        0, std::chrono::duration_cast<std::chrono::milliseconds>(next - now).count() + 1));
+    int n = ::poll(fds.data(), fds.size(), wait_ms);
+    if (n < 0 && errno != EINTR) throw std::runtime_error("poll failed");
+    now = std::chrono::steady_clock::now();
+    for (std::size_t k = 0; k < fds.size(); ++k) {
+      Impl::Worker& w = *busy[k];
+      int j = w.job;
+      if (fds[k].revents & (POLLIN | POLLHUP | POLLERR)) {
+        std::string msg;
+        if (receive_message(w.from, msg)) {
+          out[j] = outcome_from_json(json::parse(msg));
+          w.job = -1;
+          ++done;
+        } else {
+          fail_job(j, "worker crashed: " + im.reap(w, true));
+          im.spawn(w);
+        }
+      } else if (now >= w.deadline) {
+        im.reap(w, true);
+        fail_job(j, "timed out after " + std::to_string(static_cast<int>(im.timeout)) + " s");
+        im.spawn(w);
+      }
+    }
+  }
+  return out;
+}
+
+std::unique_ptr<Evaluator> make_evaluator(const SimConfig& cfg, int workers, double timeout_seconds) {
+  if (workers <= 0) return std::make_unique<SerialEvaluator>(cfg);
+  return std::make_unique<ProcessPoolEvaluator>(cfg, workers, timeout_seconds);
+}
+
+}  // namespace bx

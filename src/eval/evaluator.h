@@ -1,0 +1,74 @@
+// Evaluators: how a batch of genomes gets evaluated. The evolutionary
+// algorithms hand a batch to an Evaluator and never touch processes
+// themselves (DESIGN.md). Every evaluator gives identical results for the
+// same jobs, because an evaluation is a pure function of (genome, config, seed).
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "eval/evaluate.h"
+#include "eval/sim_config.h"
+#include "genome/genome.h"
+
+namespace bx {
+
+/// One evaluation to do.
+struct EvalJob {
+  const Genome* genome = nullptr;
+  std::uint64_t seed = 0;
+};
+
+/// What came of one job.
+struct EvalOutcome {
+  bool viable = true;
+  std::string reason;  ///< why not viable
+  EvalResult result;   ///< failed == true when the evaluation crashed, timed out or blew up
+};
+
+/// Grows and evaluates one genome: the work of every evaluator.
+EvalOutcome evaluate_genome(const Genome& g, const SimConfig& cfg, std::uint64_t seed);
+
+/// Evaluates batches of jobs; results come back in job order.
+class Evaluator {
+ public:
+  virtual ~Evaluator() = default;
+  virtual std::vector<EvalOutcome> evaluate(const std::vector<EvalJob>& jobs) = 0;
+  /// Worker processes in use (1 for the serial evaluator).
+  virtual int workers() const = 0;
+};
+
+/// Evaluates in this process, one job after another.
+class SerialEvaluator : public Evaluator {
+ public:
+  explicit SerialEvaluator(SimConfig cfg) : cfg_(std::move(cfg)) {}
+  std::vector<EvalOutcome> evaluate(const std::vector<EvalJob>& jobs) override;
+  int workers() const override { return 1; }
+
+ private:
+  SimConfig cfg_;
+};
+
+/// Evaluates in K worker processes, one creature at a time each (ODE's random
+/// generator is process-wide). A worker that crashes or runs past the timeout
+/// costs that one evaluation, recorded as failed with its reason; it is
+/// replaced and the batch goes on.
+class ProcessPoolEvaluator : public Evaluator {
+ public:
+  ProcessPoolEvaluator(SimConfig cfg, int workers, double timeout_seconds);
+  ~ProcessPoolEvaluator() override;
+  std::vector<EvalOutcome> evaluate(const std::vector<EvalJob>& jobs) override;
+  int workers() const override;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+/// A process pool of `workers` processes; 0 evaluates in this process (no
+/// protection from crashes: for debugging).
+std::unique_ptr<Evaluator> make_evaluator(const SimConfig& cfg, int workers, double timeout_seconds);
+
+}  // namespace bx

@@ -1,0 +1,103 @@
+// Evaluators: the process pool gives exactly the serial results, and survives
+// a worker that aborts or hangs.
+#include "eval/evaluator.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+
+#include "genome/genome_json.h"
+
+namespace bx {
+namespace {
+
+std::vector<Genome> creatures() {
+  std::vector<Genome> out;
+  for (const char* name : {"walker.json", "snake.json", "hinged_pair.json", "sims_both.json"}) {
+    auto g = load_genome(std::string(BESTIARY_SOURCE_DIR) + "/tests/creatures/" + name);
+    EXPECT_TRUE(g.ok()) << g.error();
+    out.push_back(*g);
+  }
+  return out;
+}
+
+SimConfig short_config() {
+  SimConfig cfg = default_sim_config(Dialect::Sims1994);
+  cfg.task.seconds = 2;
+  return cfg;
+}
+
+std::vector<EvalJob> jobs_for(const std::vector<Genome>& gs) {
+  std::vector<EvalJob> jobs;
+  for (std::size_t i = 0; i < gs.size(); ++i) jobs.push_back({&gs[i], 100 + i});
+  return jobs;
+}
+
+TEST(Evaluator, PoolGivesBitIdenticalResultsToSerialForAnyWorkerCount) {
+  auto gs = creatures();
+  auto jobs = jobs_for(gs);
+  auto serial = SerialEvaluator(short_config()).evaluate(jobs);
+  for (int k : {1, 2, 3}) {
+    ProcessPoolEvaluator pool(short_config(), k, 60);
+    auto got = pool.evaluate(jobs);
+    ASSERT_EQ(got.size(), serial.size());
+    for (std::size_t i = 0; i < got.size(); ++i) {
+      EXPECT_EQ(got[i].result.fitness, serial[i].result.fitness) << "k=" << k << " job " << i;
+      EXPECT_EQ(got[i].result.distance, serial[i].result.distance);
+      EXPECT_EQ(got[i].result.steps, serial[i].result.steps);
+      EXPECT_FALSE(got[i].result.failed);
+    }
+    // and again with the same pool: workers carry nothing over
+    auto again = pool.evaluate(jobs);
+    for (std::size_t i = 0; i < got.size(); ++i) EXPECT_EQ(again[i].result.fitness, got[i].result.fitness);
+  }
+}
+
+TEST(Evaluator, AWorkerThatAbortsCostsOnlyItsJob) {
+  auto gs = creatures();
+  auto jobs = jobs_for(gs);
+  ::setenv("BESTIARY_TEST_ABORT_SEED", "101", 1);
+  ProcessPoolEvaluator pool(short_config(), 2, 60);
+  auto got = pool.evaluate(jobs);
+  ::unsetenv("BESTIARY_TEST_ABORT_SEED");
+  auto serial = SerialEvaluator(short_config()).evaluate(jobs);
+  for (std::size_t i = 0; i < got.size(); ++i) {
+    if (i == 1) {
+      EXPECT_TRUE(got[i].result.failed);
+      EXPECT_EQ(got[i].result.failure, "worker crashed: signal 6 (Aborted)");
+      EXPECT_EQ(got[i].result.fitness, 0);
+    } else {
+      EXPECT_FALSE(got[i].result.failed) << got[i].result.failure;
+      EXPECT_EQ(got[i].result.fitness, serial[i].result.fitness);
+    }
+  }
+  // the crashed worker was replaced: a second batch runs in full
+  EXPECT_EQ(pool.workers(), 2);
+  jobs.erase(jobs.begin() + 1);
+  for (const auto& o : pool.evaluate(jobs)) EXPECT_FALSE(o.result.failed) << o.result.failure;
+}
+
+TEST(Evaluator, AWorkerThatHangsTimesOutAndTheBatchGoesOn) {
+  auto gs = creatures();
+  auto jobs = jobs_for(gs);
+  ::setenv("BESTIARY_TEST_HANG_SEED", "102", 1);
+  ProcessPoolEvaluator pool(short_config(), 2, 1.0);
+  ::unsetenv("BESTIARY_TEST_HANG_SEED");
+  auto got = pool.evaluate(jobs);
+  EXPECT_TRUE(got[2].result.failed);
+  EXPECT_EQ(got[2].result.failure, "timed out after 1 s");
+  for (std::size_t i : {0u, 1u, 3u}) EXPECT_FALSE(got[i].result.failed) << got[i].result.failure;
+}
+
+TEST(Evaluator, NonViableGenomesComeBackAsValues) {
+  auto gs = creatures();
+  gs[0].nodes[0].edges.push_back(gs[0].nodes[0].edges[0]);  // a second pair of legs on the first
+  std::vector<EvalJob> jobs = {{&gs[0], 1}};
+  ProcessPoolEvaluator pool(short_config(), 1, 60);
+  auto got = pool.evaluate(jobs);
+  EXPECT_FALSE(got[0].viable);
+  EXPECT_NE(got[0].reason.find("self-intersection"), std::string::npos) << got[0].reason;
+}
+
+}  // namespace
+}  // namespace bx
