@@ -14,6 +14,9 @@ namespace bx {
 /// `simulate` and `config` (src/cli/simulate.cpp).
 void add_simulate_commands(CLI::App& app);
 
+/// `run`, `resume`, `best` and `presets` (src/cli/evolve_cmds.cpp).
+void add_evolve_commands(CLI::App& app);
+
 /// Prints "bestiary: MESSAGE" on stderr and returns 2, the bad-input exit code.
 int fail(const std::string& message);
 

@@ -115,7 +115,11 @@ int cmd_simulate(const SimulateArgs& a) {
   return 0;
 }
 
-int cmd_config(const std::string& dialect, const std::string& config_file) {
+int cmd_config(const std::string& dialect, const std::string& config_file, bool reference) {
+  if (reference) {
+    std::printf("%s", config_reference_markdown().c_str());
+    return 0;
+  }
   auto d = parse_dialect(dialect);
   if (!d) return fail("dialect: expected sims1994, miconi2006 or chaumont2007, got \"" + dialect + "\"");
   SimConfig cfg = default_sim_config(*d);
@@ -140,10 +144,12 @@ void add_simulate_commands(CLI::App& app) {
   s->callback([] { std::exit(cmd_simulate(sim)); });
 
   static std::string dialect = "sims1994", cfg_file;
+  static bool reference = false;
   auto* c = app.add_subcommand("config", "Print the effective config (TOML) of a dialect");
   c->add_option("dialect", dialect, "sims1994, miconi2006 or chaumont2007");
   c->add_option("--config", cfg_file, "TOML config overlaid on the dialect's defaults");
-  c->callback([] { std::exit(cmd_config(dialect, cfg_file)); });
+  c->add_flag("--reference", reference, "Print every key of every dialect as a Markdown table");
+  c->callback([] { std::exit(cmd_config(dialect, cfg_file, reference)); });
 }
 
 }  // namespace bx

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "genome/dialect.h"
+#include "genome/genome_edit.h"  // face_frame: the edge frame on a face
 #include "physics/world.h"
 
 namespace bx {
@@ -70,15 +71,6 @@ Vec3 attach_point(Shape shape, Vec3 size, const EdgeGene& e) {
   // other shapes: move the box-face point onto the surface along its ray
   Vec3 d = normalized(q);
   return surface_distance(shape, size, d) * d;
-}
-
-// frame on a face: x = outward normal, right-handed
-Mat3 face_frame(Face f) {
-  int a = face_axis(f);
-  Vec3 n, t1;
-  n[a] = face_sign(f);
-  t1[(a + 1) % 3] = 1;
-  return Mat3::from_columns(n, t1, cross(n, t1));
 }
 
 double volume(Shape shape, Vec3 s) {

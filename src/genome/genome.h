@@ -62,9 +62,10 @@ enum class SourcePlace { Self, Parent, Child, Root, Global };
 enum class SourceKind { Neuron, Sensor };
 
 /// One weighted input of a neuron or effector.
-/// `Child` sources read the part(s) grown through `edge` (an index into the
+/// `Child` sources read the part grown through `edge` (an index into the
 /// owning node's `edges`); when that edge grows several instances (reflection)
-/// their outputs are summed. A source that does not exist in the developed
+/// they read the first, unreflected one (a mirrored parent reads its own
+/// unreflected child, so the wiring is mirrored too). A source that does not exist in the developed
 /// creature (no parent for the root, an edge that grew nothing, a recursion
 /// cut short) reads 0 and is reported as a development warning.
 struct InputGene {

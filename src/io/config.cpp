@@ -9,19 +9,21 @@
 #include <vector>
 
 #include "core/files.h"
+#include "genome/dialect.h"
 
 namespace bx {
 
 namespace {
 
-// One config key: where it lives in SimConfig and what it accepts.
+// One config key: where it lives in RunConfig and what it accepts.
 struct Field {
   std::string_view section;
   std::string_view key;
-  enum Kind { Real, Int, Bool, Choice } kind;
+  enum Kind { Real, Int, Long, Bool, Choice } kind;
   double lo, hi;                                  // inclusive range (Real, Int)
   std::vector<std::string_view> choices;          // Choice: names, by enum value
-  std::function<void*(SimConfig&)> at;            // the field's address
+  std::function<void*(RunConfig&)> at;            // the field's address
+  std::string_view doc;                           // one line for docs/config.md
 };
 
 template <class E>
@@ -32,38 +34,57 @@ E& as_enum(void* p) {
 const std::vector<Field>& fields() {
   constexpr double inf = 1e300;
   static const std::vector<Field> f = {
-      {"physics", "dt", Field::Real, 1e-5, 1, {}, [](SimConfig& c) -> void* { return &c.physics.dt; }},
-      {"physics", "gravity", Field::Real, -inf, inf, {}, [](SimConfig& c) -> void* { return &c.physics.gravity; }},
-      {"physics", "erp", Field::Real, 0, 1, {}, [](SimConfig& c) -> void* { return &c.physics.erp; }},
-      {"physics", "cfm", Field::Real, 0, 1, {}, [](SimConfig& c) -> void* { return &c.physics.cfm; }},
-      {"physics", "friction", Field::Real, 0, 1e6, {}, [](SimConfig& c) -> void* { return &c.physics.friction; }},
-      {"physics", "solver_iterations", Field::Int, 1, 1000, {}, [](SimConfig& c) -> void* { return &c.physics.solver_iterations; }},
-      {"physics", "max_contacts", Field::Int, 1, 64, {}, [](SimConfig& c) -> void* { return &c.physics.max_contacts; }},
-      {"physics", "self_collision", Field::Bool, 0, 0, {}, [](SimConfig& c) -> void* { return &c.physics.self_collision; }},
-      {"physics", "max_speed", Field::Real, 1e-3, inf, {}, [](SimConfig& c) -> void* { return &c.physics.max_speed; }},
-      {"physics", "max_step_jump", Field::Real, 1e-6, inf, {}, [](SimConfig& c) -> void* { return &c.physics.max_step_jump; }},
-      {"physics", "max_joint_gap", Field::Real, 1e-6, inf, {}, [](SimConfig& c) -> void* { return &c.physics.max_joint_gap; }},
-      {"motor", "model", Field::Choice, 0, 0, {"servo", "saturation", "torque", "pd"}, [](SimConfig& c) -> void* { return &c.motor.model; }},
-      {"motor", "max_speed", Field::Real, 0, inf, {}, [](SimConfig& c) -> void* { return &c.motor.max_speed; }},
-      {"motor", "max_force", Field::Real, 0, inf, {}, [](SimConfig& c) -> void* { return &c.motor.max_force; }},
-      {"motor", "strength", Field::Real, 0, inf, {}, [](SimConfig& c) -> void* { return &c.motor.strength; }},
-      {"motor", "kp", Field::Real, 0, inf, {}, [](SimConfig& c) -> void* { return &c.motor.kp; }},
-      {"motor", "kd", Field::Real, 0, inf, {}, [](SimConfig& c) -> void* { return &c.motor.kd; }},
-      {"brain", "steps_per_physics_step", Field::Int, 1, 100, {}, [](SimConfig& c) -> void* { return &c.brain_steps_per_physics_step; }},
-      {"develop", "max_parts", Field::Int, 0, 100000, {}, [](SimConfig& c) -> void* { return &c.develop.max_parts; }},
-      {"develop", "overlap_margin", Field::Real, 0, 1, {}, [](SimConfig& c) -> void* { return &c.develop.overlap_margin; }},
-      {"task", "seconds", Field::Real, 0, 1e6, {}, [](SimConfig& c) -> void* { return &c.task.seconds; }},
-      {"task", "drop_height", Field::Real, 0, 1e3, {}, [](SimConfig& c) -> void* { return &c.task.drop_height; }},
-      {"task", "metric", Field::Choice, 0, 0, {"planar", "x"}, [](SimConfig& c) -> void* { return &c.task.metric; }},
-      {"task", "skip_fraction", Field::Real, 0, 1, {}, [](SimConfig& c) -> void* { return &c.task.skip_fraction; }},
-      {"task", "fitness", Field::Choice, 0, 0, {"distance", "speed", "chaumont2007"}, [](SimConfig& c) -> void* { return &c.task.fitness; }},
-      {"task", "activation", Field::Choice, 0, 0, {"always", "chaumont2007"}, [](SimConfig& c) -> void* { return &c.task.activation; }},
-      {"task", "settle_threshold", Field::Real, 0, 1e3, {}, [](SimConfig& c) -> void* { return &c.task.settle_threshold; }},
-      {"task", "settle_steps", Field::Int, 1, 1000000, {}, [](SimConfig& c) -> void* { return &c.task.settle_steps; }},
-      {"task", "settle_timeout", Field::Real, 0, 1e4, {}, [](SimConfig& c) -> void* { return &c.task.settle_timeout; }},
-      {"task", "burst_seconds", Field::Real, 0, 1e4, {}, [](SimConfig& c) -> void* { return &c.task.burst_seconds; }},
-      {"task", "kappa", Field::Real, 0, 10, {}, [](SimConfig& c) -> void* { return &c.task.kappa; }},
-      {"replay", "fps", Field::Real, 1e-3, 1e4, {}, [](SimConfig& c) -> void* { return &c.replay_fps; }},
+      {"physics", "dt", Field::Real, 1e-5, 1, {}, [](RunConfig& c) -> void* { return &c.sim.physics.dt; }, "physics step (s)"},
+      {"physics", "gravity", Field::Real, -inf, inf, {}, [](RunConfig& c) -> void* { return &c.sim.physics.gravity; }, "gravity along z (m/s^2)"},
+      {"physics", "erp", Field::Real, 0, 1, {}, [](RunConfig& c) -> void* { return &c.sim.physics.erp; }, "ODE error reduction parameter"},
+      {"physics", "cfm", Field::Real, 0, 1, {}, [](RunConfig& c) -> void* { return &c.sim.physics.cfm; }, "ODE constraint force mixing"},
+      {"physics", "friction", Field::Real, 0, 1e6, {}, [](RunConfig& c) -> void* { return &c.sim.physics.friction; }, "Coulomb friction of every contact (friction pyramid)"},
+      {"physics", "solver_iterations", Field::Int, 1, 1000, {}, [](RunConfig& c) -> void* { return &c.sim.physics.solver_iterations; }, "QuickStep iterations"},
+      {"physics", "max_contacts", Field::Int, 1, 64, {}, [](RunConfig& c) -> void* { return &c.sim.physics.max_contacts; }, "contact points per colliding pair of geoms"},
+      {"physics", "self_collision", Field::Bool, 0, 0, {}, [](RunConfig& c) -> void* { return &c.sim.physics.self_collision; }, "parts not joined to each other collide"},
+      {"physics", "max_speed", Field::Real, 1e-3, inf, {}, [](RunConfig& c) -> void* { return &c.sim.physics.max_speed; }, "explosion test: a part faster than this (m/s) ends the evaluation"},
+      {"physics", "max_step_jump", Field::Real, 1e-6, inf, {}, [](RunConfig& c) -> void* { return &c.sim.physics.max_step_jump; }, "explosion test: a part moving farther than this in one step (m)"},
+      {"physics", "max_joint_gap", Field::Real, 1e-6, inf, {}, [](RunConfig& c) -> void* { return &c.sim.physics.max_joint_gap; }, "explosion test: joint anchors drifting apart farther than this (m)"},
+      {"motor", "model", Field::Choice, 0, 0, {"servo", "saturation", "torque", "pd"}, [](RunConfig& c) -> void* { return &c.sim.motor.model; }, "servo (miconi2006), saturation (chaumont2007 5.3), torque (sims1994), pd (rivercrossing)"},
+      {"motor", "max_speed", Field::Real, 0, inf, {}, [](RunConfig& c) -> void* { return &c.sim.motor.max_speed; }, "servo: target speed at signal 1; saturation: the fixed high target speed (rad/s or m/s)"},
+      {"motor", "max_force", Field::Real, 0, inf, {}, [](RunConfig& c) -> void* { return &c.sim.motor.max_force; }, "servo: torque cap (N m or N)"},
+      {"motor", "strength", Field::Real, 0, inf, {}, [](RunConfig& c) -> void* { return &c.sim.motor.strength; }, "torque and saturation: N m per m^2 of the larger part's cross-section"},
+      {"motor", "kp", Field::Real, 0, inf, {}, [](RunConfig& c) -> void* { return &c.sim.motor.kp; }, "pd: proportional gain"},
+      {"motor", "kd", Field::Real, 0, inf, {}, [](RunConfig& c) -> void* { return &c.sim.motor.kd; }, "pd: damping gain"},
+      {"brain", "steps_per_physics_step", Field::Int, 1, 100, {}, [](RunConfig& c) -> void* { return &c.sim.brain_steps_per_physics_step; }, "brain updates per physics step"},
+      {"develop", "max_parts", Field::Int, 0, 100000, {}, [](RunConfig& c) -> void* { return &c.sim.develop.max_parts; }, "most parts after development (0: the dialect's limit)"},
+      {"develop", "overlap_margin", Field::Real, 0, 1, {}, [](RunConfig& c) -> void* { return &c.sim.develop.overlap_margin; }, "self-intersection test shrinks parts by this much (m)"},
+      {"task", "seconds", Field::Real, 0, 1e6, {}, [](RunConfig& c) -> void* { return &c.sim.task.seconds; }, "evaluation length (s); with the chaumont2007 sequence, the measured phase"},
+      {"task", "drop_height", Field::Real, 0, 1e3, {}, [](RunConfig& c) -> void* { return &c.sim.task.drop_height; }, "gap between the lowest part and the ground at the start (m)"},
+      {"task", "metric", Field::Choice, 0, 0, {"planar", "x"}, [](RunConfig& c) -> void* { return &c.sim.task.metric; }, "planar: horizontal distance of the centre of mass; x: displacement along +x"},
+      {"task", "skip_fraction", Field::Real, 0, 1, {}, [](RunConfig& c) -> void* { return &c.sim.task.skip_fraction; }, "distance counts from this fraction of the evaluation on"},
+      {"task", "fitness", Field::Choice, 0, 0, {"distance", "speed", "chaumont2007"}, [](RunConfig& c) -> void* { return &c.sim.task.fitness; }, "distance, speed (distance / measured time) or chaumont2007 (eq. 1)"},
+      {"task", "activation", Field::Choice, 0, 0, {"always", "chaumont2007"}, [](RunConfig& c) -> void* { return &c.sim.task.activation; }, "always, or chaumont2007 (settle, 1 s burst, settle, measure)"},
+      {"task", "settle_threshold", Field::Real, 0, 1e3, {}, [](RunConfig& c) -> void* { return &c.sim.task.settle_threshold; }, "settled: every part moves less than this per step (m)"},
+      {"task", "settle_steps", Field::Int, 1, 1000000, {}, [](RunConfig& c) -> void* { return &c.sim.task.settle_steps; }, "... for this many consecutive steps"},
+      {"task", "settle_timeout", Field::Real, 0, 1e4, {}, [](RunConfig& c) -> void* { return &c.sim.task.settle_timeout; }, "never settled within this (s): fitness 0"},
+      {"task", "burst_seconds", Field::Real, 0, 1e4, {}, [](RunConfig& c) -> void* { return &c.sim.task.burst_seconds; }, "the first controller activation (s)"},
+      {"task", "kappa", Field::Real, 0, 10, {}, [](RunConfig& c) -> void* { return &c.sim.task.kappa; }, "eq. 1's reward per block"},
+      {"replay", "fps", Field::Real, 1e-3, 1e4, {}, [](RunConfig& c) -> void* { return &c.sim.replay_fps; }, "replay frames per simulated second"},
+      {"genome", "dialect", Field::Choice, 0, 0, {"sims1994", "miconi2006", "chaumont2007"}, [](RunConfig& c) -> void* { return &c.dialect; }, "sims1994, miconi2006 or chaumont2007: picks every default"},
+      {"evolution", "algorithm", Field::Choice, 0, 0, {"generational", "steady_state"}, [](RunConfig& c) -> void* { return &c.evolution.algorithm; }, "generational (chaumont2007) or steady_state (miconi2006)"},
+      {"evolution", "population", Field::Int, 3, 1000000, {}, [](RunConfig& c) -> void* { return &c.evolution.population; }, "individuals in the population"},
+      {"evolution", "generations", Field::Int, 1, 1000000, {}, [](RunConfig& c) -> void* { return &c.evolution.generations; }, "generational: generations, the random one included"},
+      {"evolution", "elite_fraction", Field::Real, 0, 1, {}, [](RunConfig& c) -> void* { return &c.evolution.elite_fraction; }, "generational: fraction of the best that survive"},
+      {"evolution", "selection", Field::Choice, 0, 0, {"rank", "proportionate", "uniform"}, [](RunConfig& c) -> void* { return &c.evolution.selection; }, "generational: rank, proportionate or uniform choice of parents among survivors"},
+      {"evolution", "p_asexual", Field::Real, 0, 1, {}, [](RunConfig& c) -> void* { return &c.evolution.p_asexual; }, "generational: share of children by mutation alone"},
+      {"evolution", "p_crossover", Field::Real, 0, 1, {}, [](RunConfig& c) -> void* { return &c.evolution.p_crossover; }, "generational: share of children by crossover"},
+      {"evolution", "p_graft", Field::Real, 0, 1, {}, [](RunConfig& c) -> void* { return &c.evolution.p_graft; }, "generational: share of children by grafting"},
+      {"evolution", "asexual_rate", Field::Real, 0, 1, {}, [](RunConfig& c) -> void* { return &c.evolution.asexual_rate; }, "generational: per-parameter mutation probability of asexual children"},
+      {"evolution", "sexual_mutation_chance", Field::Real, 0, 1, {}, [](RunConfig& c) -> void* { return &c.evolution.sexual_mutation_chance; }, "generational: chance that a crossover/graft child is mutated"},
+      {"evolution", "sexual_rate", Field::Real, 0, 1, {}, [](RunConfig& c) -> void* { return &c.evolution.sexual_rate; }, "generational: ... at this per-site probability"},
+      {"evolution", "evaluations", Field::Long, 0, 1e12, {}, [](RunConfig& c) -> void* { return &c.evolution.evaluations; }, "steady state: tournaments after the initial population"},
+      {"evolution", "mutation_rate", Field::Real, 0, 1, {}, [](RunConfig& c) -> void* { return &c.evolution.mutation_rate; }, "steady state: P_mut of the mutation operator"},
+      {"evolution", "asexual_mutations", Field::Int, 1, 1000, {}, [](RunConfig& c) -> void* { return &c.evolution.asexual_mutations; }, "steady state: mutations applied to make an asexual child"},
+      {"evolution", "batch", Field::Int, 1, 100000, {}, [](RunConfig& c) -> void* { return &c.evolution.batch; }, "steady state: tournaments evaluated together (disjoint triples); 1 = strictly sequential"},
+      {"evolution", "max_regenerations", Field::Int, 0, 1000000, {}, [](RunConfig& c) -> void* { return &c.evolution.max_regenerations; }, "non-viable children redrawn at most this often, then a random genome"},
+      {"evolution", "evaluation_timeout", Field::Real, 0.1, 1e6, {}, [](RunConfig& c) -> void* { return &c.evolution.evaluation_timeout; }, "seconds before a worker's evaluation is abandoned as failed"},
+      {"evolution", "report_every", Field::Long, 0, 1e12, {}, [](RunConfig& c) -> void* { return &c.evolution.report_every; }, "steady state: evaluations per statistics row and checkpoint (0: the population)"},
   };
   return f;
 }
@@ -83,13 +104,14 @@ std::string show(const toml::node& n) {
 
 // shortest text that reads back as the same double
 std::string num(double v) {
+  if (v == std::floor(v) && std::abs(v) < 1e15) return std::to_string(static_cast<long long>(v));
   char buf[32];
   auto r = std::to_chars(buf, buf + sizeof buf, v);
   return std::string(buf, r.ptr);
 }
 
 // sets one field from a TOML value, or says what is wrong
-Status set_field(const Field& f, SimConfig& cfg, const toml::node& n, const std::string& where) {
+Status set_field(const Field& f, RunConfig& cfg, const toml::node& n, const std::string& where) {
   void* p = f.at(cfg);
   auto bad = [&](const std::string& what) { return Status(Error{where + ": " + what + ", got " + show(n)}); };
   switch (f.kind) {
@@ -102,11 +124,15 @@ Status set_field(const Field& f, SimConfig& cfg, const toml::node& n, const std:
       *static_cast<double*>(p) = *v;
       return Ok{};
     }
-    case Field::Int: {
+    case Field::Int:
+    case Field::Long: {
       if (!n.is_integer()) return bad("expected an integer");
       auto v = *n.value<std::int64_t>();
       if (v < f.lo || v > f.hi) return bad("out of range [" + num(f.lo) + ", " + num(f.hi) + "]");
-      *static_cast<int*>(p) = static_cast<int>(v);
+      if (f.kind == Field::Int)
+        *static_cast<int*>(p) = static_cast<int>(v);
+      else
+        *static_cast<long*>(p) = static_cast<long>(v);
       return Ok{};
     }
     case Field::Bool:
@@ -132,7 +158,16 @@ Status set_field(const Field& f, SimConfig& cfg, const toml::node& n, const std:
 
 }  // namespace
 
-Status apply_config_toml(SimConfig& cfg, std::string_view text, std::string_view source) {
+RunConfig default_run_config(Dialect d) {
+  RunConfig c;
+  c.dialect = d;
+  c.sim = default_sim_config(d);
+  c.evolution = default_evolution(d);
+  c.operators = default_operators(d);
+  return c;
+}
+
+Status apply_config_toml(RunConfig& cfg, std::string_view text, std::string_view source) {
   toml::table root;
   try {
     root = toml::parse(text, source);
@@ -141,7 +176,7 @@ Status apply_config_toml(SimConfig& cfg, std::string_view text, std::string_view
     return Error{std::string(source) + ":" + std::to_string(b.line) + ":" + std::to_string(b.column) +
                  ": " + std::string(e.description())};
   }
-  SimConfig out = cfg;  // apply all or nothing
+  RunConfig out = cfg;  // apply all or nothing
   for (auto&& [sec_key, sec_node] : root) {
     std::string sec(sec_key.str());
     auto* table = sec_node.as_table();
@@ -158,21 +193,74 @@ Status apply_config_toml(SimConfig& cfg, std::string_view text, std::string_view
       if (Status s = set_field(*field, out, node, where); !s) return s;
     }
   }
+  // keys that must agree with each other (the steady state draws its three ways evenly)
+  const EvolutionDef& e = out.evolution;
+  if (e.algorithm == Algorithm::Generational && std::abs(e.p_asexual + e.p_crossover + e.p_graft - 1) > 1e-9)
+    return Error{std::string(source) + ": evolution.p_asexual + p_crossover + p_graft: must sum to 1, got " +
+                 num(std::round((e.p_asexual + e.p_crossover + e.p_graft) * 1e9) / 1e9)};
   cfg = out;
   return Ok{};
+}
+
+Result<RunConfig> read_run_config(std::string_view text, std::string_view source,
+                                  const std::vector<std::string>& overrides) {
+  // the dialect decides the defaults, so it is read first
+  Dialect d = Dialect::Sims1994;
+  std::vector<std::pair<std::string, std::string>> layers = {{std::string(text), std::string(source)}};
+  for (const auto& o : overrides) {
+    auto eq = o.find('=');
+    if (eq == std::string::npos || eq == 0)
+      return Error{"--set: expected section.key=value, got \"" + o + "\""};
+    std::string key = o.substr(0, eq), value = o.substr(eq + 1);
+    if (key.find('.') == std::string::npos)
+      return Error{"--set: expected section.key=value, got \"" + o + "\""};
+    // a bare word is a string; anything else is read as TOML
+    std::string line = key + " = " + value;
+    try {
+      (void)toml::parse(line);
+    } catch (const toml::parse_error&) {
+      line = key + " = \"" + value + "\"";
+    }
+    layers.push_back({line, "--set " + o});
+  }
+  for (const auto& [t, src] : layers) {
+    try {
+      toml::table root = toml::parse(t, src);
+      if (auto name = root["genome"]["dialect"].value<std::string>()) {
+        auto parsed = parse_dialect(*name);
+        if (!parsed)
+          return Error{src + ": genome.dialect: expected one of sims1994, miconi2006, chaumont2007, got \"" +
+                       *name + "\""};
+        d = *parsed;
+      }
+    } catch (const toml::parse_error&) {
+      // reported with its position by apply_config_toml below
+    }
+  }
+  RunConfig cfg = default_run_config(d);
+  for (const auto& [t, src] : layers)
+    if (Status s = apply_config_toml(cfg, t, src); !s) return Error{s.error()};
+  return cfg;
 }
 
 Status apply_config_file(SimConfig& cfg, const std::string& path) {
   auto text = read_file(path);
   if (!text) return Error{text.error()};
-  return apply_config_toml(cfg, *text, path);
+  // a run config works too: its sim sections apply, the rest is checked and ignored
+  RunConfig rc;
+  rc.sim = cfg;
+  if (Status s = apply_config_toml(rc, *text, path); !s) return s;
+  cfg = rc.sim;
+  return Ok{};
 }
 
-std::string config_to_toml(const SimConfig& cfg_in) {
-  SimConfig cfg = cfg_in;
+std::string config_to_toml(const RunConfig& cfg_in, bool sim_only) {
+  RunConfig cfg = cfg_in;
   std::ostringstream ss;
   std::string_view section;
   for (const auto& f : fields()) {
+    bool sim_section = f.section != "genome" && f.section != "evolution" && f.section != "operators";
+    if (sim_only && !sim_section) continue;
     if (f.section != section) {
       ss << (section.empty() ? "" : "\n") << "[" << f.section << "]\n";
       section = f.section;
@@ -182,12 +270,42 @@ std::string config_to_toml(const SimConfig& cfg_in) {
     switch (f.kind) {
       case Field::Real: ss << num(*static_cast<double*>(p)); break;
       case Field::Int: ss << *static_cast<int*>(p); break;
+      case Field::Long: ss << *static_cast<long*>(p); break;
       case Field::Bool: ss << (*static_cast<bool*>(p) ? "true" : "false"); break;
       case Field::Choice: ss << '"' << f.choices[*static_cast<int*>(p)] << '"'; break;
     }
     ss << "\n";
   }
   return ss.str();
+}
+
+std::string config_reference_markdown() {
+  // one row per key: the dialects' defaults side by side
+  RunConfig d[3] = {default_run_config(Dialect::Sims1994), default_run_config(Dialect::Miconi2006),
+                    default_run_config(Dialect::Chaumont2007)};
+  std::ostringstream ss;
+  ss << "| key | sims1994 | miconi2006 | chaumont2007 | meaning |\n|---|---|---|---|---|\n";
+  for (const auto& f : fields()) {
+    ss << "| `" << f.section << "." << f.key << "` |";
+    for (auto& c : d) {
+      void* p = f.at(c);
+      switch (f.kind) {
+        case Field::Real: ss << " " << num(*static_cast<double*>(p)) << " |"; break;
+        case Field::Int: ss << " " << *static_cast<int*>(p) << " |"; break;
+        case Field::Long: ss << " " << *static_cast<long*>(p) << " |"; break;
+        case Field::Bool: ss << " " << (*static_cast<bool*>(p) ? "true" : "false") << " |"; break;
+        case Field::Choice: ss << " " << f.choices[*static_cast<int*>(p)] << " |"; break;
+      }
+    }
+    ss << " " << f.doc << " |\n";
+  }
+  return ss.str();
+}
+
+std::string config_to_toml(const SimConfig& cfg) {
+  RunConfig rc;
+  rc.sim = cfg;
+  return config_to_toml(rc, true);
 }
 
 }  // namespace bx

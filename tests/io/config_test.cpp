@@ -1,30 +1,32 @@
 // Config files: strict keys, typed values, ranges, and a lossless round trip.
 #include "io/config.h"
 
+#include "core/files.h"
+
 #include <gtest/gtest.h>
 
 namespace bx {
 namespace {
 
 std::string apply_error(const std::string& toml) {
-  SimConfig cfg = default_sim_config(Dialect::Miconi2006);
+  RunConfig cfg = default_run_config(Dialect::Miconi2006);
   Status s = apply_config_toml(cfg, toml, "run.toml");
   return s.ok() ? "" : s.error();
 }
 
 TEST(Config, OverlaysValuesOntoTheDialectDefaults) {
-  SimConfig cfg = default_sim_config(Dialect::Miconi2006);
-  EXPECT_EQ(cfg.physics.erp, 0.015);
-  EXPECT_EQ(cfg.motor.model, MotorModel::Servo);
+  RunConfig cfg = default_run_config(Dialect::Miconi2006);
+  EXPECT_EQ(cfg.sim.physics.erp, 0.015);
+  EXPECT_EQ(cfg.sim.motor.model, MotorModel::Servo);
   ASSERT_TRUE(apply_config_toml(cfg, "[physics]\nerp = 0.2\nsolver_iterations = 40\n"
                                      "[motor]\nmodel = \"pd\"\n[task]\nmetric = \"planar\"\nseconds = 3\n",
                                 "x.toml"));
-  EXPECT_EQ(cfg.physics.erp, 0.2);
-  EXPECT_EQ(cfg.physics.solver_iterations, 40);
-  EXPECT_EQ(cfg.physics.cfm, 0.01);  // untouched keys keep the dialect's value
-  EXPECT_EQ(cfg.motor.model, MotorModel::PD);
-  EXPECT_EQ(cfg.task.metric, DistanceMetric::Planar);
-  EXPECT_EQ(cfg.task.seconds, 3.0);
+  EXPECT_EQ(cfg.sim.physics.erp, 0.2);
+  EXPECT_EQ(cfg.sim.physics.solver_iterations, 40);
+  EXPECT_EQ(cfg.sim.physics.cfm, 0.01);  // untouched keys keep the dialect's value
+  EXPECT_EQ(cfg.sim.motor.model, MotorModel::PD);
+  EXPECT_EQ(cfg.sim.task.metric, DistanceMetric::Planar);
+  EXPECT_EQ(cfg.sim.task.seconds, 3.0);
 }
 
 TEST(Config, BadInputNamesTheKeyAndTheValue) {
@@ -41,10 +43,32 @@ TEST(Config, BadInputNamesTheKeyAndTheValue) {
             "run.toml: physics.self_collision: expected true or false, got 1");
   EXPECT_EQ(apply_error("physics = 3\n"), "run.toml: physics: expected a table, got 3");
   EXPECT_EQ(apply_error("[physics\n").substr(0, 11), "run.toml:1:");
+  EXPECT_EQ(apply_error("[evolution]\npopulation = 2\n"),
+            "run.toml: evolution.population: out of range [3, 1000000], got 2");
+  EXPECT_EQ(apply_error("[evolution]\nalgorithm = \"generational\"\np_asexual = 0.5\np_crossover = 0.3\n"
+                        "p_graft = 0.4\n"),
+            "run.toml: evolution.p_asexual + p_crossover + p_graft: must sum to 1, got 1.2");
+}
+
+TEST(Config, RunConfigTakesTheDialectsDefaultsThenTheTextThenTheOverrides) {
+  auto c = read_run_config("[genome]\ndialect = \"miconi2006\"\n[evolution]\npopulation = 50\n", "r.toml",
+                           {"evolution.population=60", "motor.model=pd", "task.seconds=5"});
+  ASSERT_TRUE(c.ok()) << c.error();
+  EXPECT_EQ(c->dialect, Dialect::Miconi2006);
+  EXPECT_EQ(c->sim.physics.erp, 0.015);  // miconi2006's default
+  EXPECT_EQ(c->evolution.population, 60);
+  EXPECT_EQ(c->sim.motor.model, MotorModel::PD);
+  EXPECT_EQ(c->sim.task.seconds, 5.0);
+  auto bad = read_run_config("", "r.toml", {"evolution.populaton=3"});
+  EXPECT_EQ(bad.error(), "--set evolution.populaton=3: evolution.populaton: unknown key");
+  EXPECT_EQ(read_run_config("", "r.toml", {"population=3"}).error(),
+            "--set: expected section.key=value, got \"population=3\"");
+  EXPECT_EQ(read_run_config("[genome]\ndialect = \"sims\"\n", "r.toml").error(),
+            "r.toml: genome.dialect: expected one of sims1994, miconi2006, chaumont2007, got \"sims\"");
 }
 
 TEST(Config, BadInputChangesNothing) {
-  SimConfig cfg = default_sim_config(Dialect::Sims1994);
+  RunConfig cfg = default_run_config(Dialect::Sims1994);
   std::string before = config_to_toml(cfg);
   EXPECT_FALSE(apply_config_toml(cfg, "[physics]\nerp = 0.5\ncfm = -1\n", "x.toml"));
   EXPECT_EQ(config_to_toml(cfg), before);
@@ -52,12 +76,25 @@ TEST(Config, BadInputChangesNothing) {
 
 TEST(Config, PrintedConfigReadsBackToTheSameConfig) {
   for (Dialect d : {Dialect::Sims1994, Dialect::Miconi2006, Dialect::Chaumont2007}) {
-    SimConfig a = default_sim_config(d);
-    SimConfig b = default_sim_config(Dialect::Sims1994);
+    RunConfig a = default_run_config(d);
+    RunConfig b = default_run_config(Dialect::Sims1994);
     ASSERT_TRUE(apply_config_toml(b, config_to_toml(a), "printed"));
     EXPECT_EQ(config_to_toml(a), config_to_toml(b));
-    EXPECT_EQ(a.physics.dt, b.physics.dt);  // exact: 1/60 survives the text
+    EXPECT_EQ(a.sim.physics.dt, b.sim.physics.dt);  // exact: 1/60 survives the text
   }
+}
+
+}  // namespace
+}  // namespace bx
+
+namespace bx {
+namespace {
+
+TEST(Config, TheReferenceDocListsEveryKeyAsTheCodeHasIt) {
+  auto doc = read_file(std::string(BESTIARY_SOURCE_DIR) + "/docs/config.md");
+  ASSERT_TRUE(doc.ok()) << doc.error();
+  EXPECT_NE(doc->find(config_reference_markdown()), std::string::npos)
+      << "docs/config.md is stale: paste the output of `bestiary config --reference` into it";
 }
 
 }  // namespace

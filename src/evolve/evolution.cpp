@@ -1,0 +1,264 @@
+#include "evolve/evolution.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numeric>
+
+#include "core/rng.h"
+#include "genome/dialect.h"
+
+namespace bx {
+
+namespace {
+
+// purposes of the random streams, so no two uses share one
+enum Stream : std::uint64_t { kInitial = 1, kBreed = 2, kTournament = 3, kEvaluation = 4 };
+
+// better first; equal fitness: older first (deterministic)
+bool better(const Individual& a, const Individual& b) {
+  if (a.fitness != b.fitness) return a.fitness > b.fitness;
+  return a.id < b.id;
+}
+
+}  // namespace
+
+std::size_t select_survivor(const std::vector<Individual>& survivors, Selection how, Rng& rng) {
+  std::size_t n = survivors.size();
+  if (how == Selection::Uniform || n == 1) return rng.below(n);
+  std::vector<double> w(n);
+  if (how == Selection::Rank) {
+    for (std::size_t i = 0; i < n; ++i) w[i] = static_cast<double>(n - i);
+  } else {
+    // fitness-proportionate, shifted so the worst survivor still has a small chance
+    double lo = survivors.back().fitness, hi = survivors.front().fitness;
+    double floor = hi > lo ? (hi - lo) * 0.01 : 1.0;
+    for (std::size_t i = 0; i < n; ++i) w[i] = survivors[i].fitness - lo + floor;
+  }
+  double r = rng.uniform() * std::accumulate(w.begin(), w.end(), 0.0);
+  for (std::size_t i = 0; i < n; ++i) {
+    r -= w[i];
+    if (r < 0) return i;
+  }
+  return n - 1;
+}
+
+Evolution::Evolution(Dialect dialect, EvolutionDef evo, OperatorDef ops, DevelopDef develop,
+                     std::uint64_t seed)
+    : dialect_(dialect), evo_(evo), ops_(std::move(ops)), develop_(develop), seed_(seed) {}
+
+bool Evolution::finished(const EvolutionState& s) const {
+  if (evo_.algorithm == Algorithm::Generational) return s.generation + 1 >= evo_.generations;
+  return s.generation >= 0 && s.evaluations >= evo_.population + evo_.evaluations;
+}
+
+int Evolution::total_generations() const {
+  if (evo_.algorithm == Algorithm::Generational) return evo_.generations;
+  long every = evo_.report_every > 0 ? evo_.report_every : evo_.population;
+  return 1 + static_cast<int>((evo_.evaluations + every - 1) / every);
+}
+
+std::uint64_t evaluation_seed(std::uint64_t seed, std::int64_t id) {
+  return stream_seed({seed, kEvaluation, static_cast<std::uint64_t>(id)});
+}
+
+std::uint64_t Evolution::eval_seed(std::int64_t id) const { return evaluation_seed(seed_, id); }
+
+bool Evolution::is_viable(const Genome& g) const {
+  return validate(g).ok() && develop(g, develop_).viable();
+}
+
+// redraws a non-viable child until it is viable; past the limit, a random genome
+Evolution::Child Evolution::viable(Child c, Rng& rng, long& rejected,
+                                   const std::function<Child(Rng&)>& remake) const {
+  for (int tries = 0; !is_viable(c.genome); ++tries) {
+    ++rejected;
+    c = tries < evo_.max_regenerations ? remake(rng) : random_child(rng, rejected);
+  }
+  return c;
+}
+
+Evolution::Child Evolution::random_child(Rng& rng, long& rejected) const {
+  // random genomes are redrawn until viable, without a limit
+  for (;;) {
+    Child c{random_genome(dialect_, ops_, rng), -1, -1, "random"};
+    if (is_viable(c.genome)) return c;
+    ++rejected;
+  }
+}
+
+std::vector<Individual> Evolution::evaluate(std::vector<Child> children, EvolutionState& s,
+                                            Evaluator& eval, long& failed) const {
+  std::vector<Individual> born(children.size());
+  std::vector<EvalJob> jobs(children.size());
+  for (std::size_t k = 0; k < children.size(); ++k) {
+    Individual& ind = born[k];
+    ind.id = s.next_id++;
+    ind.genome = std::move(children[k].genome);
+    ind.parent1 = children[k].parent1;
+    ind.parent2 = children[k].parent2;
+    ind.op = children[k].op;
+    ind.generation = s.generation + 1;
+    jobs[k] = {&ind.genome, eval_seed(ind.id)};
+  }
+  std::vector<EvalOutcome> out = eval.evaluate(jobs);
+  for (std::size_t k = 0; k < born.size(); ++k) {
+    Individual& ind = born[k];
+    const EvalResult& r = out[k].result;
+    if (!out[k].viable) {
+      ind.failure = "not viable: " + out[k].reason;
+      ++failed;
+    } else if (r.failed) {
+      ind.failure = r.failure;
+      ++failed;
+    } else {
+      ind.fitness = r.fitness;
+      ind.distance = r.distance;
+      ind.failure = r.note;
+    }
+  }
+  s.evaluations += static_cast<long>(born.size());
+  return born;
+}
+
+GenerationStats Evolution::stats(const EvolutionState& s) const {
+  GenerationStats st;
+  st.generation = s.generation;
+  st.evaluations = s.evaluations;
+  std::vector<double> f;
+  for (const auto& ind : s.population) f.push_back(ind.fitness);
+  if (f.empty()) return st;
+  auto best = std::min_element(s.population.begin(), s.population.end(), better);
+  st.best = best->fitness;
+  st.best_id = best->id;
+  st.mean = std::accumulate(f.begin(), f.end(), 0.0) / static_cast<double>(f.size());
+  std::sort(f.begin(), f.end());
+  std::size_t n = f.size();
+  st.median = n % 2 ? f[n / 2] : 0.5 * (f[n / 2 - 1] + f[n / 2]);
+  return st;
+}
+
+GenerationResult Evolution::step(EvolutionState& s, Evaluator& eval) const {
+  if (s.generation < 0) return initial(s, eval);
+  return evo_.algorithm == Algorithm::Generational ? generational(s, eval) : steady_state(s, eval);
+}
+
+GenerationResult Evolution::initial(EvolutionState& s, Evaluator& eval) const {
+  long rejected = 0, failed = 0;
+  std::vector<Child> children;
+  for (int k = 0; k < evo_.population; ++k) {
+    Rng rng(stream_seed({seed_, kInitial, static_cast<std::uint64_t>(k)}));
+    children.push_back(random_child(rng, rejected));
+  }
+  GenerationResult res;
+  res.born = evaluate(std::move(children), s, eval, failed);
+  s.population = res.born;
+  s.generation = 0;
+  res.stats = stats(s);
+  res.stats.rejected = rejected;
+  res.stats.failed = failed;
+  return res;
+}
+
+GenerationResult Evolution::generational(EvolutionState& s, Evaluator& eval) const {
+  const int g = s.generation + 1;
+  // the best survive
+  std::vector<Individual> sorted = s.population;
+  std::sort(sorted.begin(), sorted.end(), better);
+  int n = static_cast<int>(sorted.size());
+  int elite = std::clamp(static_cast<int>(std::lround(evo_.elite_fraction * n)), 1, n);
+  std::vector<Individual> survivors(sorted.begin(), sorted.begin() + elite);
+
+  // the rest are children of survivors: asexual, crossover or grafting
+  long rejected = 0, failed = 0;
+  std::vector<Child> children;
+  for (int k = 0; k < evo_.population - elite; ++k) {
+    Rng rng(stream_seed({seed_, kBreed, static_cast<std::uint64_t>(g), static_cast<std::uint64_t>(k)}));
+    auto make = [&](Rng& r) {
+      const Individual& a = survivors[select_survivor(survivors, evo_.selection, r)];
+      double u = r.uniform();
+      if (u < evo_.p_asexual) {
+        Child c{a.genome, a.id, -1, "mutation"};
+        mutate(c.genome, ops_, evo_.asexual_rate, r);
+        return c;
+      }
+      const Individual& b = survivors[select_survivor(survivors, evo_.selection, r)];
+      bool cross = u < evo_.p_asexual + evo_.p_crossover;
+      Child c{cross ? crossover(a.genome, b.genome, ops_, r) : graft(a.genome, b.genome, ops_, r), a.id, b.id,
+              cross ? "crossover" : "graft"};
+      if (r.chance(evo_.sexual_mutation_chance)) mutate(c.genome, ops_, evo_.sexual_rate, r);
+      return c;
+    };
+    children.push_back(viable(make(rng), rng, rejected, make));
+  }
+
+  GenerationResult res;
+  res.born = evaluate(std::move(children), s, eval, failed);
+  s.population = std::move(survivors);
+  s.population.insert(s.population.end(), res.born.begin(), res.born.end());
+  s.generation = g;
+  res.stats = stats(s);
+  res.stats.rejected = rejected;
+  res.stats.failed = failed;
+  return res;
+}
+
+GenerationResult Evolution::steady_state(EvolutionState& s, Evaluator& eval) const {
+  const long every = evo_.report_every > 0 ? evo_.report_every : evo_.population;
+  const long total = evo_.population + evo_.evaluations;
+  const long until = std::min(total, s.evaluations + every);
+  const int pop = static_cast<int>(s.population.size());
+  long rejected = 0, failed = 0;
+  GenerationResult res;
+
+  while (s.evaluations < until) {
+    // one batch of tournaments over disjoint triples of the current population
+    int n = static_cast<int>(std::min<long>({evo_.batch, until - s.evaluations, pop / 3}));
+    n = std::max(n, 1);
+    Rng rng(stream_seed({seed_, kTournament, static_cast<std::uint64_t>(s.evaluations)}));
+    std::vector<int> idx(pop);
+    std::iota(idx.begin(), idx.end(), 0);
+    for (int i = 0; i < 3 * n; ++i) std::swap(idx[i], idx[i + rng.below(pop - i)]);
+
+    std::vector<Child> children;
+    std::vector<int> replaced;
+    for (int t = 0; t < n; ++t) {
+      std::array<int, 3> tri = {idx[3 * t], idx[3 * t + 1], idx[3 * t + 2]};
+      std::sort(tri.begin(), tri.end(),
+                [&](int x, int y) { return better(s.population[x], s.population[y]); });
+      const Individual &a = s.population[tri[0]], &b = s.population[tri[1]];
+      // crossover + mutation, grafting + mutation, or four mutations of the best (5.2)
+      auto make = [&](Rng& r) {
+        switch (r.below(3)) {
+          case 0: {
+            Child c{crossover(a.genome, b.genome, ops_, r), a.id, b.id, "crossover"};
+            mutate(c.genome, ops_, evo_.mutation_rate, r);
+            return c;
+          }
+          case 1: {
+            Child c{graft(a.genome, b.genome, ops_, r), a.id, b.id, "graft"};
+            mutate(c.genome, ops_, evo_.mutation_rate, r);
+            return c;
+          }
+          default: {
+            Child c{a.genome, a.id, -1, "mutation"};
+            for (int m = 0; m < evo_.asexual_mutations; ++m) mutate(c.genome, ops_, evo_.mutation_rate, r);
+            return c;
+          }
+        }
+      };
+      children.push_back(viable(make(rng), rng, rejected, make));
+      replaced.push_back(tri[2]);
+    }
+    std::vector<Individual> born = evaluate(std::move(children), s, eval, failed);
+    for (std::size_t k = 0; k < born.size(); ++k) s.population[replaced[k]] = born[k];
+    res.born.insert(res.born.end(), born.begin(), born.end());
+  }
+  s.generation += 1;
+  res.stats = stats(s);
+  res.stats.rejected = rejected;
+  res.stats.failed = failed;
+  return res;
+}
+
+}  // namespace bx

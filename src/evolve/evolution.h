@@ -1,0 +1,104 @@
+// The evolutionary loops: a generational GA (chaumont2007) and a steady-state
+// GA with triple tournaments (miconi2006). Both hand batches to an Evaluator
+// and never touch processes; every random draw comes from a stream seeded by
+// (run seed, generation or batch, child), so a run resumed from a checkpoint
+// continues exactly as if it had never stopped.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "develop/develop.h"
+#include "eval/evaluator.h"
+#include "evolve/evolution_def.h"
+#include "genome/genome.h"
+#include "core/rng.h"
+#include "genome/operators.h"
+
+namespace bx {
+
+/// One evaluated creature of a run.
+struct Individual {
+  std::int64_t id = -1;
+  Genome genome;
+  double fitness = 0;
+  double distance = 0;
+  std::string failure;  ///< why it failed (crash, timeout, explosion) or scored 0 by rule
+  std::int64_t parent1 = -1, parent2 = -1;
+  std::string op;       ///< random, mutation, crossover, graft
+  int generation = 0;   ///< the generation (steady state: the report interval) it was born in
+};
+
+/// Statistics of one generation (steady state: one report interval).
+struct GenerationStats {
+  int generation = 0;
+  long evaluations = 0;   ///< cumulative evaluations at its end
+  double best = 0, mean = 0, median = 0;  ///< over the population
+  std::int64_t best_id = -1;
+  long rejected = 0;      ///< non-viable children redrawn during it
+  long failed = 0;        ///< evaluations that crashed, timed out or blew up
+};
+
+/// Where a run stands; what a checkpoint holds.
+struct EvolutionState {
+  int generation = -1;    ///< last completed generation
+  long evaluations = 0;   ///< cumulative evaluations
+  std::int64_t next_id = 0;
+  std::vector<Individual> population;
+};
+
+/// The outcome of one step.
+struct GenerationResult {
+  GenerationStats stats;
+  std::vector<Individual> born;  ///< individuals created and evaluated, in id order
+};
+
+/// Draws a parent index from survivors sorted best first, by rank (weight
+/// n - i), fitness-proportionately (shifted so the worst keeps 1% of the
+/// range) or uniformly.
+std::size_t select_survivor(const std::vector<Individual>& survivors, Selection how, Rng& rng);
+
+/// The evaluation seed of individual `id` of a run with master seed `seed`.
+std::uint64_t evaluation_seed(std::uint64_t seed, std::int64_t id);
+
+/// An evolutionary run's algorithm.
+class Evolution {
+ public:
+  Evolution(Dialect dialect, EvolutionDef evo, OperatorDef ops, DevelopDef develop,
+            std::uint64_t seed);
+
+  /// True when the run has done all its generations or evaluations.
+  bool finished(const EvolutionState& s) const;
+  /// Generations (steady state: report intervals) the run will have in all.
+  int total_generations() const;
+  /// Runs the next generation: the initial population first.
+  GenerationResult step(EvolutionState& s, Evaluator& eval) const;
+  /// The evaluation seed of an individual.
+  std::uint64_t eval_seed(std::int64_t id) const;
+
+ private:
+  struct Child {
+    Genome genome;
+    std::int64_t parent1 = -1, parent2 = -1;
+    std::string op;
+  };
+  Child random_child(Rng& rng, long& rejected) const;
+  Child viable(Child c, Rng& rng, long& rejected, const std::function<Child(Rng&)>& remake) const;
+  bool is_viable(const Genome& g) const;
+  std::vector<Individual> evaluate(std::vector<Child> children, EvolutionState& s, Evaluator& eval,
+                                   long& failed) const;
+  GenerationResult initial(EvolutionState& s, Evaluator& eval) const;
+  GenerationResult generational(EvolutionState& s, Evaluator& eval) const;
+  GenerationResult steady_state(EvolutionState& s, Evaluator& eval) const;
+  GenerationStats stats(const EvolutionState& s) const;
+
+  Dialect dialect_;
+  EvolutionDef evo_;
+  OperatorDef ops_;
+  DevelopDef develop_;
+  std::uint64_t seed_;
+};
+
+}  // namespace bx

@@ -1,0 +1,52 @@
+// Definition of an evolutionary run's algorithm, with defaults in one place.
+// Presets set each paper's constants (presets/*.toml).
+#pragma once
+
+#include <cstdint>
+
+#include "genome/genome.h"
+
+namespace bx {
+
+/// Which loop drives evolution.
+enum class Algorithm {
+  Generational,  ///< chaumont2007 5.2, 5.7: elite survive, the rest replaced by children
+  SteadyState,   ///< miconi2006 5.2: triple tournaments, the worst replaced by a child
+};
+
+/// How parents are drawn from the survivors of a generational GA.
+enum class Selection { Rank, Proportionate, Uniform };
+
+/// The evolutionary algorithm's settings.
+struct EvolutionDef {
+  Algorithm algorithm = Algorithm::Generational;
+  int population = 300;           ///< chaumont2007 5.2: 300; miconi2006 6.1: 500
+  // generational (chaumont2007)
+  int generations = 100;          ///< chaumont2007 5.2: 100
+  double elite_fraction = 0.2;    ///< the best 20% survive (5.2)
+  Selection selection = Selection::Rank;
+  double p_asexual = 0.4;         ///< children from mutation alone (5.7)
+  double p_crossover = 0.3;       ///< children from crossover (5.7)
+  double p_graft = 0.3;           ///< children from grafting (5.7)
+  double asexual_rate = 0.10;     ///< per-parameter mutation probability of asexual children
+  double sexual_mutation_chance = 0.10;  ///< chance that a crossover/graft child is mutated
+  double sexual_rate = 0.05;      ///< its per-site probability
+  // steady state (miconi2006)
+  long evaluations = 500000;      ///< cycles after the initial population (6.1: 500,000)
+  double mutation_rate = 0.04;    ///< P_mut (5.1)
+  int asexual_mutations = 4;      ///< the asexual option applies the mutation operator 4 times (5.2)
+  /// Tournaments evaluated together: each batch draws disjoint triples from
+  /// the same population, so workers can evaluate them at once; 1 is the
+  /// paper's strictly sequential loop. Results never depend on the workers.
+  int batch = 8;
+  // both
+  int max_regenerations = 1000;   ///< non-viable children redrawn at most this often, then a random genome
+  double evaluation_timeout = 120;  ///< seconds before a worker's evaluation is abandoned
+  /// Steady state: evaluations between statistics rows and checkpoints (0: the population size).
+  long report_every = 0;
+};
+
+/// The algorithm of a dialect's paper, with its constants.
+EvolutionDef default_evolution(Dialect d);
+
+}  // namespace bx

@@ -1,0 +1,38 @@
+// A run on disk: a directory with the resolved config, the run database,
+// a log, and the checkpoint inside the database. Creating, resuming and
+// driving a run to its end, with progress on the terminal.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/result.h"
+#include "io/config.h"
+
+namespace bx {
+
+/// How to drive a run.
+struct RunOptions {
+  int workers = 2;          ///< worker processes (0: evaluate in this process)
+  bool quiet = false;       ///< no progress output
+  /// Stop after this many generations of this session (tests); 0: run to the end.
+  int stop_after = 0;
+};
+
+/// Creates the run directory `dir` (which must not exist) for `cfg` and
+/// `seed`, with `name` (the preset or config file) recorded.
+Status create_run(const std::string& dir, const RunConfig& cfg, const std::string& config_text,
+                  const std::string& name, std::uint64_t seed);
+
+/// Runs (or resumes) the run in `dir` until it is finished. Safe to call on a
+/// run killed at any moment: it continues from the last checkpoint and ends
+/// exactly as the uninterrupted run would.
+Status drive_run(const std::string& dir, const RunOptions& opt);
+
+/// Paths inside a run directory.
+std::string run_db_path(const std::string& dir);
+std::string run_config_path(const std::string& dir);
+std::string run_log_path(const std::string& dir);
+
+}  // namespace bx

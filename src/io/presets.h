@@ -1,0 +1,22 @@
+// Presets: the TOML configs in presets/, built into the binary so that
+// `bestiary run NAME` works from anywhere.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace bx {
+
+/// One preset: its name (file name without .toml) and text.
+struct Preset {
+  std::string name;
+  std::string text;
+};
+
+/// Every preset, by name.
+const std::vector<Preset>& presets();
+
+/// The preset's one-line summary: the first comment line of its text.
+std::string preset_summary(const Preset& p);
+
+}  // namespace bx

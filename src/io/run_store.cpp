@@ -1,0 +1,209 @@
+#include "io/run_store.h"
+
+#include <sqlite3.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "genome/genome_json.h"
+
+namespace bx {
+
+namespace {
+
+using nlohmann::json;
+
+const char* kSchema = R"(
+PRAGMA journal_mode = WAL;
+CREATE TABLE run (key TEXT PRIMARY KEY, value TEXT NOT NULL);
+CREATE TABLE generation (
+  gen INTEGER PRIMARY KEY, evaluations INTEGER NOT NULL,
+  best REAL NOT NULL, mean REAL NOT NULL, median REAL NOT NULL, best_id INTEGER NOT NULL,
+  rejected INTEGER NOT NULL, failed INTEGER NOT NULL);
+CREATE TABLE individual (
+  id INTEGER PRIMARY KEY, gen INTEGER NOT NULL, genome TEXT NOT NULL,
+  fitness REAL NOT NULL, distance REAL NOT NULL, parent1 INTEGER, parent2 INTEGER,
+  operator TEXT NOT NULL, failure TEXT NOT NULL);
+CREATE INDEX individual_gen ON individual (gen);
+CREATE TABLE checkpoint (id INTEGER PRIMARY KEY CHECK (id = 1), gen INTEGER NOT NULL, state TEXT NOT NULL);
+)";
+
+// a prepared statement, finalized on scope exit
+class Stmt {
+ public:
+  Stmt(sqlite3* db, const char* sql) { sqlite3_prepare_v2(db, sql, -1, &s_, nullptr); }
+  ~Stmt() { sqlite3_finalize(s_); }
+  Stmt& bind(int i, std::int64_t v) { sqlite3_bind_int64(s_, i, v); return *this; }
+  Stmt& bind(int i, double v) { sqlite3_bind_double(s_, i, v); return *this; }
+  Stmt& bind(int i, const std::string& v) {
+    sqlite3_bind_text(s_, i, v.data(), static_cast<int>(v.size()), SQLITE_TRANSIENT);
+    return *this;
+  }
+  Stmt& bind_null(int i) { sqlite3_bind_null(s_, i); return *this; }
+  int step() { return sqlite3_step(s_); }
+  void reset() { sqlite3_reset(s_); sqlite3_clear_bindings(s_); }
+  std::int64_t i64(int c) const { return sqlite3_column_int64(s_, c); }
+  double real(int c) const { return sqlite3_column_double(s_, c); }
+  bool null(int c) const { return sqlite3_column_type(s_, c) == SQLITE_NULL; }
+  std::string text(int c) const {
+    auto* p = sqlite3_column_text(s_, c);
+    return p ? reinterpret_cast<const char*>(p) : "";
+  }
+  bool ok() const { return s_ != nullptr; }
+
+ private:
+  sqlite3_stmt* s_ = nullptr;
+};
+
+Status exec(sqlite3* db, const char* sql) {
+  char* err = nullptr;
+  if (sqlite3_exec(db, sql, nullptr, nullptr, &err) != SQLITE_OK) {
+    std::string msg = err ? err : "unknown error";
+    sqlite3_free(err);
+    return Error{msg};
+  }
+  return Ok{};
+}
+
+Result<sqlite3*> open_db(const std::string& path, int flags) {
+  sqlite3* db = nullptr;
+  if (sqlite3_open_v2(path.c_str(), &db, flags, nullptr) != SQLITE_OK) {
+    std::string msg = path + ": cannot open run database (" + sqlite3_errmsg(db) + ")";
+    sqlite3_close(db);
+    return Error{msg};
+  }
+  sqlite3_busy_timeout(db, 5000);
+  return db;
+}
+
+}  // namespace
+
+Result<std::unique_ptr<RunStore>> RunStore::create(
+    const std::string& path, const std::vector<std::pair<std::string, std::string>>& meta) {
+  if (std::filesystem::exists(path)) return Error{path + ": run database already exists"};
+  auto db = open_db(path, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE);
+  if (!db) return Error{db.error()};
+  std::unique_ptr<RunStore> store(new RunStore(*db));
+  if (Status s = exec(*db, kSchema); !s) return Error{path + ": " + s.error()};
+  for (const auto& [k, v] : meta)
+    if (Status s = store->set_meta(k, v); !s) return Error{s.error()};
+  return store;
+}
+
+Result<std::unique_ptr<RunStore>> RunStore::open(const std::string& path) {
+  if (!std::filesystem::exists(path)) return Error{path + ": no run database here"};
+  auto db = open_db(path, SQLITE_OPEN_READWRITE);
+  if (!db) return Error{db.error()};
+  std::unique_ptr<RunStore> store(new RunStore(*db));
+  Stmt check(*db, "SELECT count(*) FROM run");
+  if (!check.ok() || check.step() != SQLITE_ROW) return Error{path + ": not a Bestiary run database"};
+  return store;
+}
+
+RunStore::~RunStore() { sqlite3_close(db_); }
+
+Status RunStore::set_meta(const std::string& key, const std::string& value) {
+  Stmt s(db_, "INSERT INTO run (key, value) VALUES (?, ?) ON CONFLICT(key) DO UPDATE SET value = excluded.value");
+  if (s.bind(1, key).bind(2, value).step() != SQLITE_DONE) return Error{sqlite3_errmsg(db_)};
+  return Ok{};
+}
+
+std::string RunStore::meta(const std::string& key) const {
+  Stmt s(db_, "SELECT value FROM run WHERE key = ?");
+  s.bind(1, key);
+  return s.step() == SQLITE_ROW ? s.text(0) : "";
+}
+
+Status RunStore::write_generation(const GenerationStats& st, const std::vector<Individual>& born,
+                                  const Checkpoint& cp) {
+  if (Status s = exec(db_, "BEGIN IMMEDIATE"); !s) return s;
+  auto rollback = [&](const std::string& what) {
+    std::string msg = what + ": " + sqlite3_errmsg(db_);
+    exec(db_, "ROLLBACK");
+    return Status(Error{msg});
+  };
+  // individuals born in this generation
+  {
+    Stmt ins(db_, "INSERT INTO individual (id, gen, genome, fitness, distance, parent1, parent2, operator, failure) "
+                  "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)");
+    for (const auto& ind : born) {
+      ins.bind(1, ind.id).bind(2, static_cast<std::int64_t>(ind.generation))
+          .bind(3, genome_to_json(ind.genome).dump()).bind(4, ind.fitness).bind(5, ind.distance);
+      if (ind.parent1 >= 0) ins.bind(6, ind.parent1); else ins.bind_null(6);
+      if (ind.parent2 >= 0) ins.bind(7, ind.parent2); else ins.bind_null(7);
+      ins.bind(8, ind.op).bind(9, ind.failure);
+      if (ins.step() != SQLITE_DONE) return rollback("storing individual " + std::to_string(ind.id));
+      ins.reset();
+    }
+  }
+  // the generation's statistics
+  {
+    Stmt g(db_, "INSERT INTO generation (gen, evaluations, best, mean, median, best_id, rejected, failed) "
+                "VALUES (?, ?, ?, ?, ?, ?, ?, ?)");
+    g.bind(1, static_cast<std::int64_t>(st.generation)).bind(2, static_cast<std::int64_t>(st.evaluations))
+        .bind(3, st.best).bind(4, st.mean).bind(5, st.median).bind(6, st.best_id)
+        .bind(7, static_cast<std::int64_t>(st.rejected)).bind(8, static_cast<std::int64_t>(st.failed));
+    if (g.step() != SQLITE_DONE) return rollback("storing generation " + std::to_string(st.generation));
+  }
+  // and the checkpoint that resumes after it
+  {
+    json state = {{"evaluations", cp.evaluations}, {"next_id", cp.next_id}, {"population", cp.population}};
+    Stmt c(db_, "INSERT INTO checkpoint (id, gen, state) VALUES (1, ?, ?) "
+                "ON CONFLICT(id) DO UPDATE SET gen = excluded.gen, state = excluded.state");
+    c.bind(1, static_cast<std::int64_t>(cp.generation)).bind(2, state.dump());
+    if (c.step() != SQLITE_DONE) return rollback("storing the checkpoint");
+  }
+  if (Status s = exec(db_, "COMMIT"); !s) return rollback("commit");
+  return Ok{};
+}
+
+std::optional<Checkpoint> RunStore::checkpoint() const {
+  Stmt s(db_, "SELECT gen, state FROM checkpoint WHERE id = 1");
+  if (s.step() != SQLITE_ROW) return std::nullopt;
+  Checkpoint cp;
+  cp.generation = static_cast<int>(s.i64(0));
+  json state = json::parse(s.text(1));
+  cp.evaluations = state.at("evaluations");
+  cp.next_id = state.at("next_id");
+  cp.population = state.at("population").get<std::vector<std::int64_t>>();
+  return cp;
+}
+
+std::vector<GenerationStats> RunStore::generations() const {
+  std::vector<GenerationStats> out;
+  Stmt s(db_, "SELECT gen, evaluations, best, mean, median, best_id, rejected, failed FROM generation ORDER BY gen");
+  while (s.step() == SQLITE_ROW) {
+    GenerationStats g;
+    g.generation = static_cast<int>(s.i64(0));
+    g.evaluations = s.i64(1);
+    g.best = s.real(2);
+    g.mean = s.real(3);
+    g.median = s.real(4);
+    g.best_id = s.i64(5);
+    g.rejected = s.i64(6);
+    g.failed = s.i64(7);
+    out.push_back(g);
+  }
+  return out;
+}
+
+std::optional<Individual> RunStore::individual(std::int64_t id) const {
+  Stmt s(db_, "SELECT id, gen, genome, fitness, distance, parent1, parent2, operator, failure FROM individual WHERE id = ?");
+  s.bind(1, id);
+  if (s.step() != SQLITE_ROW) return std::nullopt;
+  auto g = genome_from_string(s.text(2), "individual " + std::to_string(id));
+  if (!g) return std::nullopt;
+  Individual ind;
+  ind.id = s.i64(0);
+  ind.generation = static_cast<int>(s.i64(1));
+  ind.genome = std::move(*g);
+  ind.fitness = s.real(3);
+  ind.distance = s.real(4);
+  ind.parent1 = s.null(5) ? -1 : s.i64(5);
+  ind.parent2 = s.null(6) ? -1 : s.i64(6);
+  ind.op = s.text(7);
+  ind.failure = s.text(8);
+  return ind;
+}
+
+}  // namespace bx

@@ -1,0 +1,113 @@
+// Runs on disk: the database does not depend on the number of workers, and a
+// run stopped after any generation and resumed ends exactly as one never
+// stopped.
+#include "evolve/run.h"
+
+#include <gtest/gtest.h>
+#include <sqlite3.h>
+
+#include <filesystem>
+
+#include "io/run_store.h"
+
+namespace bx {
+namespace {
+
+namespace fs = std::filesystem;
+
+const char* kConfig = R"(
+[genome]
+dialect = "sims1994"
+[evolution]
+algorithm = "generational"
+population = 10
+generations = 4
+[task]
+seconds = 1
+)";
+
+// every row of the generation and individual tables, as text
+std::string dump(const std::string& dir) {
+  sqlite3* db = nullptr;
+  sqlite3_open_v2(run_db_path(dir).c_str(), &db, SQLITE_OPEN_READONLY, nullptr);
+  std::string out;
+  for (const char* q : {"SELECT * FROM generation ORDER BY gen", "SELECT * FROM individual ORDER BY id",
+                        "SELECT gen, state FROM checkpoint"}) {
+    sqlite3_stmt* s = nullptr;
+    sqlite3_prepare_v2(db, q, -1, &s, nullptr);
+    while (sqlite3_step(s) == SQLITE_ROW) {
+      for (int c = 0; c < sqlite3_column_count(s); ++c) {
+        auto* t = sqlite3_column_text(s, c);
+        out += t ? reinterpret_cast<const char*>(t) : "NULL";
+        out += '|';
+      }
+      out += '\n';
+    }
+    sqlite3_finalize(s);
+  }
+  sqlite3_close(db);
+  return out;
+}
+
+class Runs : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    root = fs::temp_directory_path() /
+           ("bx_runs_" + std::to_string(::getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(root);
+    fs::create_directories(root);
+  }
+  void TearDown() override { fs::remove_all(root); }
+  std::string make(const std::string& name, std::uint64_t seed = 9) {
+    auto cfg = read_run_config(kConfig, "test.toml");
+    EXPECT_TRUE(cfg.ok()) << cfg.error();
+    std::string dir = (root / name).string();
+    Status s = create_run(dir, *cfg, kConfig, "test.toml", seed);
+    EXPECT_TRUE(s.ok()) << s.error();
+    return dir;
+  }
+  fs::path root;
+};
+
+TEST_F(Runs, DatabaseIsTheSameForOneOrTwoWorkers) {
+  std::string one = make("one"), two = make("two");
+  ASSERT_TRUE(drive_run(one, {1, true, 0}).ok());
+  ASSERT_TRUE(drive_run(two, {2, true, 0}).ok());
+  std::string a = dump(one);
+  EXPECT_GT(a.size(), 1000u);
+  EXPECT_EQ(a, dump(two));
+  auto store = RunStore::open(run_db_path(one));
+  ASSERT_TRUE(store.ok());
+  EXPECT_EQ((*store)->generations().size(), 4u);
+  EXPECT_EQ((*store)->meta("seed"), "9");
+  EXPECT_EQ((*store)->meta("bestiary_version"), BESTIARY_VERSION);
+}
+
+TEST_F(Runs, StoppedAfterAnyGenerationAndResumedEndsTheSame) {
+  std::string whole = make("whole");
+  ASSERT_TRUE(drive_run(whole, {2, true, 0}).ok());
+  std::string expected = dump(whole);
+  for (int stop : {1, 2, 3}) {
+    std::string dir = make("stop" + std::to_string(stop));
+    ASSERT_TRUE(drive_run(dir, {2, true, stop}).ok());
+    EXPECT_NE(dump(dir), expected);
+    ASSERT_TRUE(drive_run(dir, {1, true, 0}).ok());  // another worker count, too
+    EXPECT_EQ(dump(dir), expected) << "stopped after " << stop;
+  }
+  // resuming a finished run does nothing
+  ASSERT_TRUE(drive_run(whole, {2, true, 0}).ok());
+  EXPECT_EQ(dump(whole), expected);
+}
+
+TEST_F(Runs, CreateRefusesAnExistingDirectory) {
+  std::string dir = make("taken");
+  auto cfg = read_run_config(kConfig, "test.toml");
+  Status s = create_run(dir, *cfg, kConfig, "test.toml", 1);
+  ASSERT_FALSE(s.ok());
+  EXPECT_EQ(s.error(), dir + ": already exists (resume it with `bestiary resume " + dir +
+                           "`, or choose another --out)");
+}
+
+}  // namespace
+}  // namespace bx

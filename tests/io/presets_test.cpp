@@ -1,0 +1,56 @@
+// Every preset is a valid config with the documentation block it promises.
+#include "io/presets.h"
+
+#include <gtest/gtest.h>
+
+#include "io/config.h"
+
+namespace bx {
+namespace {
+
+TEST(Presets, EveryPresetReadsAndDocumentsItself) {
+  ASSERT_GE(presets().size(), 6u);
+  for (const auto& p : presets()) {
+    auto cfg = read_run_config(p.text, p.name);
+    EXPECT_TRUE(cfg.ok()) << p.name << ": " << cfg.error();
+    EXPECT_FALSE(preset_summary(p).empty()) << p.name;
+    // the comment block names the paper or says why not, what to expect and the deviations
+    for (const char* part : {"Expected", "Deviation"})
+      EXPECT_NE(p.text.find(part), std::string::npos) << p.name << " lacks " << part;
+  }
+}
+
+TEST(Presets, PaperPresetsCarryThePapersConstants) {
+  auto find = [](const std::string& name) {
+    for (const auto& p : presets())
+      if (p.name == name) return *read_run_config(p.text, name);
+    ADD_FAILURE() << name;
+    return RunConfig{};
+  };
+  RunConfig m = find("miconi2006");
+  EXPECT_EQ(m.dialect, Dialect::Miconi2006);
+  EXPECT_EQ(m.evolution.algorithm, Algorithm::SteadyState);
+  EXPECT_EQ(m.evolution.population, 500);
+  EXPECT_EQ(m.evolution.evaluations, 500000);
+  EXPECT_EQ(m.evolution.mutation_rate, 0.04);
+  EXPECT_EQ(m.sim.physics.dt, 0.01);
+  EXPECT_EQ(m.sim.physics.erp, 0.015);
+  EXPECT_EQ(m.sim.physics.cfm, 0.01);
+  EXPECT_EQ(m.sim.motor.max_force, 4);
+  EXPECT_EQ(m.sim.motor.max_speed, 4);
+  EXPECT_EQ(std::lround(m.sim.task.seconds / m.sim.physics.dt), 10000);
+  EXPECT_EQ(m.sim.task.skip_fraction, 0.125);
+  RunConfig c = find("chaumont2007-walker");
+  EXPECT_EQ(c.dialect, Dialect::Chaumont2007);
+  EXPECT_EQ(c.evolution.population, 300);
+  EXPECT_EQ(c.evolution.generations, 100);
+  EXPECT_EQ(c.evolution.elite_fraction, 0.2);
+  EXPECT_EQ(c.evolution.p_asexual, 0.4);
+  EXPECT_EQ(c.evolution.asexual_rate, 0.10);
+  EXPECT_EQ(c.sim.task.kappa, 1.02);
+  EXPECT_EQ(c.sim.task.seconds, 20);
+  EXPECT_EQ(c.sim.task.activation, Activation::Chaumont2007);
+}
+
+}  // namespace
+}  // namespace bx
