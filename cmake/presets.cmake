@@ -2,6 +2,8 @@
 # bx::presets(). Editing or adding a preset re-runs this at the next build.
 file(GLOB PRESET_FILES CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/presets/*.toml)
 list(SORT PRESET_FILES)
+# editing a preset re-runs the configure step, which rewrites the file below
+set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${PRESET_FILES})
 set(_entries "")
 foreach(f ${PRESET_FILES})
   get_filename_component(name ${f} NAME_WE)
