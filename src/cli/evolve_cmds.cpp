@@ -62,8 +62,13 @@ std::string timestamp() {
 
 int finish(const std::string& dir, const Status& s) {
   if (!s) return fail(s.error());
-  std::printf("run in %s (database run.sqlite, log run.log)\n", dir.c_str());
-  std::printf("best genome: bestiary best %s --out best.json\n", dir.c_str());
+  std::printf("run in %s (config.toml, run.sqlite, run.log)\n", dir.c_str());
+  if (auto store = RunStore::open(run_db_path(dir)); store) {
+    auto gens = (*store)->generations();
+    if (!gens.empty())
+      std::printf("best fitness %.6g (generation 0: %.6g)\n", gens.back().best, gens.front().best);
+  }
+  std::printf("its genome: bestiary best %s --out best.json\n", dir.c_str());
   return 0;
 }
 
