@@ -6,7 +6,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
+#include <csignal>
 #include <chrono>
 #include <cstdlib>
 #include <cstring>
@@ -15,6 +17,7 @@
 #include <thread>
 
 #include "develop/develop.h"
+#include "genome/genome_edit.h"
 #include "genome/genome_json.h"
 
 namespace bx {
@@ -152,14 +155,15 @@ struct ProcessPoolEvaluator::Impl {
     pid_t pid = ::fork();
     if (pid < 0) throw std::runtime_error("fork failed");
     if (pid == 0) {
-      // the child keeps only its own two ends
-      ::close(jobs[1]);
-      ::close(results[0]);
-      for (auto& other : workers) {
-        if (other.to >= 0) ::close(other.to);
-        if (other.from >= 0) ::close(other.from);
-      }
-      worker_main(jobs[0], results[1], cfg);
+      // the child keeps stdio and its own two ends only: no other pool's pipes
+      // (whose workers would then never see end-of-file) and no run database
+      int in = jobs[0], out = results[1];
+      int lo = std::min(in, out), hi = std::max(in, out);
+      ::close_range(3, lo - 1, 0);
+      ::close_range(lo + 1, hi - 1, 0);
+      ::close_range(hi + 1, ~0U, 0);
+      std::signal(SIGINT, SIG_IGN);  // Ctrl-C stops the parent; workers end when their pipe closes
+      worker_main(in, out, cfg);
     }
     ::close(jobs[0]);
     ::close(results[1]);
@@ -204,8 +208,16 @@ int ProcessPoolEvaluator::workers() const { return static_cast<int>(impl_->worke
 std::vector<EvalOutcome> ProcessPoolEvaluator::evaluate(const std::vector<EvalJob>& jobs) {
   auto& im = *impl_;
   std::vector<EvalOutcome> out(jobs.size());
-  std::deque<int> pending;
-  for (int i = 0; i < static_cast<int>(jobs.size()); ++i) pending.push_back(i);
+  // longest jobs first (most parts), so no worker idles on one long job at the
+  // end of a batch; results still come back in job order
+  std::vector<int> order(jobs.size());
+  std::vector<int> cost(jobs.size());
+  for (int i = 0; i < static_cast<int>(jobs.size()); ++i) {
+    order[i] = i;
+    cost[i] = count_parts(*jobs[i].genome, 1000);
+  }
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return cost[a] > cost[b]; });
+  std::deque<int> pending(order.begin(), order.end());
   std::size_t done = 0;
   auto fail_job = [&](int job, const std::string& why) {
     out[job].result.failed = true;

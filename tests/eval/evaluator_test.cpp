@@ -101,3 +101,20 @@ TEST(Evaluator, NonViableGenomesComeBackAsValues) {
 
 }  // namespace
 }  // namespace bx
+
+namespace bx {
+namespace {
+
+TEST(Evaluator, PoolsCanEndInAnyOrder) {
+  // workers of a later pool must not hold an earlier pool's pipes open
+  auto gs = creatures();
+  auto a = std::make_unique<ProcessPoolEvaluator>(short_config(), 1, 60);
+  auto b = std::make_unique<ProcessPoolEvaluator>(short_config(), 1, 60);
+  std::vector<EvalJob> jobs = {{&gs[2], 1}};
+  EXPECT_FALSE(b->evaluate(jobs)[0].result.failed);
+  a.reset();  // hung in waitpid before workers closed inherited descriptors
+  EXPECT_FALSE(b->evaluate(jobs)[0].result.failed);
+}
+
+}  // namespace
+}  // namespace bx
