@@ -17,6 +17,9 @@ void add_simulate_commands(CLI::App& app);
 /// `run`, `resume`, `best` and `presets` (src/cli/evolve_cmds.cpp).
 void add_evolve_commands(CLI::App& app);
 
+/// `show` and `render` (src/cli/watch.cpp).
+void add_watch_commands(CLI::App& app);
+
 /// Prints "bestiary: MESSAGE" on stderr and returns 2, the bad-input exit code.
 int fail(const std::string& message);
 

@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string(BESTIARY_VERSION) + " (" + BESTIARY_GIT + ")");
   bx::add_simulate_commands(app);
   bx::add_evolve_commands(app);
+  bx::add_watch_commands(app);
   CLI11_PARSE(app, argc, argv);
   return 0;
 }

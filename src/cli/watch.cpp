@@ -1,0 +1,306 @@
+// `bestiary show` and `bestiary render`: watch a creature in a self-contained
+// browser page, or as a video made from that page by headless Chromium and
+// ffmpeg (docs/viewer.md). Both simulate the genome exactly as `simulate`
+// does: same loading, config overlay, development and evaluation.
+#include <CLI/CLI.hpp>
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli/commands.h"
+#include "core/files.h"
+#include "develop/develop.h"
+#include "eval/evaluate.h"
+#include "genome/genome_json.h"
+#include "io/config.h"
+#include "io/html_view.h"
+#include "io/replay_file.h"
+
+extern char** environ;
+
+namespace bx {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+/// Arguments of `show` and `render`.
+struct WatchArgs {
+  std::string genome;
+  std::string config;
+  std::optional<double> seconds;
+  std::uint64_t seed = 1;
+  std::string out;
+  int width = 1280, height = 720, fps = 30;
+};
+
+/// A genome ready to simulate: its config, with flags applied.
+struct Prepared {
+  Genome genome;
+  SimConfig cfg;
+};
+
+/// What simulating gave: the page's entry and the result.
+struct Watched {
+  LabelledReplay entry;
+  EvalResult result;
+};
+
+std::string number(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+// genome, config and --seconds, checked as `simulate` checks them
+Result<Prepared> prepare(const WatchArgs& a) {
+  auto genome = load_genome(a.genome);
+  if (!genome) return Error{genome.error()};
+  SimConfig cfg = default_sim_config(genome->dialect);
+  if (!a.config.empty())
+    if (Status s = apply_config_file(cfg, a.config); !s) return Error{s.error()};
+  if (a.seconds) {
+    if (!(*a.seconds > 0) || !std::isfinite(*a.seconds) || *a.seconds > 1e6)
+      return Error{"--seconds: expected a number in (0, 1e6], got " + number(*a.seconds)};
+    cfg.task.seconds = *a.seconds;
+  }
+  return Prepared{std::move(*genome), cfg};
+}
+
+// the folder of an output file exists (made if need be), so a bad path fails
+// before the simulation
+Status make_parent(const std::string& flag, const std::string& path) {
+  auto dir = fs::path(path).parent_path();
+  std::error_code ec;
+  if (!dir.empty()) fs::create_directories(dir, ec);
+  if (ec || (!dir.empty() && !fs::is_directory(dir)))
+    return Error{flag + ": cannot create directory \"" + dir.string() + "\"" +
+                 (ec ? " (" + ec.message() + ")" : "")};
+  return Ok{};
+}
+
+// grow and simulate with a replay, as `simulate --replay` does
+Result<Watched> simulate(const WatchArgs& a, const Prepared& p) {
+  Development dev = develop(p.genome, p.cfg.develop);
+  if (!dev.viable()) return Error{a.genome + ": not viable: " + dev.reason};
+  const CreatureModel& m = *dev.model;
+  Replay replay;
+  EvalResult res = evaluate(m, p.cfg, a.seed, &replay);
+  ReplayInfo info{a.genome, a.seed, p.cfg.physics.dt, p.cfg.physics.friction};
+  std::string label = fs::path(a.genome).stem().string();
+  return Watched{{label, replay_to_string(m, replay, res, info)}, res};
+}
+
+void print_result(const WatchArgs& a, const EvalResult& res) {
+  std::printf("%s: simulated %.2f s, seed %llu, distance %.4f m, fitness %.6g\n", a.genome.c_str(),
+              res.seconds, static_cast<unsigned long long>(a.seed), res.distance, res.fitness);
+  if (res.failed) std::printf("failed: %s\n", res.failure.c_str());
+}
+
+int cmd_show(WatchArgs a) {
+  // inputs first, then the simulation, then the page
+  auto p = prepare(a);
+  if (!p) return fail(p.error());
+  if (a.out.empty()) a.out = fs::path(a.genome).replace_extension(".html").string();
+  if (Status s = make_parent("--out", a.out); !s) return fail(s.error());
+  auto w = simulate(a, *p);
+  if (!w) return fail(w.error());
+  if (Status s = save_view_html(a.out, {w->entry}); !s) return fail(s.error());
+  print_result(a, w->result);
+  std::printf("viewer written to %s\n", a.out.c_str());
+  return 0;
+}
+
+// ---- render: the tools it runs ----
+
+// an executable file named `name` on PATH (or `name` itself if it has a '/')
+std::optional<std::string> find_program(const std::string& name) {
+  auto ok = [](const fs::path& p) { return ::access(p.c_str(), X_OK) == 0 && !fs::is_directory(p); };
+  if (name.find('/') != std::string::npos) return ok(name) ? std::optional(name) : std::nullopt;
+  const char* path = std::getenv("PATH");
+  std::stringstream dirs(path ? path : "/usr/bin:/bin");
+  for (std::string d; std::getline(dirs, d, ':');)
+    if (!d.empty() && ok(fs::path(d) / name)) return (fs::path(d) / name).string();
+  return std::nullopt;
+}
+
+/// Where render finds node, its script and the browser and encoder.
+struct Tools {
+  std::string node, script, chromium, ffmpeg;
+};
+
+// The viewer folder holds render.mjs and node_modules (npm ci); the build
+// records the source tree's (BESTIARY_VIEWER_DIR), the environment variable
+// of the same name overrides it. Chromium: $BESTIARY_CHROMIUM, else Debian's.
+Result<Tools> find_tools() {
+  Tools t;
+  const char* env_dir = std::getenv("BESTIARY_VIEWER_DIR");
+  fs::path dir = env_dir && *env_dir ? env_dir : BESTIARY_VIEWER_DIR;
+  t.script = (dir / "render.mjs").string();
+  if (!fs::exists(t.script) || !fs::exists(dir / "node_modules/playwright-core/package.json"))
+    return Error{"render: the viewer's render.mjs and node_modules are not in " + dir.string() +
+                 " (run ./scripts/setup, or set BESTIARY_VIEWER_DIR to a viewer/ folder after `npm ci`)"};
+  auto node = find_program("node");
+  if (!node) return Error{"render: node is not on PATH (Debian package nodejs; ./scripts/setup installs it)"};
+  const char* env_chromium = std::getenv("BESTIARY_CHROMIUM");
+  std::optional<std::string> chromium;
+  if (env_chromium && *env_chromium) {
+    chromium = find_program(env_chromium);
+    if (!chromium) return Error{std::string("BESTIARY_CHROMIUM: no such program: ") + env_chromium};
+  } else {
+    chromium = find_program("/usr/bin/chromium");
+    if (!chromium) chromium = find_program("chromium");
+    if (!chromium)
+      return Error{"render: chromium not found (Debian package chromium, or set BESTIARY_CHROMIUM)"};
+  }
+  auto ffmpeg = find_program("ffmpeg");
+  if (!ffmpeg) return Error{"render: ffmpeg is not on PATH (Debian package ffmpeg)"};
+  t.node = *node;
+  t.chromium = *chromium;
+  t.ffmpeg = *ffmpeg;
+  return t;
+}
+
+// runs argv with stdout discarded and stderr to `err_file`; the exit code, or
+// -1 if it could not start or died of a signal
+int run(const std::vector<std::string>& argv, const std::string& err_file) {
+  std::vector<char*> args;
+  for (const auto& s : argv) args.push_back(const_cast<char*>(s.c_str()));
+  args.push_back(nullptr);
+  posix_spawn_file_actions_t fa;
+  posix_spawn_file_actions_init(&fa);
+  posix_spawn_file_actions_addopen(&fa, 0, "/dev/null", O_RDONLY, 0);
+  posix_spawn_file_actions_addopen(&fa, 1, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&fa, 2, err_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  pid_t pid;
+  int rc = posix_spawn(&pid, args[0], &fa, nullptr, args.data(), environ);
+  posix_spawn_file_actions_destroy(&fa);
+  if (rc != 0) return -1;
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+// the last non-empty line of a file: a failed child's own explanation
+std::string last_line(const std::string& path) {
+  std::ifstream in(path);
+  std::string line, last;
+  while (std::getline(in, line))
+    if (line.find_first_not_of(" \t\r") != std::string::npos) last = line;
+  return last;
+}
+
+std::string lower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
+  return s;
+}
+
+// ---- render ----
+
+int cmd_render(const WatchArgs& a) {
+  // inputs: genome, config and flags, the output's kind and folder, the tools
+  auto p = prepare(a);
+  if (!p) return fail(p.error());
+  std::string ext = lower(fs::path(a.out).extension().string());
+  if (ext != ".mp4" && ext != ".gif")
+    return fail("--out: expected a file name ending in .mp4 or .gif, got \"" + a.out + "\"");
+  std::string format = ext.substr(1);
+  for (auto [flag, v] : {std::pair{"--width", a.width}, std::pair{"--height", a.height}}) {
+    if (v < 16 || v > 3840)
+      return fail(std::string(flag) + ": expected a number of pixels in [16, 3840], got " + std::to_string(v));
+    if (format == "mp4" && v % 2 != 0)
+      return fail(std::string(flag) + ": an mp4 needs an even number of pixels, got " + std::to_string(v));
+  }
+  if (a.fps < 1 || a.fps > 60) return fail("--fps: expected frames per second in [1, 60], got " + std::to_string(a.fps));
+  if (Status s = make_parent("--out", a.out); !s) return fail(s.error());
+  auto tools = find_tools();
+  if (!tools) return fail(tools.error());
+
+  // simulate, and write the page into a fresh temporary folder
+  auto w = simulate(a, *p);
+  if (!w) return fail(w.error());
+  std::string tmpl = (fs::temp_directory_path() / "bestiary-render-XXXXXX").string();
+  if (!::mkdtemp(tmpl.data())) return fail("render: cannot make a temporary folder in " + fs::temp_directory_path().string());
+  fs::path work = tmpl;
+  struct Cleanup {
+    fs::path dir;
+    ~Cleanup() {
+      std::error_code ec;
+      fs::remove_all(dir, ec);
+    }
+  } cleanup{work};
+  std::string page = (work / "page.html").string();
+  if (Status s = save_view_html(page, {w->entry}); !s) return fail(s.error());
+
+  // the page, frame by frame, through ffmpeg into OUT.tmp; renamed when whole
+  double seconds = w->result.seconds;
+  long frames = std::max(1L, std::lround(seconds * a.fps));
+  std::string tmp = a.out + ".tmp";
+  std::string err = (work / "render.err").string();
+  std::printf("rendering %ld frames (%d x %d, %d fps)...\n", frames, a.width, a.height, a.fps);
+  std::fflush(stdout);
+  int rc = run({tools->node, tools->script, "--html", page, "--out", tmp, "--format", format,
+                "--frames", std::to_string(frames), "--fps", std::to_string(a.fps),
+                "--width", std::to_string(a.width), "--height", std::to_string(a.height),
+                "--chromium", tools->chromium, "--ffmpeg", tools->ffmpeg},
+               err);
+  if (rc != 0) {
+    std::remove(tmp.c_str());
+    std::string why = last_line(err);
+    return fail("render: " + (why.empty() ? "node " + tools->script + " failed (exit " + std::to_string(rc) + ")" : why));
+  }
+  std::error_code ec;
+  fs::rename(tmp, a.out, ec);
+  if (ec) {
+    std::remove(tmp.c_str());
+    return fail(a.out + ": cannot replace file (" + ec.message() + ")");
+  }
+  print_result(a, w->result);
+  std::printf("video written to %s (%ld frames, %.2f s)\n", a.out.c_str(), frames,
+              static_cast<double>(frames) / a.fps);
+  return 0;
+}
+
+// options both commands take
+void add_common(CLI::App* c, WatchArgs& a) {
+  c->add_option("genome", a.genome, "Genome file (JSON)")->required();
+  c->add_option("--config", a.config, "TOML config overlaid on the dialect's defaults");
+  c->add_option("--seconds", a.seconds, "Simulated seconds (default: the config's task.seconds)");
+  c->add_option("--seed", a.seed, "Seed of the evaluation")->default_val(1);
+}
+
+}  // namespace
+
+void add_watch_commands(CLI::App& app) {
+  // arguments live as long as the app: parsing fills them, the callback reads them
+  static WatchArgs show, render;
+  auto* s = app.add_subcommand("show", "Simulate a genome and write a self-contained HTML viewer of it");
+  add_common(s, show);
+  s->add_option("--out", show.out, "HTML file to write (default: the genome's name with .html)");
+  s->callback([] { std::exit(cmd_show(show)); });
+
+  auto* r = app.add_subcommand("render", "Simulate a genome and make a video of it (mp4 or gif)");
+  add_common(r, render);
+  r->add_option("--out", render.out, "Video file to write: .mp4 or .gif")->required();
+  r->add_option("--width", render.width, "Width in pixels")->default_val(1280);
+  r->add_option("--height", render.height, "Height in pixels")->default_val(720);
+  r->add_option("--fps", render.fps, "Frames per second")->default_val(30);
+  r->callback([] { std::exit(cmd_render(render)); });
+}
+
+}  // namespace bx

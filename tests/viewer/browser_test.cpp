@@ -1,0 +1,91 @@
+// The viewer page in headless Chromium (Debian's chromium; viewer/tools/
+// inspect.mjs drives it): it draws the creature, the creature moves, the
+// panels are there, nothing is fetched from outside, and a run's page lets
+// the user pick a generation's best. Screenshots go to BUILD/viewer-test/.
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <string>
+
+#include "io/html_view.h"
+#include "run_command.h"
+
+namespace {
+
+using namespace bxtest;
+using nlohmann::json;
+
+const fs::path kShots = fs::path(BESTIARY_BUILD_DIR) / "viewer-test";
+
+// what inspect.mjs saw of a page
+json inspect(const fs::path& page, const std::string& name, const std::string& extra = "") {
+  std::string viewer = std::string(BESTIARY_SOURCE_DIR) + "/viewer";
+  Outcome r = run_command("node " + viewer + "/tools/inspect.mjs --html " + page.string() +
+                          " --shots " + kShots.string() + " --name " + name + " " + extra);
+  EXPECT_EQ(r.code, 0) << r.err;
+  return r.code == 0 ? json::parse(r.out) : json();
+}
+
+class Browser : public InTempDir {};
+
+TEST_F(Browser, DrawsTheWalkerAndItMoves) {
+  fs::path page = dir / "walker.html";
+  ASSERT_EQ(bestiary("show " + creature("walker.json") + " --out " + page.string()).code, 0);
+  json seen = inspect(page, "walker", "--times 1,5");
+  ASSERT_FALSE(seen.is_null());
+  // offline: the page asked for nothing but itself, and raised no error
+  EXPECT_EQ(seen["requests"].size(), 1u) << seen["requests"];
+  EXPECT_TRUE(seen["errors"].empty()) << seen["errors"];
+  // drawn: many colours, and the coloured parts take a visible share
+  for (const auto& m : seen["moments"]) {
+    EXPECT_GE(m["colours"]["distinct"].get<int>(), 32) << m;
+    EXPECT_GT(m["colours"]["saturated"].get<double>(), 0.005) << m;
+    EXPECT_TRUE(fs::exists(m["screenshot"].get<std::string>()));
+  }
+  // moved: the root part went more than half a metre, and under a still
+  // camera the picture changed
+  auto a = seen["moments"][0]["state"]["root"], b = seen["moments"][1]["state"]["root"];
+  double d = std::hypot(b[0].get<double>() - a[0].get<double>(), b[1].get<double>() - a[1].get<double>());
+  EXPECT_GT(d, 0.5);
+  EXPECT_GT(seen["orbitChanged"].get<double>(), 0.002);
+  // the panels: one plot per neuron (the walker has 4), the player's controls
+  EXPECT_EQ(seen["sparklines"], 4);
+  EXPECT_GE(seen["player"].get<int>(), 5);
+}
+
+TEST_F(Browser, ARunPageShowsCurvesAndSwitchesToTheChosenGeneration) {
+  // three creatures as the best of generations 0, 5 and 10 of a made-up run
+  std::vector<bx::LabelledReplay> replays;
+  const char* names[] = {"hinged_pair.json", "snake.json", "walker.json"};
+  for (int i = 0; i < 3; ++i) {
+    std::string n = std::to_string(i), gen = std::to_string(5 * i);  // (GCC 12 warns on "r" + to_string)
+    fs::path r = dir / (n + ".json");
+    ASSERT_EQ(bestiary("simulate " + creature(names[i]) + " --seconds 2 --replay " + r.string()).code, 0);
+    replays.push_back({std::string("generation ") + gen + " best", slurp(r)});
+  }
+  bx::RunCurves run;
+  for (int g = 0; g <= 10; ++g) run.generations.push_back({g, 1.0 + g, 0.5 + g / 2.0, 0.4 + g / 2.5});
+  run.best_of_generation = {{0, 0}, {5, 1}, {10, 2}};
+  fs::path page = dir / "run.html";
+  ASSERT_TRUE(bx::save_view_html(page.string(), replays, run).ok());
+
+  json seen = inspect(page, "run", "--times 0.5,1.5 --run");
+  ASSERT_FALSE(seen.is_null());
+  EXPECT_TRUE(seen["errors"].empty()) << seen["errors"];
+  const json& r = seen["run"];
+  ASSERT_TRUE(r["shown"].get<bool>());
+  // three curves of 11 points, three generations to choose from
+  ASSERT_EQ(r["curves"].size(), 3u);
+  for (const auto& c : r["curves"]) EXPECT_EQ(c["points"], 11) << c;
+  ASSERT_EQ(r["options"].size(), 3u);
+  EXPECT_EQ(r["options"][2]["text"], "generation 10 (best 11)");
+  // the page opens on the first replay; choosing generation 10 shows the walker,
+  // clicking the chart's left end goes back to generation 0
+  EXPECT_EQ(r["before"], 0);
+  EXPECT_EQ(r["afterSelect"], 2);
+  EXPECT_EQ(r["label"], "generation 10 best");
+  EXPECT_EQ(r["afterClick"], 0);
+}
+
+}  // namespace

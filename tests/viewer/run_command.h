@@ -1,0 +1,97 @@
+// Helpers of the viewer's end-to-end tests: run a command and capture what it
+// prints, a fresh folder per test, and reading files back.
+#pragma once
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace bxtest {
+
+namespace fs = std::filesystem;
+
+/// What a command did: exit code, stdout, stderr.
+struct Outcome {
+  int code;
+  std::string out, err;
+};
+
+/// Runs a shell command line, capturing stdout and stderr.
+inline Outcome run_command(const std::string& line) {
+  fs::path err_file = fs::temp_directory_path() / ("bx_view_err_" + std::to_string(::getpid()));
+  Outcome r;
+  FILE* p = ::popen((line + " 2>" + err_file.string()).c_str(), "r");
+  std::array<char, 4096> buf;
+  std::size_t n;
+  while ((n = std::fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), n);
+  int status = ::pclose(p);
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  std::ifstream e(err_file);
+  std::stringstream ss;
+  ss << e.rdbuf();
+  r.err = ss.str();
+  fs::remove(err_file);
+  return r;
+}
+
+/// Runs the bestiary binary with arguments.
+inline Outcome bestiary(const std::string& args) {
+  return run_command(std::string(BESTIARY_BINARY) + " " + args);
+}
+
+/// A canonical creature's genome file.
+inline std::string creature(const std::string& name) {
+  return std::string(BESTIARY_SOURCE_DIR) + "/tests/creatures/" + name;
+}
+
+/// The whole content of a file ("" if missing).
+inline std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+/// Lines in a text.
+inline int count_lines(const std::string& s) {
+  int n = 0;
+  for (char c : s) n += c == '\n';
+  return n;
+}
+
+/// A test with its own empty folder, removed afterwards.
+class InTempDir : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir = fs::temp_directory_path() /
+          ("bx_viewer_" + std::to_string(::getpid()) + "_" +
+           ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+  }
+  void TearDown() override { fs::remove_all(dir); }
+  fs::path write(const std::string& name, const std::string& text) {
+    std::ofstream(dir / name) << text;
+    return dir / name;
+  }
+  fs::path dir;
+};
+
+/// The JSON data a viewer page embeds (between its data script tags).
+inline std::string embedded_data(const std::string& html) {
+  const std::string open = "<script id=\"bestiary-data\" type=\"application/json\">";
+  auto a = html.find(open);
+  if (a == std::string::npos) return "";
+  a += open.size();
+  auto b = html.find("</script>", a);
+  return b == std::string::npos ? "" : html.substr(a, b - a);
+}
+
+}  // namespace bxtest

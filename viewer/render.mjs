@@ -1,0 +1,93 @@
+// Renders a viewer page to a video: headless Chromium draws each frame at its
+// exact time (window.bestiary.renderFrame, follow camera), and ffmpeg encodes
+// the screenshots. `bestiary render` runs this; see docs/viewer.md.
+// Screenshots are JPEG at quality 95: Chromium encodes a 1280 x 720 PNG in
+// about 350 ms and a JPEG in about 40 ms, and the video is lossy anyway.
+//
+//   node render.mjs --html PAGE --out FILE --format mp4|gif --frames N --fps F
+//                   --width W --height H [--chromium PATH] [--ffmpeg PATH]
+//
+// Frame i shows time i / F, so the video lasts N / F seconds. Errors end in one
+// line on stderr and exit code 1.
+import { spawn } from 'node:child_process';
+import { openViewer } from './tools/browser.mjs';
+import { isMain } from './tools/is_main.mjs';
+
+/** Quality of the frames' JPEG screenshots. */
+const JPEG_QUALITY = 95;
+
+/** ffmpeg's arguments: JPEG frames on stdin, H.264 mp4 or a palette-optimised gif out. */
+export function ffmpegArgs({ format, fps, out }) {
+  const input = ['-hide_banner', '-loglevel', 'error', '-y', '-f', 'image2pipe', '-framerate', String(fps), '-c:v', 'mjpeg', '-i', '-'];
+  if (format === 'mp4')
+    return [...input, '-c:v', 'libx264', '-pix_fmt', 'yuv420p', '-preset', 'medium', '-crf', '20',
+      '-movflags', '+faststart', '-f', 'mp4', out];
+  if (format === 'gif')
+    return [...input, '-filter_complex', 'split[a][b];[a]palettegen=stats_mode=diff[p];[b][p]paletteuse=dither=bayer:bayer_scale=3',
+      '-f', 'gif', out];
+  throw new Error(`unknown format "${format}" (mp4 or gif)`);
+}
+
+function parseArgs(argv) {
+  const a = {};
+  for (let i = 0; i < argv.length; i += 2) {
+    if (!argv[i].startsWith('--') || argv[i + 1] === undefined) throw new Error(`bad argument "${argv[i]}"`);
+    a[argv[i].slice(2)] = argv[i + 1];
+  }
+  for (const k of ['html', 'out', 'format', 'frames', 'fps', 'width', 'height'])
+    if (a[k] === undefined) throw new Error(`missing --${k}`);
+  for (const k of ['frames', 'fps', 'width', 'height']) {
+    a[k] = Number(a[k]);
+    if (!Number.isInteger(a[k]) || a[k] < 1) throw new Error(`--${k}: expected a positive integer`);
+  }
+  return a;
+}
+
+// writes to a stream, waiting when its buffer is full
+function write(stream, buf) {
+  return new Promise((resolve, reject) => {
+    if (stream.write(buf)) resolve();
+    else {
+      stream.once('drain', resolve);
+      stream.once('close', () => reject(new Error('ffmpeg stopped reading')));
+    }
+  });
+}
+
+async function main() {
+  const a = parseArgs(process.argv.slice(2));
+  // the encoder, reading PNGs from its stdin
+  const ffmpeg = spawn(a.ffmpeg || 'ffmpeg', ffmpegArgs(a), { stdio: ['pipe', 'ignore', 'pipe'] });
+  let ffmpegErr = '';
+  ffmpeg.stderr.on('data', (d) => (ffmpegErr += d));
+  const done = new Promise((resolve, reject) => {
+    ffmpeg.on('error', (e) => reject(new Error(`cannot run ffmpeg: ${e.message}`)));
+    ffmpeg.on('close', (code) => (code === 0 ? resolve() : reject(new Error(`ffmpeg failed: ${ffmpegErr.trim().split('\n').pop()}`))));
+  });
+  done.catch(() => {}); // awaited below; an early failure is the one to report
+  ffmpeg.stdin.on('error', () => {}); // a closed pipe shows as ffmpeg's failure
+
+  // the page in video mode, one screenshot per frame
+  const { browser, page } = await openViewer(a.html, { width: a.width, height: a.height, chromium: a.chromium });
+  try {
+    await page.evaluate(() => window.bestiary.setRenderMode(true));
+    for (let i = 0; i < a.frames; ++i) {
+      await page.evaluate((t) => window.bestiary.renderFrame(t), i / a.fps);
+      const jpeg = await page.screenshot({ type: 'jpeg', quality: JPEG_QUALITY });
+      if (ffmpeg.exitCode !== null) break;
+      await write(ffmpeg.stdin, jpeg).catch(() => {});
+    }
+  } finally {
+    await browser.close();
+    ffmpeg.stdin.end();
+  }
+  await done;
+}
+
+// as a script (not when a test imports ffmpegArgs)
+if (isMain(import.meta.url)) {
+  main().catch((e) => {
+    process.stderr.write(`${e.message.split('\n')[0]}\n`);
+    process.exit(1);
+  });
+}

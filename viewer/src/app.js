@@ -1,0 +1,178 @@
+// The viewer: one replay at a time on the stage, its time, and every panel
+// kept in step with it. `renderFrame(t)` draws one moment deterministically
+// (the follow camera's standard view), for videos and tests.
+import { Vector2 } from 'three';
+import { createStage } from './stage.js';
+import { createBodies } from './bodies.js';
+import { createTrail } from './trail_view.js';
+import { createCameraRig } from './camera_rig.js';
+import { createSparklines } from './sparklines.js';
+import { createRunPanel } from './run_panel.js';
+import { createPicker } from './picker.js';
+import { showInfo } from './info_panel.js';
+import { createPlayer } from './player.js';
+import { creatureRadius, followTarget } from './follow.js';
+import { comAt, distanceAt, duration } from './timeline.js';
+import { fitness, metres, seconds } from './format.js';
+
+/**
+ * A viewer of the checked page data `data` ({replays, run}) in the page's
+ * elements `ui` ({canvas, stage, hud, info, picker, run, neurons, player}).
+ */
+export function createViewer(ui, data) {
+  const stage = createStage(ui.canvas);
+  const rig = createCameraRig(ui.canvas);
+  const s = { index: -1, entry: null, t: 0, T: 0, playing: false, speed: 1, joints: false, trail: true, radius: 1 };
+  let bodies = null, trail = null, sparks = null, renderMode = false;
+  // the scene is drawn only when something changed: software GL is slow, and
+  // a paused page should cost nothing
+  let dirty = true;
+  rig.controls.addEventListener('change', () => (dirty = true));
+
+  // panels: choice of replay, the run's curves, the player bar
+  const picker = createPicker(ui.picker, data.replays, (i) => load(i));
+  const runPanel = data.run ? createRunPanel(ui.run, data.run, (i) => load(i)) : null;
+  const player = createPlayer(ui.player, {
+    togglePlay: () => setPlaying(!s.playing),
+    seek: (t) => { setPlaying(false); setTime(t); },
+    speed: (x) => (s.speed = x),
+    camera: () => { rig.setMode(rig.mode === 'follow' ? 'orbit' : 'follow'); setTime(s.t); },
+    joints: (on) => { s.joints = on; bodies.showJoints(on); dirty = true; },
+    trail: (on) => { s.trail = on; trail.object.visible = on; dirty = true; },
+  });
+
+  /** Shows replay i from its start. */
+  function load(i) {
+    const entry = data.replays[i];
+    if (bodies) {
+      stage.scene.remove(bodies.group, trail.object);
+      bodies.dispose();
+      trail.dispose();
+    }
+    s.index = i;
+    s.entry = entry;
+    s.T = duration(entry.replay.frames);
+    s.radius = creatureRadius(entry.replay);
+    bodies = createBodies(entry.replay);
+    bodies.showJoints(s.joints);
+    trail = createTrail(entry.replay.frames);
+    trail.object.visible = s.trail;
+    stage.scene.add(bodies.group, trail.object);
+    rig.reset(entry.replay.frames, s.radius);
+    showInfo(ui.info, entry);
+    sparks = createSparklines(ui.neurons, entry.replay);
+    picker.setCurrent(i);
+    runPanel?.setCurrent(i);
+    setTime(0);
+  }
+
+  /** Moves everything to time t (clamped to the replay). */
+  function setTime(t) {
+    const frames = s.entry.replay.frames;
+    s.t = Math.min(Math.max(t, 0), s.T);
+    bodies.setTime(s.t);
+    trail.setTime(s.t);
+    rig.track(s.t);
+    stage.focus(followTarget(frames, s.t), s.radius);
+    sparks.setTime(s.t);
+    const res = s.entry.replay.result ?? {};
+    ui.hud.textContent = `${s.entry.label}   t ${seconds(s.t)}   distance ${metres(distanceAt(frames, s.t))}` +
+      (typeof res.fitness === 'number' ? `   fitness ${fitness(res.fitness)}` : '');
+    player.show({ t: s.t, duration: s.T, playing: s.playing, speed: s.speed, mode: rig.mode });
+    dirty = true;
+  }
+
+  function setPlaying(on) {
+    s.playing = on;
+    if (on && s.t >= s.T) s.t = 0;
+    player.show({ t: s.t, duration: s.T, playing: s.playing, speed: s.speed, mode: rig.mode });
+  }
+
+  // the canvas follows its box's size
+  function fit() {
+    const w = ui.stage.clientWidth, h = ui.stage.clientHeight;
+    const size = stage.renderer.getSize(new Vector2());
+    if (w > 0 && h > 0 && (size.x !== w || size.y !== h)) {
+      stage.renderer.setPixelRatio(renderMode ? 1 : window.devicePixelRatio || 1);
+      stage.renderer.setSize(w, h, false);
+      rig.resize(w, h);
+      dirty = true;
+    }
+  }
+
+  function draw() {
+    fit();
+    stage.renderer.render(stage.scene, rig.camera);
+    dirty = false;
+  }
+
+  // the animation loop: advance time while playing (looping at the end), and
+  // draw when anything changed
+  let last = null;
+  function tick(now) {
+    if (!renderMode) {
+      if (s.playing && last !== null) {
+        let t = s.t + ((now - last) / 1000) * s.speed;
+        if (t > s.T) t = 0;
+        setTime(t);
+      }
+      fit();
+      if (dirty) draw();
+    }
+    last = now;
+    requestAnimationFrame(tick);
+  }
+
+  // keys: space plays, arrows step a frame, c camera, j joints, t trail
+  window.addEventListener('keydown', (ev) => {
+    if (ev.target instanceof HTMLSelectElement || ev.target instanceof HTMLInputElement && ev.target.type !== 'range' && ev.target.type !== 'checkbox') return;
+    const dt = s.entry.replay.frames[1] ? s.entry.replay.frames[1].t - s.entry.replay.frames[0].t : 1 / 30;
+    if (ev.key === ' ') setPlaying(!s.playing);
+    else if (ev.key === 'ArrowRight') { setPlaying(false); setTime(s.t + dt); }
+    else if (ev.key === 'ArrowLeft') { setPlaying(false); setTime(s.t - dt); }
+    else if (ev.key === 'c') { rig.setMode(rig.mode === 'follow' ? 'orbit' : 'follow'); setTime(s.t); }
+    else if (ev.key === 'j') { s.joints = !s.joints; bodies.showJoints(s.joints); player.setJoints(s.joints); dirty = true; }
+    else if (ev.key === 't') { s.trail = !s.trail; trail.object.visible = s.trail; player.setTrail(s.trail); dirty = true; }
+    else return;
+    ev.preventDefault();
+  });
+
+  load(0);
+  requestAnimationFrame(tick);
+
+  /** The present moment: time, replay, root part's and centre of mass's positions. */
+  function state() {
+    const p = bodies.parts[0].position;
+    return {
+      t: s.t, replayIndex: s.index, playing: s.playing, camera: rig.mode,
+      root: [p.x, p.y, p.z], com: comAt(s.entry.replay.frames, s.t), sparklines: sparks.rows,
+    };
+  }
+
+  // what a script (the renderer, a test) may ask of the page
+  return {
+    state,
+    get duration() { return s.T; },
+    get replayIndex() { return s.index; },
+    replayCount: data.replays.length,
+    select(i) { load(i); draw(); },
+    play() { setPlaying(true); },
+    pause() { setPlaying(false); },
+    /** Video mode: only the scene and a line of text; the loop stops drawing. */
+    setRenderMode(on) {
+      renderMode = on;
+      document.body.classList.toggle('render-mode', on);
+      if (on) setPlaying(false);
+    },
+    /** Draws time t now, in the standard follow view (orbit view if chosen). */
+    renderFrame(t) {
+      setPlaying(false);
+      setTime(t);
+      if (rig.mode === 'follow') rig.standardFollow(s.t);
+      draw();
+      return state();
+    },
+    /** Sets the camera: "follow" or "orbit". */
+    setCamera(mode) { rig.setMode(mode); setTime(s.t); draw(); },
+  };
+}

@@ -1,0 +1,113 @@
+// Meshes for the creature's parts and the scene's props, posed per moment.
+// Each part is its true shape, coloured by its gene; joint axes hang on the
+// child part (the replay gives anchor and axes in the child's frame), so they
+// move with it.
+import {
+  ArrowHelper, EdgesGeometry, Group, LineBasicMaterial, LineSegments, Mesh, MeshBasicMaterial,
+  MeshStandardMaterial, SphereGeometry, Vector3,
+} from 'three';
+import { geneColor } from './palette.js';
+import { shapeGeometry } from './shapes.js';
+import { partPoseAt } from './timeline.js';
+import { propPoseAt, sceneProps } from './props.js';
+
+/** Colours of a joint's axes: first degree of freedom red, second green. */
+const AXIS_COLORS = [0xd8342c, 0x2f9e44];
+/** Joint types that use axis2 as well as axis1. */
+const TWO_AXES = new Set(['universal', 'spherical']);
+
+function solid(shape, size, color, opacity = 1) {
+  const mesh = new Mesh(
+    shapeGeometry(shape, size),
+    new MeshStandardMaterial({
+      color, roughness: 0.6, metalness: 0.05, transparent: opacity < 1, opacity,
+    }),
+  );
+  mesh.castShadow = true;
+  mesh.receiveShadow = true;
+  // boxes get dark edges: faces of one colour read as one blob otherwise
+  if (shape === 'box') {
+    const edges = new LineSegments(
+      new EdgesGeometry(mesh.geometry),
+      new LineBasicMaterial({ color: 0x1d232a, transparent: true, opacity: 0.35 }),
+    );
+    mesh.add(edges);
+  }
+  return mesh;
+}
+
+function setPose(obj, p) {
+  obj.position.set(p[0], p[1], p[2]);
+  obj.quaternion.set(p[4], p[5], p[6], p[3]); // replay: w first; three: w last
+}
+
+// a joint's marker: a small ball at the anchor and one arrow per axis,
+// drawn over the parts so they show through
+function jointMarker(joint, partSize) {
+  const g = new Group();
+  const len = Math.min(Math.max(Math.max(...partSize) * 0.7, 0.08), 0.5);
+  const ball = new Mesh(
+    new SphereGeometry(len * 0.1, 12, 8),
+    new MeshBasicMaterial({ color: 0x202428, depthTest: false }),
+  );
+  g.add(ball);
+  const axes = joint.type === 'fixed' ? [] : TWO_AXES.has(joint.type) ? [joint.axis1, joint.axis2] : [joint.axis1];
+  axes.forEach((a, k) => {
+    const dir = new Vector3(...a);
+    if (dir.lengthSq() < 1e-12) return;
+    const arrow = new ArrowHelper(dir.normalize(), new Vector3(), len, AXIS_COLORS[k], len * 0.25, len * 0.12);
+    arrow.traverse((o) => {
+      if (o.material) o.material.depthTest = false;
+    });
+    g.add(arrow);
+  });
+  g.position.set(...joint.anchor);
+  g.traverse((o) => (o.renderOrder = 10));
+  return g;
+}
+
+/**
+ * The creature and props of a replay as one group. `setTime(t)` poses every
+ * mesh; `showJoints(on)` toggles the joint markers; `dispose()` frees GPU data.
+ */
+export function createBodies(replay) {
+  const group = new Group();
+  // parts, each with the markers of the joints that attach it to its parent
+  const parts = replay.parts.map((p) => {
+    const mesh = solid(p.shape, p.size, geneColor(p.gene, p.mirrored));
+    group.add(mesh);
+    return mesh;
+  });
+  const markers = replay.joints.map((j) => {
+    const m = jointMarker(j, replay.parts[j.child].size);
+    m.visible = false;
+    parts[j.child].add(m);
+    return m;
+  });
+  // props, from their descriptions
+  const props = sceneProps(replay);
+  const propMeshes = props.map((p) => {
+    const mesh = solid(p.shape, p.size, p.color, p.opacity);
+    group.add(mesh);
+    return mesh;
+  });
+
+  return {
+    group,
+    parts,
+    props: propMeshes,
+    setTime(t) {
+      parts.forEach((m, k) => setPose(m, partPoseAt(replay.frames, k, t)));
+      propMeshes.forEach((m, i) => setPose(m, propPoseAt(replay, props[i], i, t)));
+    },
+    showJoints(on) {
+      markers.forEach((m) => (m.visible = on));
+    },
+    dispose() {
+      group.traverse((o) => {
+        o.geometry?.dispose();
+        o.material?.dispose();
+      });
+    },
+  };
+}

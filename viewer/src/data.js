@@ -1,0 +1,150 @@
+// The page's data: which replays it holds and, for a run, its fitness curves.
+// Validation happens once, here, so the rest of the viewer can trust shapes
+// and lengths. Errors name the field's path and what was wrong.
+
+const SHAPES = ['box', 'sphere', 'capsule', 'cylinder'];
+
+/** An error in the page's data; `message` names the field. */
+export class DataError extends Error {}
+
+function fail(path, what, got) {
+  let shown;
+  try {
+    shown = JSON.stringify(got);
+  } catch {
+    shown = String(got);
+  }
+  if (shown === undefined) shown = 'nothing';
+  if (shown.length > 60) shown = shown.slice(0, 57) + '...';
+  throw new DataError(`${path}: ${what}, got ${shown}`);
+}
+
+const isNum = (v) => typeof v === 'number' && Number.isFinite(v);
+
+function num(v, path) {
+  if (!isNum(v)) fail(path, 'expected a number', v);
+  return v;
+}
+
+function int(v, path, min = -Infinity) {
+  if (!Number.isInteger(v) || v < min) fail(path, `expected an integer >= ${min}`, v);
+  return v;
+}
+
+function arr(v, path) {
+  if (!Array.isArray(v)) fail(path, 'expected an array', v);
+  return v;
+}
+
+/** Checks an array of `n` finite numbers. */
+export function numbers(v, n, path) {
+  if (!Array.isArray(v) || v.length !== n || !v.every(isNum))
+    fail(path, `expected ${n} numbers`, v);
+  return v;
+}
+
+function obj(v, path) {
+  if (v === null || typeof v !== 'object' || Array.isArray(v)) fail(path, 'expected an object', v);
+  return v;
+}
+
+/** Checks a part's shape name (the four shapes of a creature's parts). */
+export function partShape(v, path) {
+  if (!SHAPES.includes(v)) fail(path, `expected one of ${SHAPES.join(', ')}`, v);
+  return v;
+}
+
+/**
+ * Checks a replay object (docs/replay-format.md, version 1) and returns it.
+ * Frames must have one pose per part and one output per neuron, in time order.
+ */
+export function parseReplay(r, path = 'replay') {
+  obj(r, path);
+  if (r.format !== 'bestiary-replay') fail(`${path}.format`, 'expected "bestiary-replay"', r.format);
+  if (r.version !== 1) fail(`${path}.version`, 'expected 1 (this viewer reads version 1)', r.version);
+  // the body: parts, joints, neurons
+  const parts = arr(r.parts, `${path}.parts`);
+  if (parts.length === 0) fail(`${path}.parts`, 'expected at least one part', parts);
+  parts.forEach((p, i) => {
+    const at = `${path}.parts[${i}]`;
+    obj(p, at);
+    partShape(p.shape, `${at}.shape`);
+    numbers(p.size, 3, `${at}.size`);
+    int(p.gene, `${at}.gene`, 0);
+    int(p.parent, `${at}.parent`, -1);
+  });
+  arr(r.joints, `${path}.joints`).forEach((j, i) => {
+    const at = `${path}.joints[${i}]`;
+    obj(j, at);
+    if (int(j.child, `${at}.child`, 0) >= parts.length) fail(`${at}.child`, 'no such part', j.child);
+    numbers(j.anchor, 3, `${at}.anchor`);
+    numbers(j.axis1, 3, `${at}.axis1`);
+    numbers(j.axis2, 3, `${at}.axis2`);
+  });
+  const neurons = arr(r.neurons, `${path}.neurons`);
+  neurons.forEach((n, i) => {
+    obj(n, `${path}.neurons[${i}]`);
+    int(n.part, `${path}.neurons[${i}].part`, -1);
+  });
+  // the scene: props are checked by props.js when drawn; here only the list
+  obj(r.scene, `${path}.scene`);
+  const props = arr(r.scene.props ?? [], `${path}.scene.props`);
+  // frames: times ascending, poses and neuron outputs complete
+  const frames = arr(r.frames, `${path}.frames`);
+  if (frames.length === 0) fail(`${path}.frames`, 'expected at least one frame', frames);
+  let last = -Infinity;
+  frames.forEach((f, k) => {
+    const at = `${path}.frames[${k}]`;
+    obj(f, at);
+    if (num(f.t, `${at}.t`) < last) fail(`${at}.t`, `expected a time >= ${last}`, f.t);
+    last = f.t;
+    const poses = arr(f.poses, `${at}.poses`);
+    if (poses.length !== parts.length) fail(`${at}.poses`, `expected ${parts.length} poses`, poses.length);
+    poses.forEach((p, i) => numbers(p, 7, `${at}.poses[${i}]`));
+    numbers(f.com, 3, `${at}.com`);
+    numbers(f.neurons, neurons.length, `${at}.neurons`);
+    if (f.props !== undefined) {
+      arr(f.props, `${at}.props`);
+      if (f.props.length !== props.length) fail(`${at}.props`, `expected ${props.length} poses`, f.props.length);
+      f.props.forEach((p, i) => numbers(p, 7, `${at}.props[${i}]`));
+    }
+  });
+  obj(r.result, `${path}.result`);
+  return r;
+}
+
+/** Checks a run's curves: generations with best/mean/median, and the best of each. */
+export function parseRun(run, nReplays, path = 'run') {
+  if (run === null || run === undefined) return null;
+  obj(run, path);
+  arr(run.generations, `${path}.generations`).forEach((g, i) => {
+    const at = `${path}.generations[${i}]`;
+    obj(g, at);
+    int(g.gen, `${at}.gen`, 0);
+    for (const k of ['best', 'mean', 'median']) num(g[k], `${at}.${k}`);
+  });
+  arr(run.best_of_generation, `${path}.best_of_generation`).forEach((b, i) => {
+    const at = `${path}.best_of_generation[${i}]`;
+    obj(b, at);
+    int(b.gen, `${at}.gen`, 0);
+    if (int(b.replay_index, `${at}.replay_index`, 0) >= nReplays)
+      fail(`${at}.replay_index`, `no such replay (the page has ${nReplays})`, b.replay_index);
+  });
+  return run;
+}
+
+/**
+ * Checks the page's data: { replays: [{label, replay}], run: null | {...} }.
+ * Returns it with every replay checked.
+ */
+export function parsePageData(d) {
+  obj(d, 'data');
+  const replays = arr(d.replays, 'data.replays');
+  if (replays.length === 0) fail('data.replays', 'expected at least one replay', replays);
+  replays.forEach((e, i) => {
+    obj(e, `replays[${i}]`);
+    if (typeof e.label !== 'string') fail(`replays[${i}].label`, 'expected a string', e.label);
+    parseReplay(e.replay, `replays[${i}].replay`);
+  });
+  return { replays, run: parseRun(d.run, replays.length) };
+}

@@ -1,0 +1,27 @@
+// The page's entry: read the embedded data, check it, start the viewer, and
+// publish `window.bestiary` for scripts (video rendering, tests). Any error
+// is shown on the page and kept in `window.bestiary.error`.
+import { parsePageData } from './data.js';
+import { sceneProps } from './props.js';
+import { createViewer } from './app.js';
+
+function start() {
+  const $ = (id) => document.getElementById(id);
+  try {
+    const data = parsePageData(JSON.parse($('bestiary-data').textContent));
+    data.replays.forEach((e) => sceneProps(e.replay)); // props too, before anything is drawn
+    document.title = `${data.replays[0].label} · Bestiary`;
+    const viewer = createViewer({
+      canvas: $('view'), stage: $('stage'), hud: $('hud'), info: $('info'), picker: $('picker'),
+      run: $('run'), neurons: $('neurons'), player: $('player'),
+    }, data);
+    window.bestiary = Object.assign(viewer, { ready: true, error: null });
+  } catch (e) {
+    const message = e && e.message ? e.message : String(e);
+    $('error').hidden = false;
+    $('error').textContent = `Cannot show this page: ${message}`;
+    window.bestiary = { ready: true, error: message };
+  }
+}
+
+start();

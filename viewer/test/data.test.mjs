@@ -1,0 +1,53 @@
+// Checking the page's data: good data passes, bad data names the field.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { parsePageData, parseReplay, parseRun } from '../src/data.js';
+import { makeReplay, makeRun } from './fixture.mjs';
+
+test('a well-formed replay passes unchanged', () => {
+  const r = makeReplay();
+  assert.equal(parseReplay(r), r);
+});
+
+test('errors name the field, what was expected and what was found', () => {
+  const cases = [
+    [(r) => (r.format = 'other'), /^replay\.format: expected "bestiary-replay", got "other"$/],
+    [(r) => (r.version = 2), /^replay\.version: expected 1 .*, got 2$/],
+    [(r) => (r.parts[1].shape = 'cone'), /^replay\.parts\[1\]\.shape: expected one of box, sphere, capsule, cylinder, got "cone"$/],
+    [(r) => (r.parts[0].size = [1, 2]), /^replay\.parts\[0\]\.size: expected 3 numbers, got \[1,2\]$/],
+    [(r) => r.frames[3].poses.pop(), /^replay\.frames\[3\]\.poses: expected 2 poses, got 1$/],
+    [(r) => (r.frames[2].poses[1][6] = 'x'), /^replay\.frames\[2\]\.poses\[1\]: expected 7 numbers/],
+    [(r) => (r.frames[5].t = 0), /^replay\.frames\[5\]\.t: expected a time >= 0\.4/],
+    [(r) => (r.frames[0].neurons = []), /^replay\.frames\[0\]\.neurons: expected 1 numbers, got \[\]$/],
+    [(r) => (r.joints[0].child = 7), /^replay\.joints\[0\]\.child: no such part, got 7$/],
+    [(r) => (r.frames = []), /^replay\.frames: expected at least one frame/],
+    [(r) => delete r.result, /^replay\.result: expected an object, got nothing$/],
+  ];
+  for (const [spoil, message] of cases) {
+    const r = makeReplay();
+    spoil(r);
+    assert.throws(() => parseReplay(r), { message });
+  }
+});
+
+test('page data holds labelled replays and an optional run', () => {
+  const d = parsePageData({ replays: [{ label: 'a', replay: makeReplay() }], run: null });
+  assert.equal(d.replays.length, 1);
+  assert.equal(d.run, null);
+  // a run whose best creatures are among the replays
+  const three = [0, 1, 2].map((i) => ({ label: `g${i}`, replay: makeReplay() }));
+  assert.deepEqual(parsePageData({ replays: three, run: makeRun() }).run, makeRun());
+});
+
+test('bad page data is refused with the place of the fault', () => {
+  assert.throws(() => parsePageData({ replays: [] }), { message: /^data\.replays: expected at least one replay/ });
+  assert.throws(() => parsePageData({ replays: [{ label: 3, replay: makeReplay() }] }), { message: /^replays\[0\]\.label: expected a string/ });
+  const bad = makeReplay();
+  bad.version = 9;
+  assert.throws(() => parsePageData({ replays: [{ label: 'x', replay: bad }] }), { message: /^replays\[0\]\.replay\.version/ });
+  // run: a best creature that is not on the page, a curve value that is not a number
+  assert.throws(() => parseRun(makeRun(), 2), { message: /^run\.best_of_generation\[1\]\.replay_index: no such replay \(the page has 2\), got 2$/ });
+  const run = makeRun();
+  run.generations[3].mean = null;
+  assert.throws(() => parseRun(run, 3), { message: /^run\.generations\[3\]\.mean: expected a number, got null$/ });
+});
