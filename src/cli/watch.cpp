@@ -16,6 +16,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -29,6 +30,8 @@
 #include "io/config.h"
 #include "io/html_view.h"
 #include "io/replay_file.h"
+#include "io/run_store.h"
+#include "evolve/run.h"
 
 extern char** environ;
 
@@ -111,7 +114,68 @@ void print_result(const WatchArgs& a, const EvalResult& res) {
   if (res.failed) std::printf("failed: %s\n", res.failure.c_str());
 }
 
+// A run directory: its fitness curves, and the best creature of each
+// generation re-simulated exactly (the run's config and evaluation seed).
+int cmd_show_run(WatchArgs a) {
+  const std::string dir = a.genome;
+  auto store = RunStore::open(run_db_path(dir));
+  if (!store) return fail(store.error());
+  auto cfg = read_run_config((*store)->meta("config"), run_config_path(dir));
+  if (!cfg) return fail(cfg.error());
+  SimConfig sim = cfg->sim;
+  if (a.seconds) sim.task.seconds = *a.seconds;
+  const std::uint64_t seed = std::stoull((*store)->meta("seed"));
+  auto gens = (*store)->generations();
+  if (gens.empty()) return fail(dir + ": no generation finished yet");
+  if (a.out.empty()) a.out = (fs::path(dir) / "view.html").string();
+  if (Status s = make_parent("--out", a.out); !s) return fail(s.error());
+
+  // each distinct best once; with many, the generations where the best changed
+  // are kept up to a limit, always with the last
+  constexpr std::size_t kMostReplays = 40;
+  std::vector<std::int64_t> distinct;
+  for (const auto& g : gens)
+    if (distinct.empty() || distinct.back() != g.best_id) distinct.push_back(g.best_id);
+  std::vector<std::int64_t> keep;
+  for (std::size_t k = 0; k < distinct.size(); ++k)
+    if (distinct.size() <= kMostReplays || k % ((distinct.size() + kMostReplays - 1) / kMostReplays) == 0 ||
+        k + 1 == distinct.size())
+      keep.push_back(distinct[k]);
+
+  std::vector<LabelledReplay> replays;
+  std::map<std::int64_t, int> index_of;
+  for (std::int64_t id : keep) {
+    auto ind = (*store)->individual(id);
+    if (!ind) return fail(run_db_path(dir) + ": individual " + std::to_string(id) + " is missing");
+    Development dev = develop(ind->genome, sim.develop);
+    if (!dev.viable()) continue;
+    Replay replay;
+    std::uint64_t eval_seed = evaluation_seed(seed, id);
+    EvalResult res = evaluate(*dev.model, sim, eval_seed, &replay);
+    ReplayInfo info{dir + " individual " + std::to_string(id), eval_seed, sim.physics.dt, sim.physics.friction};
+    index_of[id] = static_cast<int>(replays.size());
+    replays.push_back({"generation " + std::to_string(ind->generation) + " best (individual " +
+                           std::to_string(id) + ")",
+                       replay_to_string(*dev.model, replay, res, info)});
+  }
+  if (replays.empty()) return fail(dir + ": no best creature could be grown");
+  RunCurves curves;
+  int shown = 0;
+  for (const auto& g : gens) {
+    curves.generations.push_back({g.generation, g.best, g.mean, g.median});
+    // a generation whose best was not kept shows the latest kept one before it
+    if (index_of.count(g.best_id)) shown = index_of[g.best_id];
+    curves.best_of_generation.push_back({g.generation, shown});
+  }
+  // the last generation's best first: the page opens on it
+  if (Status s = save_view_html(a.out, replays, curves); !s) return fail(s.error());
+  std::printf("%s: %zu generations, best fitness %.6g; %zu creatures\nviewer written to %s\n", dir.c_str(),
+              gens.size(), gens.back().best, replays.size(), a.out.c_str());
+  return 0;
+}
+
 int cmd_show(WatchArgs a) {
+  if (fs::is_directory(a.genome)) return cmd_show_run(a);
   // inputs first, then the simulation, then the page
   auto p = prepare(a);
   if (!p) return fail(p.error());
@@ -278,7 +342,7 @@ int cmd_render(const WatchArgs& a) {
 
 // options both commands take
 void add_common(CLI::App* c, WatchArgs& a) {
-  c->add_option("genome", a.genome, "Genome file (JSON)")->required();
+  c->add_option("genome", a.genome, "Genome file (JSON), or for show a run directory")->required();
   c->add_option("--config", a.config, "TOML config overlaid on the dialect's defaults");
   c->add_option("--seconds", a.seconds, "Simulated seconds (default: the config's task.seconds)");
   c->add_option("--seed", a.seed, "Seed of the evaluation")->default_val(1);
@@ -289,7 +353,7 @@ void add_common(CLI::App* c, WatchArgs& a) {
 void add_watch_commands(CLI::App& app) {
   // arguments live as long as the app: parsing fills them, the callback reads them
   static WatchArgs show, render;
-  auto* s = app.add_subcommand("show", "Simulate a genome and write a self-contained HTML viewer of it");
+  auto* s = app.add_subcommand("show", "Write a self-contained HTML viewer of a genome, or of a run directory (curves and the best of each generation)");
   add_common(s, show);
   s->add_option("--out", show.out, "HTML file to write (default: the genome's name with .html)");
   s->callback([] { std::exit(cmd_show(show)); });

@@ -19,7 +19,7 @@ struct LabelledReplay {
 };
 
 /// Fitness of one generation of a run.
-struct GenerationStats {
+struct FitnessPoint {
   int gen = 0;
   double best = 0, mean = 0, median = 0;  ///< finite numbers
 };
@@ -33,7 +33,7 @@ struct GenerationBest {
 /// A run's fitness curves and the best creature of its generations: with
 /// these the page draws the curves and lets the user pick a generation.
 struct RunCurves {
-  std::vector<GenerationStats> generations;
+  std::vector<FitnessPoint> generations;
   std::vector<GenerationBest> best_of_generation;
 };
 

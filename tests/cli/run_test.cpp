@@ -124,6 +124,15 @@ TEST_F(RunCli, KilledMidRunAndResumedEndsExactlyAsUninterrupted) {
   std::string fit = query(killed / "run.sqlite", "SELECT max(fitness) FROM individual");
   auto j = s.out.find("\"fitness\":");
   ASSERT_NE(j, std::string::npos);
+
+  // the run in the viewer: curves of every generation and the best of each
+  Outcome v = bestiary("show " + killed.string() + " --out " + (dir / "view.html").string());
+  ASSERT_EQ(v.code, 0) << v.err;
+  std::ifstream html(dir / "view.html");
+  std::stringstream page;
+  page << html.rdbuf();
+  EXPECT_NE(page.str().find("\"best_of_generation\":[{\"gen\":0,"), std::string::npos);
+  EXPECT_NE(v.out.find("5 generations"), std::string::npos) << v.out;
   double stored = std::stod(fit.substr(0, fit.find('|')));  // sqlite prints 15 digits
   EXPECT_NEAR(std::stod(s.out.substr(j + 10)), stored, 1e-13 * std::abs(stored));
 }
