@@ -69,6 +69,7 @@ int finish(const std::string& dir, const Status& s) {
       std::printf("best fitness %.6g (generation 0: %.6g)\n", gens.back().best, gens.front().best);
   }
   std::printf("its genome: bestiary best %s --out best.json\n", dir.c_str());
+  std::printf("watch the run: bestiary show %s  (writes %s/view.html)\n", dir.c_str(), dir.c_str());
   return 0;
 }
 
