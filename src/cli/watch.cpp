@@ -28,6 +28,7 @@
 #include "eval/evaluate.h"
 #include "genome/genome_json.h"
 #include "io/config.h"
+#include "io/fitness_plot.h"
 #include "io/html_view.h"
 #include "io/replay_file.h"
 #include "io/run_store.h"
@@ -350,6 +351,53 @@ void add_common(CLI::App* c, WatchArgs& a) {
 
 }  // namespace
 
+// ---- plot ----
+
+// fitness over generations: SVG written directly, PNG rendered from it by Chromium
+int cmd_plot(const WatchArgs& a) {
+  const std::string& dir = a.genome;
+  std::string ext = lower(fs::path(a.out).extension().string());
+  if (ext != ".svg" && ext != ".png")
+    return fail("--out: expected a .svg or .png file, got \"" + a.out + "\"");
+  if (a.width < 100 || a.height < 100 || a.width > 8000 || a.height > 8000)
+    return fail("--width/--height: expected 100 to 8000 pixels, got " + std::to_string(a.width) + "x" +
+                std::to_string(a.height));
+  auto store = RunStore::open(run_db_path(dir));
+  if (!store) return fail(store.error());
+  auto gens = (*store)->generations();
+  if (gens.empty()) return fail(dir + ": no generation finished yet");
+  std::string title = (*store)->meta("name") + " (seed " + (*store)->meta("seed") + ")";
+  std::string svg = fitness_svg(gens, title, a.width, a.height);
+  if (Status s = make_parent("--out", a.out); !s) return fail(s.error());
+  if (ext == ".svg") {
+    if (Status s = write_file_atomic(a.out, svg); !s) return fail(s.error());
+  } else {
+    auto chromium = find_program("/usr/bin/chromium");
+    if (!chromium) chromium = find_program("chromium");
+    if (!chromium) return fail("plot: chromium not found for PNG output (Debian package chromium; or use .svg)");
+    fs::path tmp = fs::temp_directory_path() / ("bestiary-plot-" + std::to_string(::getpid()));
+    fs::create_directories(tmp);
+    if (Status s = write_file_atomic((tmp / "plot.svg").string(), svg); !s) return fail(s.error());
+    std::string png = a.out + ".tmp.png";
+    int rc = run({*chromium, "--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
+                  "--disable-background-networking", "--disable-component-update", "--disable-sync",
+                  "--hide-scrollbars", "--user-data-dir=" + (tmp / "profile").string(),
+                  "--window-size=" + std::to_string(a.width) + "," + std::to_string(a.height),
+                  "--screenshot=" + png, "file://" + (tmp / "plot.svg").string()},
+                 (tmp / "chromium.log").string());
+    std::string why = last_line((tmp / "chromium.log").string());
+    fs::remove_all(tmp);
+    if (rc != 0 || !fs::exists(png)) {
+      fs::remove(png);
+      return fail("plot: chromium failed to render the PNG: " + why);
+    }
+    fs::rename(png, a.out);
+  }
+  std::printf("%s: %zu generations, best %.6g -> %s\n", dir.c_str(), gens.size(), gens.back().best,
+              a.out.c_str());
+  return 0;
+}
+
 void add_watch_commands(CLI::App& app) {
   // arguments live as long as the app: parsing fills them, the callback reads them
   static WatchArgs show, render;
@@ -365,6 +413,14 @@ void add_watch_commands(CLI::App& app) {
   r->add_option("--height", render.height, "Height in pixels")->default_val(720);
   r->add_option("--fps", render.fps, "Frames per second")->default_val(30);
   r->callback([] { std::exit(cmd_render(render)); });
+
+  static WatchArgs plot;
+  auto* p = app.add_subcommand("plot", "Plot a run's best, mean and median fitness per generation");
+  p->add_option("run_dir", plot.genome, "Run directory")->required();
+  p->add_option("--out", plot.out, "Image to write: .svg or .png")->required();
+  p->add_option("--width", plot.width, "Width in pixels")->default_val(800);
+  p->add_option("--height", plot.height, "Height in pixels")->default_val(500);
+  p->callback([] { std::exit(cmd_plot(plot)); });
 }
 
 }  // namespace bx

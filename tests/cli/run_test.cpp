@@ -133,6 +133,27 @@ TEST_F(RunCli, KilledMidRunAndResumedEndsExactlyAsUninterrupted) {
   page << html.rdbuf();
   EXPECT_NE(page.str().find("\"best_of_generation\":[{\"gen\":0,"), std::string::npos);
   EXPECT_NE(v.out.find("5 generations"), std::string::npos) << v.out;
+
+  // and its fitness plot, as SVG (three curves) and as PNG (rendered by Chromium)
+  ASSERT_EQ(bestiary("plot " + killed.string() + " --out " + (dir / "fit.svg").string()).code, 0);
+  std::ifstream svg_in(dir / "fit.svg");
+  std::stringstream svg;
+  svg << svg_in.rdbuf();
+  EXPECT_EQ(svg.str().rfind("<svg", 0), 0u);
+  std::size_t polylines = 0;
+  for (auto at = svg.str().find("<polyline"); at != std::string::npos; at = svg.str().find("<polyline", at + 1))
+    ++polylines;
+  EXPECT_EQ(polylines, 3u);
+  Outcome png = bestiary("plot " + killed.string() + " --out " + (dir / "fit.png").string() +
+                         " --width 640 --height 400");
+  ASSERT_EQ(png.code, 0) << png.err;
+  std::ifstream png_in(dir / "fit.png", std::ios::binary);
+  std::string magic(8, '\0');
+  png_in.read(magic.data(), 8);
+  EXPECT_EQ(magic, std::string("\x89PNG\r\n\x1a\n", 8));
+  Outcome bad = bestiary("plot " + killed.string() + " --out " + (dir / "fit.jpg").string());
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_EQ(bad.err, "bestiary: --out: expected a .svg or .png file, got \"" + (dir / "fit.jpg").string() + "\"\n");
   double stored = std::stod(fit.substr(0, fit.find('|')));  // sqlite prints 15 digits
   EXPECT_NEAR(std::stod(s.out.substr(j + 10)), stored, 1e-13 * std::abs(stored));
 }
