@@ -1,6 +1,8 @@
 // `bestiary run`, `resume`, `best`, `presets` end to end, including a run
 // killed with SIGKILL mid-generation and resumed.
 #include <gtest/gtest.h>
+
+#include "support/run_command.h"
 #include <signal.h>
 #include <sqlite3.h>
 #include <sys/wait.h>
@@ -17,29 +19,8 @@
 namespace {
 
 namespace fs = std::filesystem;
-
-struct Outcome {
-  int code;
-  std::string out, err;
-};
-
-Outcome bestiary(const std::string& args) {
-  fs::path err_file = fs::temp_directory_path() / ("bx_run_err_" + std::to_string(::getpid()));
-  std::string cmd = std::string(BESTIARY_BINARY) + " " + args + " 2>" + err_file.string();
-  Outcome r;
-  FILE* p = ::popen(cmd.c_str(), "r");
-  std::array<char, 4096> buf;
-  std::size_t n;
-  while ((n = std::fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), n);
-  int status = ::pclose(p);
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream e(err_file);
-  std::stringstream ss;
-  ss << e.rdbuf();
-  r.err = ss.str();
-  fs::remove(err_file);
-  return r;
-}
+using bxtest::Outcome;
+using bxtest::bestiary;
 
 std::string query(const fs::path& db_path, const char* sql) {
   sqlite3* db = nullptr;

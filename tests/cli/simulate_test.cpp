@@ -1,6 +1,8 @@
 // `bestiary simulate` end to end: output, replays identical across processes,
 // and bad input of every kind as one error line, a non-zero exit and no file.
 #include <gtest/gtest.h>
+
+#include "support/run_command.h"
 #include <nlohmann/json.hpp>
 #include <sys/wait.h>
 
@@ -15,41 +17,10 @@
 namespace {
 
 namespace fs = std::filesystem;
-
-struct Outcome {
-  int code;
-  std::string out, err;
-};
-
-// runs the bestiary binary with arguments, capturing stdout and stderr
-Outcome bestiary(const std::string& args) {
-  fs::path err_file = fs::temp_directory_path() / ("bx_err_" + std::to_string(::getpid()));
-  std::string cmd = std::string(BESTIARY_BINARY) + " " + args + " 2>" + err_file.string();
-  Outcome r;
-  FILE* p = ::popen(cmd.c_str(), "r");
-  std::array<char, 4096> buf;
-  std::size_t n;
-  while ((n = std::fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), n);
-  int status = ::pclose(p);
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream e(err_file);
-  std::stringstream ss;
-  ss << e.rdbuf();
-  r.err = ss.str();
-  fs::remove(err_file);
-  return r;
-}
-
-std::string creature(const std::string& name) {
-  return std::string(BESTIARY_SOURCE_DIR) + "/tests/creatures/" + name;
-}
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using bxtest::Outcome;
+using bxtest::bestiary;
+using bxtest::creature;
+using bxtest::slurp;
 
 class Simulate : public ::testing::Test {
  protected:

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "io/html_view.h"
-#include "run_command.h"
+#include "support/run_command.h"
 
 namespace {
 

@@ -8,7 +8,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "run_command.h"
+#include "support/run_command.h"
 
 namespace {
 

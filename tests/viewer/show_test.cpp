@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "run_command.h"
+#include "support/run_command.h"
 
 namespace {
 

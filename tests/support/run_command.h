@@ -1,4 +1,4 @@
-// Helpers of the viewer's end-to-end tests: run a command and capture what it
+// Helpers of the end-to-end tests (tests/cli, tests/viewer): run a command and capture what it
 // prints, a fresh folder per test, and reading files back.
 #pragma once
 
@@ -25,7 +25,7 @@ struct Outcome {
 
 /// Runs a shell command line, capturing stdout and stderr.
 inline Outcome run_command(const std::string& line) {
-  fs::path err_file = fs::temp_directory_path() / ("bx_view_err_" + std::to_string(::getpid()));
+  fs::path err_file = fs::temp_directory_path() / ("bx_cmd_err_" + std::to_string(::getpid()));
   Outcome r;
   FILE* p = ::popen((line + " 2>" + err_file.string()).c_str(), "r");
   std::array<char, 4096> buf;
