@@ -27,9 +27,9 @@ json inspect(const fs::path& page, const std::string& name, const std::string& e
   return r.code == 0 ? json::parse(r.out) : json();
 }
 
-class Browser : public InTempDir {};
+class ViewerInBrowser : public InTempDir {};
 
-TEST_F(Browser, DrawsTheWalkerAndItMoves) {
+TEST_F(ViewerInBrowser, DrawsTheWalkerAndItMoves) {
   fs::path page = dir / "walker.html";
   ASSERT_EQ(bestiary("show " + creature("walker.json") + " --out " + page.string()).code, 0);
   json seen = inspect(page, "walker", "--times 1,5");
@@ -54,7 +54,7 @@ TEST_F(Browser, DrawsTheWalkerAndItMoves) {
   EXPECT_GE(seen["player"].get<int>(), 5);
 }
 
-TEST_F(Browser, ARunPageShowsCurvesAndSwitchesToTheChosenGeneration) {
+TEST_F(ViewerInBrowser, ARunPageShowsCurvesAndSwitchesToTheChosenGeneration) {
   // three creatures as the best of generations 0, 5 and 10 of a made-up run
   std::vector<bx::LabelledReplay> replays;
   const char* names[] = {"hinged_pair.json", "snake.json", "walker.json"};

@@ -24,9 +24,9 @@ json probe(const fs::path& video) {
   return r.code == 0 ? json::parse(r.out) : json();
 }
 
-class Render : public InTempDir {};
+class RenderCommand : public InTempDir {};
 
-TEST_F(Render, Mp4HasTheRequestedSizeAndLength) {
+TEST_F(RenderCommand, Mp4HasTheRequestedSizeAndLength) {
   fs::path out = dir / "walker.mp4";
   Outcome r = bestiary("render " + creature("walker.json") + " --out " + out.string() +
                        " --seconds 2 --width 320 --height 240 --fps 10");
@@ -45,7 +45,7 @@ TEST_F(Render, Mp4HasTheRequestedSizeAndLength) {
   EXPECT_NEAR(seconds, 2.0, 1.0 / 10);
 }
 
-TEST_F(Render, GifHasTheRequestedSizeAndLength) {
+TEST_F(RenderCommand, GifHasTheRequestedSizeAndLength) {
   fs::path out = dir / "pair.gif";
   Outcome r = bestiary("render " + creature("hinged_pair.json") + " --out " + out.string() +
                        " --seconds 1.5 --width 200 --height 150 --fps 10");
@@ -62,7 +62,7 @@ TEST_F(Render, GifHasTheRequestedSizeAndLength) {
 }
 
 // every kind of bad input: exit 2, exactly one line on stderr, no video
-TEST_F(Render, BadInputGivesOneErrorLineAndNoFile) {
+TEST_F(RenderCommand, BadInputGivesOneErrorLineAndNoFile) {
   fs::path mp4 = dir / "out.mp4";
   std::string walker = creature("walker.json");
   struct Case {
@@ -85,7 +85,7 @@ TEST_F(Render, BadInputGivesOneErrorLineAndNoFile) {
   }
 }
 
-TEST_F(Render, MissingToolsAreNamed) {
+TEST_F(RenderCommand, MissingToolsAreNamed) {
   fs::path mp4 = dir / "out.mp4";
   // a viewer folder without render.mjs
   Outcome r = run_command("BESTIARY_VIEWER_DIR=" + dir.string() + " " + BESTIARY_BINARY + " render " +
@@ -103,7 +103,7 @@ TEST_F(Render, MissingToolsAreNamed) {
   EXPECT_FALSE(fs::exists(mp4));
 }
 
-TEST_F(Render, ABrowserThatFailsLeavesNoFile) {
+TEST_F(RenderCommand, ABrowserThatFailsLeavesNoFile) {
   fs::path mp4 = dir / "out.mp4";
   Outcome r = run_command("BESTIARY_CHROMIUM=/bin/false " + std::string(BESTIARY_BINARY) + " render " +
                           creature("walker.json") + " --seconds 1 --out " + mp4.string());

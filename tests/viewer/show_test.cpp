@@ -13,9 +13,9 @@ namespace {
 using namespace bxtest;
 using nlohmann::json;
 
-class Show : public InTempDir {};
+class ShowCommand : public InTempDir {};
 
-TEST_F(Show, EmbedsTheSameReplayAsSimulate) {
+TEST_F(ShowCommand, EmbedsTheSameReplayAsSimulate) {
   fs::path page = dir / "walker.html", replay = dir / "walker.replay.json";
   std::string flags = " --seconds 3 --seed 4";
   Outcome s = bestiary("show " + creature("walker.json") + flags + " --out " + page.string());
@@ -29,7 +29,7 @@ TEST_F(Show, EmbedsTheSameReplayAsSimulate) {
   EXPECT_TRUE(data["run"].is_null());
 }
 
-TEST_F(Show, WritesNextToTheGenomeByDefault) {
+TEST_F(ShowCommand, WritesNextToTheGenomeByDefault) {
   fs::copy_file(creature("hinged_pair.json"), dir / "pair.json");
   Outcome s = bestiary("show " + (dir / "pair.json").string() + " --seconds 1");
   ASSERT_EQ(s.code, 0) << s.err;
@@ -38,7 +38,7 @@ TEST_F(Show, WritesNextToTheGenomeByDefault) {
 }
 
 // every kind of bad input: exit 2, exactly one line on stderr, no page
-TEST_F(Show, BadInputGivesOneErrorLineAndNoFile) {
+TEST_F(ShowCommand, BadInputGivesOneErrorLineAndNoFile) {
   fs::path page = dir / "out.html";
   fs::path overlap = write("overlap.json", R"({"format":"bestiary-genome","version":1,"dialect":"sims1994",
     "nodes":[{"size":[0.5,0.5,0.5],"edges":[{"to":1},{"to":1}]},{"size":[0.3,0.1,0.1]}]})");

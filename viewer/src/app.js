@@ -55,7 +55,7 @@ export function createViewer(ui, data) {
     s.radius = creatureRadius(entry.replay);
     bodies = createBodies(entry.replay);
     bodies.showJoints(s.joints);
-    trail = createTrail(entry.replay.frames);
+    trail = createTrail(entry.replay.frames, s.radius);
     trail.object.visible = s.trail;
     stage.scene.add(bodies.group, trail.object);
     rig.reset(entry.replay.frames, s.radius);
@@ -125,7 +125,9 @@ export function createViewer(ui, data) {
 
   // keys: space plays, arrows step a frame, c camera, j joints, t trail
   window.addEventListener('keydown', (ev) => {
-    if (ev.target instanceof HTMLSelectElement || ev.target instanceof HTMLInputElement && ev.target.type !== 'range' && ev.target.type !== 'checkbox') return;
+    // not while the user types or picks from a list
+    const t = ev.target;
+    if (t instanceof HTMLSelectElement || (t instanceof HTMLInputElement && t.type !== 'range' && t.type !== 'checkbox')) return;
     const dt = s.entry.replay.frames[1] ? s.entry.replay.frames[1].t - s.entry.replay.frames[0].t : 1 / 30;
     if (ev.key === ' ') setPlaying(!s.playing);
     else if (ev.key === 'ArrowRight') { setPlaying(false); setTime(s.t + dt); }
