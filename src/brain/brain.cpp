@@ -80,6 +80,18 @@ void brain_step(const BrainModel& m, BrainState& s, double dt) {
     s.effector_out[e] = effector_signal(m.set, sum);
   }
 
+  // the release effector: the delay line or the network, whichever is higher
+  if (m.release_delay_src >= 0) {
+    double sum = 0;
+    for (std::size_t j = 0; j < m.release_input_src.size(); ++j) {
+      const std::int32_t src = m.release_input_src[j];
+      if (src >= 0) sum += m.release_input_weight[j] * values[src];
+    }
+    sum = sum < -1 ? -1 : (sum > 1 ? 1 : sum);
+    const double delay = values[m.release_delay_src];
+    s.release_out = delay > sum ? delay : sum;
+  }
+
   s.t += dt;
 }
 

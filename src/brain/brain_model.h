@@ -33,12 +33,20 @@ struct BrainModel {
   std::vector<std::int32_t> effector_input_src;
   std::vector<double> effector_input_weight;
 
+  // a catapult's release effector (chaumont2007 4.1, Fig. 4): its signal is
+  // the larger of the delay neuron's output and the clamped weighted sum of
+  // its inputs from the body's network; the task fires the release from 0.5 on
+  std::int32_t release_delay_src = -1;  ///< value slot of the delay; -1: no release effector
+  std::vector<std::int32_t> release_input_src;
+  std::vector<double> release_input_weight;
+
   /// Owning part of each neuron (-1: global), for viewers and lesion studies.
   std::vector<std::int32_t> neuron_part;
 
   int n_neurons() const { return static_cast<int>(fn.size()); }
   int n_effectors() const { return static_cast<int>(effector_bias.size()); }
   int n_values() const { return n_sensors + n_neurons(); }
+  bool has_release() const { return release_delay_src >= 0; }
 };
 
 /// What changes in a brain during one evaluation.
@@ -47,6 +55,7 @@ struct BrainState {
   std::vector<double> next;    ///< scratch for the synchronous update
   std::vector<double> state;   ///< per-neuron internal state
   std::vector<double> effector_out;  ///< last effector signals, in [-1,1]
+  double release_out = 0;            ///< the release effector's last signal, in [-1,1]
   double t = 0;                ///< brain time (s)
 };
 

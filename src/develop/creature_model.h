@@ -67,6 +67,10 @@ struct CreatureModel {
   std::vector<SensorModel> sensors;
   std::vector<EffectorModel> effectors;
   BrainModel brain;
+  /// A catapult's projectile (chaumont2007 4.1) and the fixed joint that
+  /// holds it to the arm until the release effector fires; -1 otherwise.
+  PartIndex projectile = -1;
+  JointIndex release_joint = -1;
   /// Non-fatal remarks from development (e.g. a neuron input whose source
   /// does not exist in this body and so reads 0).
   std::vector<std::string> warnings;

@@ -254,6 +254,26 @@ void add_neuron(BrainModel& b, const NeuronGene& ng, int part, int owner, Wiring
   b.neuron_part.push_back(part);
 }
 
+// a neuron of the catapult's fixed mechanism, owned by the arm (part 0), with
+// inputs given as value slots; returns its value slot
+int add_mechanism_neuron(BrainModel& b, std::string_view fn, std::vector<double> params,
+                         std::vector<std::int32_t> inputs) {
+  const NeuronFnSpec* spec = find_neuron_fn(b.set, fn);
+  b.fn.push_back(spec->id);
+  b.bias.push_back(0);
+  b.params.insert(b.params.end(), params.begin(), params.end());
+  std::span<const double> ps(b.params.data() + b.param_begin.back(), params.size());
+  b.param_begin.push_back(static_cast<std::uint32_t>(b.params.size()));
+  b.state_begin.push_back(b.state_begin.back() + spec->state_size(ps));
+  for (std::int32_t src : inputs) {
+    b.input_src.push_back(src);
+    b.input_weight.push_back(1.0);
+  }
+  b.input_begin.push_back(static_cast<std::uint32_t>(b.input_src.size()));
+  b.neuron_part.push_back(0);
+  return b.n_sensors + b.n_neurons() - 1;
+}
+
 }  // namespace
 
 Development develop(const Genome& g, const DevelopDef& def) {
@@ -357,6 +377,28 @@ Development develop(const Genome& g, const DevelopDef& def) {
   for (std::size_t k = 0; k < g.global_neurons.size(); ++k)
     add_neuron(brain, g.global_neurons[k], -1, 0, wiring,
                "global_neurons[" + std::to_string(k) + "]");
+
+  // a catapult's release mechanism (chaumont2007 Fig. 4): a constant through a
+  // delay line, so the release fires at brain step delay_steps at the latest
+  // (the constant publishes at step 0, the line adds delay_steps - 1), or
+  // earlier when the body's network drives it
+  if (g.catapult) {
+    const CatapultGene& cat = *g.catapult;
+    for (int i = 0; i < n; ++i)
+      if (inst[i].node == cat.projectile) {
+        m.projectile = i;
+        m.release_joint = joint_of[i];
+      }
+    int cst = add_mechanism_neuron(brain, "cst", {1.0}, {});
+    brain.release_delay_src =
+        add_mechanism_neuron(brain, "mem", {static_cast<double>(cat.release.delay_steps - 1)}, {cst});
+    for (std::size_t k = 0; k < cat.release.inputs.size(); ++k) {
+      const InputGene& in = cat.release.inputs[k];
+      brain.release_input_src.push_back(
+          wiring.slot(0, in, "catapult.release.inputs[" + std::to_string(k) + "]"));
+      brain.release_input_weight.push_back(in.weight);
+    }
+  }
 
   // effectors of every part that has a joint
   brain.effector_input_begin = {0};

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,9 +20,15 @@ struct ReplayFrame {
   Vec3 com;
 };
 
-/// Frames of an evaluation, sampled at SimConfig::replay_fps.
+/// Frames of an evaluation, sampled at SimConfig::replay_fps, and what the
+/// task adds to the scene.
 struct Replay {
   std::vector<ReplayFrame> frames;
+  // throwing: the projectile part, the release moment (-1: none) and the
+  // aim task's target
+  int projectile = -1;
+  double release_time = -1;
+  std::optional<Vec3> target;
 };
 
 /// What an evaluation measured.
@@ -30,13 +37,17 @@ struct EvalResult {
   std::string failure;      ///< why, when failed
   std::string note;         ///< why the task scored 0 by rule (e.g. never settled), or empty
   double fitness = 0;
-  double distance = 0;      ///< m, by the task's metric
+  double distance = 0;      ///< m, by the task's metric (throwing: D_p)
+  double release_time = -1; ///< throwing: when the projectile was released (s), or -1
+  double target_miss = -1;  ///< throwing, aim: D_t (m), or -1
   double seconds = 0;       ///< simulated time
   long steps = 0;
   std::vector<std::string> warnings;
 };
 
-/// Simulates the creature on flat ground with its own brain. Reseeds ODE's
+/// Simulates the creature on flat ground with its own brain, in the task
+/// cfg.task_kind names (a throwing task needs a catapult: for another
+/// creature it scores 0 with a note). Reseeds ODE's
 /// generator from `seed` first, so equal inputs give bit-identical results.
 /// When `replay` is given, frames are appended to it.
 EvalResult evaluate(const CreatureModel& m, const SimConfig& cfg, std::uint64_t seed,

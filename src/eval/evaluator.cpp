@@ -86,6 +86,7 @@ json outcome_to_json(const EvalOutcome& o) {
   const EvalResult& r = o.result;
   return {{"viable", o.viable}, {"reason", o.reason},   {"fitness", r.fitness},
           {"distance", r.distance}, {"failed", r.failed}, {"failure", r.failure},
+          {"release_time", r.release_time}, {"target_miss", r.target_miss},
           {"note", r.note},       {"seconds", r.seconds}, {"steps", r.steps},
           {"warnings", r.warnings}};
 }
@@ -97,6 +98,8 @@ EvalOutcome outcome_from_json(const json& j) {
   EvalResult& r = o.result;
   r.fitness = j.at("fitness");
   r.distance = j.at("distance");
+  r.release_time = j.at("release_time");
+  r.target_miss = j.at("target_miss");
   r.failed = j.at("failed");
   r.failure = j.at("failure");
   r.note = j.at("note");

@@ -6,8 +6,15 @@
 #include "genome/genome.h"
 #include "physics/physics_def.h"
 #include "task/locomotion.h"
+#include "task/throwing.h"
 
 namespace bx {
+
+/// Which task an evaluation runs.
+enum class TaskKind {
+  Locomotion,  ///< SimConfig::task
+  Throwing,    ///< SimConfig::throwing (catapults, chaumont2007 section 4)
+};
 
 /// The settings of one simulation. Config files (io/config.h) map onto these
 /// fields one to one, section by section.
@@ -16,7 +23,9 @@ struct SimConfig {
   MotorDef motor;
   int brain_steps_per_physics_step = 1;
   DevelopDef develop;
+  TaskKind task_kind = TaskKind::Locomotion;
   LocomotionDef task;
+  ThrowingDef throwing;
   double replay_fps = 30;  ///< frames per simulated second in replays
 };
 

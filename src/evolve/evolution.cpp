@@ -107,9 +107,11 @@ std::vector<Individual> Evolution::evaluate(std::vector<Child> children, Evoluti
     const EvalResult& r = out[k].result;
     if (!out[k].viable) {
       ind.failure = "not viable: " + out[k].reason;
+      ind.fitness = evo_.failed_fitness;
       ++failed;
     } else if (r.failed) {
       ind.failure = r.failure;
+      ind.fitness = evo_.failed_fitness;
       ++failed;
     } else {
       ind.fitness = r.fitness;

@@ -42,6 +42,10 @@ struct EvolutionDef {
   // both
   int max_regenerations = 1000;   ///< non-viable children redrawn at most this often, then a random genome
   double evaluation_timeout = 120;  ///< seconds before a worker's evaluation is abandoned
+  /// Fitness of an evaluation that blew up, crashed or timed out: "an
+  /// arbitrary low value" (chaumont2007 5.4). 0 suits tasks whose scores are
+  /// never negative; the aim task's can be, so its presets set it lower.
+  double failed_fitness = 0;
   /// Steady state: evaluations between statistics rows and checkpoints (0: the population size).
   long report_every = 0;
 };

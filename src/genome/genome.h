@@ -4,6 +4,7 @@
 // immutable CreatureModel and the simulation never reads it.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -144,11 +145,38 @@ struct NodeGene {
   friend bool operator==(const NodeGene&, const NodeGene&) = default;
 };
 
+/// A catapult's release mechanism (chaumont2007 4.1, Fig. 4). Fixed except
+/// for its wiring: a constant feeds a delay of `delay_steps` brain steps, so
+/// the release effector fires at that step at the latest; it fires earlier at
+/// the first step where the weighted sum of `inputs` (signals of the body's
+/// network, read as from the arm's part) reaches the firing threshold.
+struct ReleaseGene {
+  /// The weighted sum of `inputs` fires the release from this value on.
+  static constexpr double kFiringThreshold = 0.5;
+  int delay_steps = 30;  ///< chaumont2007 4.1: 30 steps (0.5 s at 60 Hz)
+  std::vector<InputGene> inputs;
+  friend bool operator==(const ReleaseGene&, const ReleaseGene&) = default;
+};
+
+/// What makes a genome a catapult (chaumont2007 4.1, Fig. 3): the root
+/// (node 0) is the arm and carries the release mechanism; node `projectile`
+/// is the block it throws: a box without neurons, sensors, effectors or
+/// edges, grown once, through exactly one edge of the root (no reflection),
+/// held by a fixed joint until the release breaks it. The other nodes form
+/// the body.
+struct CatapultGene {
+  int projectile = 1;
+  ReleaseGene release;
+  friend bool operator==(const CatapultGene&, const CatapultGene&) = default;
+};
+
 /// A whole genome: node 0 is the root.
 struct Genome {
   Dialect dialect = Dialect::Sims1994;
   std::vector<NodeGene> nodes;
   std::vector<NeuronGene> global_neurons;
+  /// Present for catapults (chaumont2007 section 4), absent otherwise.
+  std::optional<CatapultGene> catapult;
   friend bool operator==(const Genome&, const Genome&) = default;
 };
 

@@ -69,6 +69,27 @@ struct StructuralRates {
   friend bool operator==(const StructuralRates&, const StructuralRates&) = default;
 };
 
+/// Catapult genomes (chaumont2007 4.1). With `enabled`, random_genome()
+/// makes catapults; mutate(), crossover() and graft() keep a catapult a
+/// catapult (one arm, one projectile, the mechanism unchanged but for its
+/// input wiring) whatever `enabled` says.
+struct CatapultDef {
+  bool enabled = false;
+  /// The projectile of a random catapult: a box of this size and density.
+  /// Our choice (the paper gives none): a 15 cm cube of water, 3.4 kg.
+  Vec3 projectile_size{0.15, 0.15, 0.15};
+  double projectile_density = 1000;
+  /// Whether mutation changes the projectile's size (chaumont2007 4.2: "in
+  /// some experiments"); within size_min..size_max of the body's parts.
+  bool mutate_projectile = false;
+  /// The mechanism's delay (chaumont2007 4.1: 30 steps = 0.5 s at 60 Hz).
+  int release_delay_steps = 30;
+  /// Inputs from the body's network to the release of a random catapult.
+  /// Our choice.
+  IntRange release_inputs_at_creation{0, 2};
+  friend bool operator==(const CatapultDef&, const CatapultDef&) = default;
+};
+
 /// Every constant of the operators of one dialect. The values live in one
 /// place, default_operators() (as Box2D's b2DefaultBodyDef): start from it and
 /// override fields; a value-initialized OperatorDef is not meaningful. Each
@@ -196,6 +217,9 @@ struct OperatorDef {
   double angle_sigma = 0;
   /// Structural mutations of graph genomes (per mutate() call).
   StructuralRates structure;
+
+  // ---- catapults
+  CatapultDef catapult;
 
   friend bool operator==(const OperatorDef&, const OperatorDef&) = default;
 };

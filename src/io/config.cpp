@@ -19,8 +19,8 @@ namespace {
 struct Field {
   std::string_view section;
   std::string_view key;
-  enum Kind { Real, Int, Long, Bool, Choice } kind;
-  double lo, hi;                                  // inclusive range (Real, Int)
+  enum Kind { Real, Int, Long, Bool, Choice, Vec } kind;
+  double lo, hi;                                  // inclusive range (Real, Int, each of Vec's)
   std::vector<std::string_view> choices;          // Choice: names, by enum value
   std::function<void*(RunConfig&)> at;            // the field's address
   std::string_view doc;                           // one line for docs/config.md
@@ -65,6 +65,13 @@ const std::vector<Field>& fields() {
       {"task", "settle_timeout", Field::Real, 0, 1e4, {}, [](RunConfig& c) -> void* { return &c.sim.task.settle_timeout; }, "never settled within this (s): fitness 0"},
       {"task", "burst_seconds", Field::Real, 0, 1e4, {}, [](RunConfig& c) -> void* { return &c.sim.task.burst_seconds; }, "the first controller activation (s)"},
       {"task", "kappa", Field::Real, 0, 10, {}, [](RunConfig& c) -> void* { return &c.sim.task.kappa; }, "eq. 1's reward per block"},
+      {"task", "kind", Field::Choice, 0, 0, {"locomotion", "throwing"}, [](RunConfig& c) -> void* { return &c.sim.task_kind; }, "locomotion (the [task] keys) or throwing (the [throwing] keys; needs catapults)"},
+      {"throwing", "fitness", Field::Choice, 0, 0, {"distance", "aim"}, [](RunConfig& c) -> void* { return &c.sim.throwing.fitness; }, "distance (chaumont2007 eq. 2: D_p) or aim (eq. 3: D_p - D_t)"},
+      {"throwing", "seconds", Field::Real, 0, 1e6, {}, [](RunConfig& c) -> void* { return &c.sim.throwing.seconds; }, "longest evaluation (s); it ends earlier once the projectile rests"},
+      {"throwing", "drop_height", Field::Real, 0, 1e3, {}, [](RunConfig& c) -> void* { return &c.sim.throwing.drop_height; }, "gap between the lowest part and the ground at the start (m)"},
+      {"throwing", "rest_speed", Field::Real, 0, 1e3, {}, [](RunConfig& c) -> void* { return &c.sim.throwing.rest_speed; }, "at rest: the projectile moves slower than this (m/s) ..."},
+      {"throwing", "rest_steps", Field::Int, 1, 1000000, {}, [](RunConfig& c) -> void* { return &c.sim.throwing.rest_steps; }, "... for this many consecutive steps"},
+      {"throwing", "target", Field::Vec, -1e6, 1e6, {}, [](RunConfig& c) -> void* { return &c.sim.throwing.target; }, "aim: the target point [x, y, z] (m)"},
       {"replay", "fps", Field::Real, 1e-3, 1e4, {}, [](RunConfig& c) -> void* { return &c.sim.replay_fps; }, "replay frames per simulated second"},
       {"genome", "dialect", Field::Choice, 0, 0, {"sims1994", "miconi2006", "chaumont2007"}, [](RunConfig& c) -> void* { return &c.dialect; }, "sims1994, miconi2006 or chaumont2007: picks every default"},
       {"evolution", "algorithm", Field::Choice, 0, 0, {"generational", "steady_state"}, [](RunConfig& c) -> void* { return &c.evolution.algorithm; }, "generational (chaumont2007) or steady_state (miconi2006)"},
@@ -84,7 +91,13 @@ const std::vector<Field>& fields() {
       {"evolution", "batch", Field::Int, 1, 100000, {}, [](RunConfig& c) -> void* { return &c.evolution.batch; }, "steady state: tournaments evaluated together (disjoint triples); 1 = strictly sequential"},
       {"evolution", "max_regenerations", Field::Int, 0, 1000000, {}, [](RunConfig& c) -> void* { return &c.evolution.max_regenerations; }, "non-viable children redrawn at most this often, then a random genome"},
       {"evolution", "evaluation_timeout", Field::Real, 0.1, 1e6, {}, [](RunConfig& c) -> void* { return &c.evolution.evaluation_timeout; }, "seconds before a worker's evaluation is abandoned as failed"},
+      {"evolution", "failed_fitness", Field::Real, -1e12, 1e12, {}, [](RunConfig& c) -> void* { return &c.evolution.failed_fitness; }, "fitness of an evaluation that blew up, crashed or timed out (below any real score)"},
       {"evolution", "report_every", Field::Long, 0, 1e12, {}, [](RunConfig& c) -> void* { return &c.evolution.report_every; }, "steady state: evaluations per statistics row and checkpoint (0: the population)"},
+      {"catapult", "enabled", Field::Bool, 0, 0, {}, [](RunConfig& c) -> void* { return &c.operators.catapult.enabled; }, "random genomes are catapults (chaumont2007 section 4)"},
+      {"catapult", "projectile_size", Field::Vec, 1e-3, 100, {}, [](RunConfig& c) -> void* { return &c.operators.catapult.projectile_size; }, "the projectile of a random catapult: box extents [x, y, z] (m)"},
+      {"catapult", "projectile_density", Field::Real, 1, 1e6, {}, [](RunConfig& c) -> void* { return &c.operators.catapult.projectile_density; }, "... and density (kg/m^3)"},
+      {"catapult", "mutate_projectile", Field::Bool, 0, 0, {}, [](RunConfig& c) -> void* { return &c.operators.catapult.mutate_projectile; }, "mutation changes the projectile's size (4.2: \"in some experiments\")"},
+      {"catapult", "release_delay_steps", Field::Int, 2, 1001, {}, [](RunConfig& c) -> void* { return &c.operators.catapult.release_delay_steps; }, "brain steps until the mechanism releases at the latest (4.1: 30)"},
   };
   return f;
 }
@@ -109,6 +122,8 @@ std::string num(double v) {
   auto r = std::to_chars(buf, buf + sizeof buf, v);
   return std::string(buf, r.ptr);
 }
+
+std::string vec_text(Vec3 v) { return "[" + num(v.x) + ", " + num(v.y) + ", " + num(v.z) + "]"; }
 
 // sets one field from a TOML value, or says what is wrong
 Status set_field(const Field& f, RunConfig& cfg, const toml::node& n, const std::string& where) {
@@ -139,6 +154,22 @@ Status set_field(const Field& f, RunConfig& cfg, const toml::node& n, const std:
       if (!n.is_boolean()) return bad("expected true or false");
       *static_cast<bool*>(p) = *n.value<bool>();
       return Ok{};
+    case Field::Vec: {
+      const toml::array* a = n.as_array();
+      if (!a || a->size() != 3) return bad("expected an array of 3 numbers");
+      Vec3 v;
+      for (std::size_t i = 0; i < 3; ++i) {
+        const toml::node& e = *a->get(i);
+        std::optional<double> x = e.is_integer() ? std::optional<double>(static_cast<double>(*e.value<std::int64_t>()))
+                                                 : e.value<double>();
+        if (!e.is_number() || !x) return bad("expected an array of 3 numbers");
+        if (!std::isfinite(*x) || *x < f.lo || *x > f.hi)
+          return bad("each out of range [" + num(f.lo) + ", " + num(f.hi) + "]");
+        v[static_cast<int>(i)] = *x;
+      }
+      *static_cast<Vec3*>(p) = v;
+      return Ok{};
+    }
     case Field::Choice: {
       std::string names;
       for (auto c : f.choices) names += (names.empty() ? "" : ", ") + std::string(c);
@@ -240,6 +271,12 @@ Result<RunConfig> read_run_config(std::string_view text, std::string_view source
   RunConfig cfg = default_run_config(d);
   for (const auto& [t, src] : layers)
     if (Status s = apply_config_toml(cfg, t, src); !s) return Error{s.error()};
+  // catapults are chaumont2007's, and a throwing run needs them
+  if (cfg.operators.catapult.enabled && cfg.dialect != Dialect::Chaumont2007)
+    return Error{std::string(source) + ": catapult.enabled: catapults need genome.dialect = \"chaumont2007\", got \"" +
+                 std::string(to_string(cfg.dialect)) + "\""};
+  if (cfg.sim.task_kind == TaskKind::Throwing && !cfg.operators.catapult.enabled)
+    return Error{std::string(source) + ": task.kind: \"throwing\" needs catapult.enabled = true"};
   return cfg;
 }
 
@@ -259,7 +296,7 @@ std::string config_to_toml(const RunConfig& cfg_in, bool sim_only) {
   std::ostringstream ss;
   std::string_view section;
   for (const auto& f : fields()) {
-    bool sim_section = f.section != "genome" && f.section != "evolution" && f.section != "operators";
+    bool sim_section = f.section != "genome" && f.section != "evolution" && f.section != "catapult";
     if (sim_only && !sim_section) continue;
     if (f.section != section) {
       ss << (section.empty() ? "" : "\n") << "[" << f.section << "]\n";
@@ -273,6 +310,7 @@ std::string config_to_toml(const RunConfig& cfg_in, bool sim_only) {
       case Field::Long: ss << *static_cast<long*>(p); break;
       case Field::Bool: ss << (*static_cast<bool*>(p) ? "true" : "false"); break;
       case Field::Choice: ss << '"' << f.choices[*static_cast<int*>(p)] << '"'; break;
+      case Field::Vec: ss << vec_text(*static_cast<Vec3*>(p)); break;
     }
     ss << "\n";
   }
@@ -295,6 +333,7 @@ std::string config_reference_markdown() {
         case Field::Long: ss << " " << *static_cast<long*>(p) << " |"; break;
         case Field::Bool: ss << " " << (*static_cast<bool*>(p) ? "true" : "false") << " |"; break;
         case Field::Choice: ss << " " << f.choices[*static_cast<int*>(p)] << " |"; break;
+        case Field::Vec: ss << " " << vec_text(*static_cast<Vec3*>(p)) << " |"; break;
       }
     }
     ss << " " << f.doc << " |\n";

@@ -41,8 +41,22 @@ std::string replay_to_string(const CreatureModel& m, const Replay& r, const Eval
   j["seed"] = info.seed;
   j["dt"] = info.dt;
   // the scene: ground and props, each drawn from its description
+  json props = json::array();
+  if (r.target)
+    props.push_back({{"name", "target"},
+                     {"shape", "sphere"},
+                     {"size", {0.12, 0.12, 0.12}},
+                     {"color", "#d6336c"},
+                     {"opacity", 0.8},
+                     {"pose", {round_to(r.target->x, 1e-6), round_to(r.target->y, 1e-6),
+                               round_to(r.target->z, 1e-6), 1, 0, 0, 0}}});
   j["scene"] = {{"ground", {{"type", "plane"}, {"z", 0.0}, {"friction", info.friction}}},
-                {"props", json::array()}};
+                {"props", props}};
+  // a catapult's throw: the projectile part, the release moment, the target
+  if (m.projectile >= 0)
+    j["throw"] = {{"projectile", m.projectile},
+                  {"release_t", r.release_time >= 0 ? json(round_to(r.release_time, 1e-6)) : json(nullptr)},
+                  {"target", r.target ? vec_json(*r.target, 1e-6) : json(nullptr)}};
   // parts and joints at the initial pose
   json parts = json::array();
   for (const auto& p : m.parts)
@@ -98,6 +112,10 @@ std::string replay_to_string(const CreatureModel& m, const Replay& r, const Eval
                  {"failed", res.failed},     {"failure", res.failure},
                  {"seconds", res.seconds},   {"steps", res.steps},
                  {"warnings", res.warnings}};
+  if (m.projectile >= 0) {
+    j["result"]["throw_distance"] = res.distance;
+    j["result"]["target_miss"] = res.target_miss >= 0 ? json(res.target_miss) : json(nullptr);
+  }
   return j.dump() + "\n";
 }
 

@@ -93,6 +93,7 @@ struct World::Impl {
     dJointID amotor = nullptr;  // spherical joints: Euler angular motor for angles/limits/motors
     JointType type = JointType::Fixed;
     int parent = 0, child = 0;
+    bool broken = false;
   };
 
   PhysicsDef def;
@@ -105,6 +106,7 @@ struct World::Impl {
   std::vector<double> masses;
   std::vector<Joint> joints;
   std::vector<std::uint8_t> contact_mask;
+  std::vector<bool> free_part;  // freed by a broken joint: collides with every part
   std::vector<Vec3> prev_pos;
   std::vector<std::array<double, 3>> joint_torque;  // Torque/PD accumulation per joint
   std::vector<dContact> contact_buf;
@@ -113,6 +115,7 @@ struct World::Impl {
 
   // joint parameter of one degree of freedom
   void set_param(const Joint& j, int dof, int param, double v) const {
+    if (j.broken) return;
     int p = param + dParamGroup * dof;
     switch (j.type) {
       case JointType::Hinge: dJointSetHingeParam(j.id, param, v); break;
@@ -125,6 +128,7 @@ struct World::Impl {
   }
 
   double position(const Joint& j, int dof) const {
+    if (j.broken) return 0;
     switch (j.type) {
       case JointType::Hinge: return dJointGetHingeAngle(j.id);
       case JointType::Universal:
@@ -139,6 +143,7 @@ struct World::Impl {
   }
 
   double rate(const Joint& j, int dof) const {
+    if (j.broken) return 0;
     switch (j.type) {
       case JointType::Hinge: return dJointGetHingeAngleRate(j.id);
       case JointType::Universal:
@@ -157,6 +162,10 @@ struct World::Impl {
     for (std::size_t k = 0; k < joints.size(); ++k) {
       auto& tq = joint_torque[k];
       const Joint& j = joints[k];
+      if (j.broken) {
+        tq = {0, 0, 0};
+        continue;
+      }
       switch (j.type) {
         case JointType::Hinge: dJointAddHingeTorque(j.id, tq[0]); break;
         case JointType::Universal: dJointAddUniversalTorques(j.id, tq[0], tq[1]); break;
@@ -183,8 +192,10 @@ struct World::Impl {
   void collide(dGeomID a, dGeomID b) {
     dBodyID ba = dGeomGetBody(a), bb = dGeomGetBody(b);
     if (ba && bb) {
-      // parts joined by a joint never collide; others only with self_collision
-      if (!def.self_collision || dAreConnectedExcluding(ba, bb, dJointTypeContact)) return;
+      // parts joined by a joint never collide; others only with self_collision,
+      // unless one of them was set free
+      bool freed = free_part[part_of(a)] || free_part[part_of(b)];
+      if ((!def.self_collision && !freed) || dAreConnectedExcluding(ba, bb, dJointTypeContact)) return;
     }
     int n = dCollide(a, b, def.max_contacts, &contact_buf[0].geom, sizeof(dContact));
     for (int i = 0; i < n; ++i) {
@@ -197,6 +208,11 @@ struct World::Impl {
       mark_face(a, c.geom.normal, -1);
       mark_face(b, c.geom.normal, +1);
     }
+  }
+
+  // the part index of a creature geom (geom data holds index + 1; 0: ground)
+  static int part_of(dGeomID g) {
+    return static_cast<int>(reinterpret_cast<std::intptr_t>(dGeomGetData(g))) - 1;
   }
 
   // sets the contact bit of the face of part geom `g` whose outward normal is
@@ -251,6 +267,7 @@ void World::add_creature(const CreatureModel& m, const Pose& placement) {
   w.geoms.resize(n);
   w.masses.resize(n);
   w.contact_mask.assign(n, 0);
+  w.free_part.assign(n, false);
   w.prev_pos.resize(n);
   // bodies with shape, mass and pose
   for (int i = 0; i < n; ++i) {
@@ -455,6 +472,7 @@ std::string World::check_explosion() {
   }
   for (std::size_t k = 0; k < w.joints.size(); ++k) {
     const Impl::Joint& j = w.joints[k];
+    if (j.broken) continue;
     dVector3 a, b;
     switch (j.type) {
       case JointType::Hinge:
@@ -480,6 +498,21 @@ std::string World::check_explosion() {
   }
   return {};
 }
+
+void World::break_joint(int j) {
+  auto& w = *impl_;
+  Impl::Joint& jt = w.joints[j];
+  if (jt.broken) return;
+  // destroy the joint and its motor; the rest of the code skips broken joints
+  dJointDestroy(jt.id);
+  if (jt.amotor) dJointDestroy(jt.amotor);
+  jt.id = nullptr;
+  jt.amotor = nullptr;
+  jt.broken = true;
+  w.free_part[jt.child] = true;
+}
+
+bool World::joint_broken(int j) const { return impl_->joints[j].broken; }
 
 Pose World::part_pose(int i) const {
   dBodyID b = impl_->bodies[i];

@@ -37,6 +37,14 @@ class World {
   /// Fixes part i to the static world (a pendulum's pivot, a test rig).
   void fix_part_to_world(int i);
 
+  /// Breaks joint j for good (a catapult's release, chaumont2007 4.1): its
+  /// child part flies free and from then on collides with every part,
+  /// whatever self_collision says (it no longer belongs to the creature).
+  /// Breaking a broken joint does nothing.
+  void break_joint(int j);
+  /// Whether joint j has been broken.
+  bool joint_broken(int j) const;
+
   /// Sets every motor from the effector signals (in [-1,1], brain order).
   void apply_effectors(const CreatureModel& m, const MotorDef& motor,
                        std::span<const double> signals);

@@ -341,3 +341,64 @@ TEST(World, SaturationMotorForceScalesWithTheSignal) {
 
 }  // namespace
 }  // namespace bx
+
+namespace bx {
+namespace {
+
+// a catapult's release: the broken joint's child falls freely from that moment
+TEST(World, ABrokenJointFreesItsChild) {
+  PhysicsDef def;
+  def.dt = 0.001;
+  World w(def);
+  CreatureModel m = pendulum(0.5, 0.3);
+  m.joints[0].type = JointType::Fixed;
+  w.add_creature(m, {{0, 0, 10}, Mat3::identity()});
+  w.fix_part_to_world(0);
+  for (int i = 0; i < 200; ++i) w.step();
+  Vec3 held = w.part_pose(1).p;
+  EXPECT_FALSE(w.joint_broken(0));
+  w.break_joint(0);
+  w.break_joint(0);  // twice does nothing
+  EXPECT_TRUE(w.joint_broken(0));
+  EXPECT_EQ(w.joint_position(0, 0), 0.0);
+  for (int i = 0; i < 500; ++i) {
+    w.step();
+    ASSERT_EQ(w.check_explosion(), "") << "the broken joint must not count as torn";
+  }
+  // from rest: velocity exact, position within semi-implicit Euler's g dt t / 2
+  double t = 0.5;
+  EXPECT_NEAR(w.part_velocity(1).z, -9.81 * t, 1e-6);
+  EXPECT_NEAR(w.part_pose(1).p.z, held.z - 0.5 * 9.81 * t * t, 9.81 * def.dt * t);
+  EXPECT_NEAR(w.part_pose(1).p.x, held.x, 1e-6);
+}
+
+// once free, the child collides with its former parent even without self-collision
+TEST(World, AFreedPartCollidesWithTheCreature) {
+  PhysicsDef def;
+  def.self_collision = false;
+  World w(def);
+  // a slab fixed to the world, a block on it and a second slab below, both held by fixed joints
+  CreatureModel m;
+  m.parts.push_back(box_part({1, 1, 0.1}, 10, {0, 0, 1}));
+  m.parts.push_back(box_part({0.2, 0.2, 0.2}, 1, {0, 0, 1.15}, 0));
+  m.parts.push_back(box_part({1, 1, 0.1}, 10, {0, 0, 0.5}, 0));
+  for (int c : {1, 2}) {
+    JointModel j;
+    j.type = JointType::Fixed;
+    j.parent = 0;
+    j.child = c;
+    j.anchor = m.parts[c].pose.p;
+    m.joints.push_back(j);
+  }
+  w.add_creature(m, {{0, 0, 0}, Mat3::identity()});
+  w.fix_part_to_world(0);
+  w.break_joint(0);
+  for (int i = 0; i < 300; ++i) w.step();
+  // the freed block rests on the slab instead of falling through it
+  EXPECT_NEAR(w.part_pose(1).p.z, 1.15, 0.01);
+  // the other slab is still held
+  EXPECT_NEAR(w.part_pose(2).p.z, 0.5, 0.01);
+}
+
+}  // namespace
+}  // namespace bx

@@ -1,0 +1,54 @@
+#include "task/throwing.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace bx {
+
+double point_segment_distance(Vec3 p, Vec3 a, Vec3 b) {
+  Vec3 ab = b - a;
+  double len2 = dot(ab, ab);
+  double u = len2 > 0 ? std::clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
+  return norm(p - (a + u * ab));
+}
+
+ThrowingTask::ThrowingTask(const ThrowingDef& def, double dt) : def_(def), dt_(dt) {}
+
+void ThrowingTask::release(double t, Vec3 projectile) {
+  if (released_) return;
+  released_ = true;
+  t_release_ = t;
+  start_ = last_ = projectile;
+  miss_ = norm(projectile - def_.target);
+}
+
+void ThrowingTask::observe(double, Vec3 projectile) {
+  if (!released_ || done_) return;
+  // the path since the release, one segment per step
+  miss_ = std::min(miss_, point_segment_distance(def_.target, last_, projectile));
+  // at rest: barely moving for rest_steps steps in a row
+  double moved = norm(projectile - last_);
+  still_steps_ = moved < def_.rest_speed * dt_ ? still_steps_ + 1 : 0;
+  if (still_steps_ >= def_.rest_steps) done_ = true;
+  last_ = projectile;
+}
+
+double ThrowingTask::distance() const {
+  if (!released_) return 0;
+  return std::hypot(last_.x - start_.x, last_.y - start_.y);
+}
+
+double ThrowingTask::fitness() const {
+  if (!released_) return 0;
+  switch (def_.fitness) {
+    case ThrowFitness::Distance: return distance();
+    case ThrowFitness::Aim: return distance() - miss_;
+  }
+  return 0;
+}
+
+std::string ThrowingTask::note() const {
+  return released_ ? std::string() : std::string("the projectile was never released");
+}
+
+}  // namespace bx

@@ -1,0 +1,101 @@
+// Throwing scores (chaumont2007 4.2): D_p from release to rest, the rest
+// test, and D_t, the least distance from a target to the projectile's path,
+// against closed forms.
+#include "task/throwing.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace bx {
+namespace {
+
+constexpr double g = 9.81;
+
+// a projectile released at p0 with velocity v flies until it lands, then lies still
+void fly(ThrowingTask& t, const ThrowingDef& def, Vec3 p0, Vec3 v, double dt) {
+  t.release(0, p0);
+  Vec3 p = p0;
+  double s = 0;
+  while (true) {
+    s += dt;
+    p = {p0.x + v.x * s, p0.y + v.y * s, p0.z + v.z * s - 0.5 * g * s * s};
+    if (p.z <= 0) break;
+    t.observe(s, p);
+  }
+  p.z = 0;
+  for (int k = 0; k <= def.rest_steps; ++k) t.observe(s += dt, p);
+}
+
+TEST(Throwing, PointSegmentDistance) {
+  EXPECT_DOUBLE_EQ(point_segment_distance({0, 1, 0}, {-1, 0, 0}, {1, 0, 0}), 1.0);
+  EXPECT_DOUBLE_EQ(point_segment_distance({3, 4, 0}, {-1, 0, 0}, {0, 0, 0}), 5.0);  // past the end
+  EXPECT_DOUBLE_EQ(point_segment_distance({0, 0, 2}, {1, 1, 1}, {1, 1, 1}), std::sqrt(3.0));
+}
+
+// D_p of a ballistic throw is the closed-form range; D_t of a target straight
+// above the apex, closer than the apex's radius of curvature v_x^2 / g, is
+// its height above the apex; one beside the apex, its offset
+TEST(Throwing, AimOfABallisticThrowMatchesItsClosedForm) {
+  const double dt = 1e-4, vx = 4, vz = 3, h = 0.5;
+  const double t_land = (vz + std::sqrt(vz * vz + 2 * g * h)) / g;
+  const Vec3 apex{vx * vz / g, 0, h + vz * vz / (2 * g)};
+  ASSERT_LT(0.3, vx * vx / g);
+  for (Vec3 target : {apex + Vec3{0, 0, 0.3}, apex + Vec3{0, 1.5, 0}, apex}) {
+    ThrowingDef def;
+    def.fitness = ThrowFitness::Aim;
+    def.target = target;
+    ThrowingTask t(def, dt);
+    fly(t, def, {0, 0, h}, {vx, 0, vz}, dt);
+    EXPECT_TRUE(t.done());
+    EXPECT_NEAR(t.distance(), vx * t_land, vx * dt);
+    double expected_miss = norm(target - apex);
+    EXPECT_NEAR(t.target_miss(), expected_miss, 1e-6);
+    EXPECT_NEAR(t.fitness(), vx * t_land - expected_miss, vx * dt + 1e-6);
+  }
+}
+
+TEST(Throwing, DistanceIsHorizontalFromTheReleasePoint) {
+  ThrowingDef def;
+  ThrowingTask t(def, 0.01);
+  t.release(0.5, {1, 1, 2});
+  t.observe(0.51, {4, 5, 0.1});
+  EXPECT_DOUBLE_EQ(t.distance(), 5.0);  // the fall from 2 m does not count
+  EXPECT_DOUBLE_EQ(t.fitness(), 5.0);
+  EXPECT_DOUBLE_EQ(t.release_time(), 0.5);
+}
+
+TEST(Throwing, ComesToRestAfterRestStepsOfStillness) {
+  ThrowingDef def;
+  def.rest_speed = 0.1;
+  def.rest_steps = 5;
+  const double dt = 0.01;
+  ThrowingTask t(def, dt);
+  t.observe(0, {0, 0, 0});
+  EXPECT_FALSE(t.done()) << "not released: nothing to wait for";
+  t.release(0, {0, 0, 0});
+  double x = 0;
+  for (int k = 0; k < 10; ++k) t.observe(0, {x += 0.01, 0, 0});  // 1 m/s: moving
+  for (int k = 0; k < 4; ++k) t.observe(0, {x += 0.0009, 0, 0});  // 0.09 m/s: still
+  EXPECT_FALSE(t.done());
+  t.observe(0, {x += 0.0009, 0, 0});
+  EXPECT_TRUE(t.done());
+  EXPECT_NEAR(t.distance(), x, 1e-12);
+  t.observe(0, {x + 5, 0, 0});  // nothing counts once at rest
+  EXPECT_NEAR(t.distance(), x, 1e-12);
+}
+
+TEST(Throwing, NeverReleasedScoresZeroWithANote) {
+  ThrowingDef def;
+  def.fitness = ThrowFitness::Aim;
+  ThrowingTask t(def, 0.01);
+  t.observe(1, {5, 0, 0});
+  EXPECT_FALSE(t.released());
+  EXPECT_EQ(t.fitness(), 0.0);
+  EXPECT_EQ(t.target_miss(), -1.0);
+  EXPECT_EQ(t.release_time(), -1.0);
+  EXPECT_NE(t.note().find("never released"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace bx
