@@ -41,13 +41,13 @@ int cmd_simulate(const SimulateArgs& a) {
   // inputs: genome, config, flags; all checked before any work
   auto genome = load_genome(a.genome);
   if (!genome) return fail(genome.error());
-  SimConfig cfg = default_sim_config(genome->dialect);
+  SimConfig cfg = default_sim_config(*genome);
   if (!a.config.empty())
     if (Status s = apply_config_file(cfg, a.config); !s) return fail(s.error());
   if (a.seconds) {
     if (!(*a.seconds > 0) || !std::isfinite(*a.seconds) || *a.seconds > 1e6)
       return fail("--seconds: expected a number in (0, 1e6], got " + shortest(*a.seconds));
-    cfg.task.seconds = *a.seconds;
+    task_seconds(cfg) = *a.seconds;
   }
   if (!a.replay.empty()) {
     // make the replay's folder now, so a bad path fails before the simulation
@@ -97,6 +97,11 @@ int cmd_simulate(const SimulateArgs& a) {
     out["steps"] = res.steps;
     out["failed"] = res.failed;
     out["failure"] = res.failure;
+    out["note"] = res.note;
+    if (m.projectile >= 0) {
+      out["release_time"] = res.release_time >= 0 ? nlohmann::json(res.release_time) : nlohmann::json(nullptr);
+      out["target_miss"] = res.target_miss >= 0 ? nlohmann::json(res.target_miss) : nlohmann::json(nullptr);
+    }
     out["warnings"] = res.warnings;
     out["replay"] = a.replay.empty() ? nlohmann::json(nullptr) : nlohmann::json(a.replay);
     std::printf("%s\n", out.dump().c_str());
@@ -109,8 +114,17 @@ int cmd_simulate(const SimulateArgs& a) {
   std::printf("simulated %.2f s (%ld steps), seed %llu\n", res.seconds, res.steps,
               static_cast<unsigned long long>(a.seed));
   if (res.failed) std::printf("failed: %s\n", res.failure.c_str());
-  std::printf("distance %.4f m (%.2f body lengths)\nfitness %.6g\n", res.distance,
-              bl > 0 ? res.distance / bl : 0.0, res.fitness);
+  if (!res.note.empty()) std::printf("note: %s\n", res.note.c_str());
+  if (cfg.task_kind == TaskKind::Throwing) {
+    // the throw: when, how far, how close to the target
+    if (res.release_time >= 0) std::printf("released at %.3f s\n", res.release_time);
+    std::printf("projectile thrown %.4f m", res.distance);
+    if (res.target_miss >= 0) std::printf(", passing %.4f m from the target", res.target_miss);
+    std::printf("\nfitness %.6g\n", res.fitness);
+  } else {
+    std::printf("distance %.4f m (%.2f body lengths)\nfitness %.6g\n", res.distance,
+                bl > 0 ? res.distance / bl : 0.0, res.fitness);
+  }
   if (!a.replay.empty()) std::printf("replay written to %s\n", a.replay.c_str());
   return 0;
 }
@@ -137,7 +151,7 @@ void add_simulate_commands(CLI::App& app) {
   auto* s = app.add_subcommand("simulate", "Grow a genome and simulate it on flat ground");
   s->add_option("genome", sim.genome, "Genome file (JSON)")->required();
   s->add_option("--config", sim.config, "TOML config overlaid on the dialect's defaults");
-  s->add_option("--seconds", sim.seconds, "Simulated seconds (default: the config's task.seconds)");
+  s->add_option("--seconds", sim.seconds, "Simulated seconds (default: the config's task.seconds, or throwing.seconds)");
   s->add_option("--seed", sim.seed, "Seed of the evaluation")->default_val(1);
   s->add_option("--replay", sim.replay, "Write a replay file here (folders are made)");
   s->add_flag("--json", sim.json, "Print one JSON object instead of text");

@@ -74,13 +74,13 @@ std::string number(double v) {
 Result<Prepared> prepare(const WatchArgs& a) {
   auto genome = load_genome(a.genome);
   if (!genome) return Error{genome.error()};
-  SimConfig cfg = default_sim_config(genome->dialect);
+  SimConfig cfg = default_sim_config(*genome);
   if (!a.config.empty())
     if (Status s = apply_config_file(cfg, a.config); !s) return Error{s.error()};
   if (a.seconds) {
     if (!(*a.seconds > 0) || !std::isfinite(*a.seconds) || *a.seconds > 1e6)
       return Error{"--seconds: expected a number in (0, 1e6], got " + number(*a.seconds)};
-    cfg.task.seconds = *a.seconds;
+    task_seconds(cfg) = *a.seconds;
   }
   return Prepared{std::move(*genome), cfg};
 }
@@ -124,7 +124,7 @@ int cmd_show_run(WatchArgs a) {
   auto cfg = read_run_config((*store)->meta("config"), run_config_path(dir));
   if (!cfg) return fail(cfg.error());
   SimConfig sim = cfg->sim;
-  if (a.seconds) sim.task.seconds = *a.seconds;
+  if (a.seconds) task_seconds(sim) = *a.seconds;
   const std::uint64_t seed = std::stoull((*store)->meta("seed"));
   auto gens = (*store)->generations();
   if (gens.empty()) return fail(dir + ": no generation finished yet");
@@ -345,7 +345,7 @@ int cmd_render(const WatchArgs& a) {
 void add_common(CLI::App* c, WatchArgs& a) {
   c->add_option("genome", a.genome, "Genome file (JSON), or for show a run directory")->required();
   c->add_option("--config", a.config, "TOML config overlaid on the dialect's defaults");
-  c->add_option("--seconds", a.seconds, "Simulated seconds (default: the config's task.seconds)");
+  c->add_option("--seconds", a.seconds, "Simulated seconds (default: the config's task.seconds, or throwing.seconds)");
   c->add_option("--seed", a.seed, "Seed of the evaluation")->default_val(1);
 }
 

@@ -51,4 +51,14 @@ SimConfig default_sim_config(Dialect d) {
   return c;
 }
 
+SimConfig default_sim_config(const Genome& g) {
+  SimConfig c = default_sim_config(g.dialect);
+  if (g.catapult) c.task_kind = TaskKind::Throwing;
+  return c;
+}
+
+double& task_seconds(SimConfig& c) {
+  return c.task_kind == TaskKind::Throwing ? c.throwing.seconds : c.task.seconds;
+}
+
 }  // namespace bx

@@ -32,4 +32,11 @@ struct SimConfig {
 /// The defaults of a dialect (its paper's constants; docs/config.md lists them).
 SimConfig default_sim_config(Dialect d);
 
+/// The defaults for a genome: its dialect's, with the throwing task for a
+/// catapult.
+SimConfig default_sim_config(const Genome& g);
+
+/// The active task's evaluation length (s): task.seconds or throwing.seconds.
+double& task_seconds(SimConfig& c);
+
 }  // namespace bx
