@@ -102,14 +102,21 @@ const std::vector<Field>& fields() {
   return f;
 }
 
+std::string num(double v);
+
 std::string show(const toml::node& n) {
   std::ostringstream ss;
-  if (n.is_string())
+  if (n.is_floating_point())
+    ss << num(*n.value<double>());
+  else if (n.is_string())
     ss << '"' << *n.value<std::string>() << '"';
   else if (n.is_table())
     ss << "a table";
-  else if (n.is_array())
-    ss << "an array";
+  else if (const toml::array* a = n.as_array()) {
+    ss << '[';
+    for (std::size_t i = 0; i < a->size(); ++i) ss << (i ? ", " : "") << show(*a->get(i));
+    ss << ']';
+  }
   else
     n.visit([&](auto&& v) { ss << v; });
   return ss.str();

@@ -99,3 +99,50 @@ TEST(Config, TheReferenceDocListsEveryKeyAsTheCodeHasIt) {
 
 }  // namespace
 }  // namespace bx
+
+namespace bx {
+namespace {
+
+TEST(Config, CatapultAndThrowingKeys) {
+  auto c = read_run_config("[genome]\ndialect = \"chaumont2007\"\n[catapult]\nenabled = true\n"
+                           "projectile_size = [0.3, 0.2, 0.05]\n[task]\nkind = \"throwing\"\n"
+                           "[throwing]\nfitness = \"aim\"\ntarget = [4, -1, 0.1]\n",
+                           "c.toml", {"throwing.rest_steps=10", "catapult.mutate_projectile=true"});
+  ASSERT_TRUE(c.ok()) << c.error();
+  EXPECT_EQ(c->sim.task_kind, TaskKind::Throwing);
+  EXPECT_EQ(c->sim.throwing.fitness, ThrowFitness::Aim);
+  EXPECT_EQ(c->sim.throwing.target, (Vec3{4, -1, 0.1}));
+  EXPECT_EQ(c->sim.throwing.rest_steps, 10);
+  EXPECT_TRUE(c->operators.catapult.enabled);
+  EXPECT_TRUE(c->operators.catapult.mutate_projectile);
+  EXPECT_EQ(c->operators.catapult.projectile_size, (Vec3{0.3, 0.2, 0.05}));
+  // printed and read back: the same
+  RunConfig back = default_run_config(Dialect::Sims1994);
+  ASSERT_TRUE(apply_config_toml(back, config_to_toml(*c), "printed"));
+  EXPECT_EQ(config_to_toml(back), config_to_toml(*c));
+  // --set takes a vector too
+  auto v = read_run_config("", "r.toml", {"throwing.target=[1, 2, 3]"});
+  ASSERT_TRUE(v.ok()) << v.error();
+  EXPECT_EQ(v->sim.throwing.target, (Vec3{1, 2, 3}));
+}
+
+TEST(Config, BadCatapultInputNamesTheKeyAndTheValue) {
+  EXPECT_EQ(apply_error("[throwing]\ntarget = [1, 2]\n"),
+            "run.toml: throwing.target: expected an array of 3 numbers, got [1, 2]");
+  EXPECT_EQ(apply_error("[throwing]\ntarget = 3\n"),
+            "run.toml: throwing.target: expected an array of 3 numbers, got 3");
+  EXPECT_EQ(apply_error("[catapult]\nprojectile_size = [0.1, 0, 0.1]\n"),
+            "run.toml: catapult.projectile_size: each out of range [0.001, 100], got [0.1, 0, 0.1]");
+  EXPECT_EQ(apply_error("[catapult]\nrelease_delay_steps = 1\n"),
+            "run.toml: catapult.release_delay_steps: out of range [2, 1001], got 1");
+  EXPECT_EQ(apply_error("[task]\nkind = \"fly\"\n"),
+            "run.toml: task.kind: expected one of locomotion, throwing, got \"fly\"");
+  // keys that must agree
+  EXPECT_EQ(read_run_config("[task]\nkind = \"throwing\"\n[genome]\ndialect = \"chaumont2007\"\n", "r.toml").error(),
+            "r.toml: task.kind: \"throwing\" needs catapult.enabled = true");
+  EXPECT_EQ(read_run_config("[catapult]\nenabled = true\n", "r.toml").error(),
+            "r.toml: catapult.enabled: catapults need genome.dialect = \"chaumont2007\", got \"sims1994\"");
+}
+
+}  // namespace
+}  // namespace bx
