@@ -7,6 +7,7 @@
 #include "genome/dialect.h"
 #include "genome/genome_edit.h"
 #include "genome/operators.h"
+#include "genome/operators_detail.h"
 
 namespace bx {
 
@@ -181,8 +182,10 @@ Genome crossover_graph(const Genome& a, const Genome& b, const Splice& s, const 
   g.dialect = a.dialect;
   for (int p = 0; p < s.left; ++p) g.nodes.push_back(a.nodes[p]);
   for (int p = s.cut; p < s.nb; ++p) g.nodes.push_back(b.nodes[p]);
-  // global neurons come with the root's parent (our choice)
+  // global neurons come with the root's parent (our choice), and so does a
+  // detached catapult's release (operators_detail.h), read from the root
   g.global_neurons = a.global_neurons;
+  g.catapult = a.catapult;
   // edges keep their positions; one pointing at a position the child lacks is
   // pointed at a random node (Sims 1994)
   int n = static_cast<int>(g.nodes.size());
@@ -200,18 +203,29 @@ Genome crossover_graph(const Genome& a, const Genome& b, const Splice& s, const 
 
 // ---------------------------------------------------------------- crossover
 
-Genome crossover_at(const Genome& a, const Genome& b, int cut, const OperatorDef& def, Rng& rng) {
+Genome detail::crossover_at_plain(const Genome& a, const Genome& b, int cut,
+                                  const OperatorDef& def, Rng& rng) {
   assert(a.dialect == b.dialect && !a.nodes.empty() && !b.nodes.empty());
   Splice s = make_splice(a, b, cut);
   if (a.dialect == Dialect::Miconi2006) return crossover_miconi(a, b, s, def, rng);
   return crossover_graph(a, b, s, def, rng);
 }
 
-Genome crossover(const Genome& a, const Genome& b, const OperatorDef& def, Rng& rng) {
+int detail::crossover_cut(const Genome& a, const Genome& b, Rng& rng) {
   int m = static_cast<int>(std::max(a.nodes.size(), b.nodes.size()));
   // a cut strictly inside the longer row, so that each parent gives something
-  int cut = m <= 1 ? 1 : 1 + static_cast<int>(rng.below(m - 1));
-  return crossover_at(a, b, cut, def, rng);
+  return m <= 1 ? 1 : 1 + static_cast<int>(rng.below(m - 1));
+}
+
+Genome crossover_at(const Genome& a, const Genome& b, int cut, const OperatorDef& def, Rng& rng) {
+  if (is_catapult(a) || is_catapult(b)) return detail::crossover_catapult(a, b, cut, def, rng);
+  return detail::crossover_at_plain(a, b, cut, def, rng);
+}
+
+Genome crossover(const Genome& a, const Genome& b, const OperatorDef& def, Rng& rng) {
+  // catapults draw the cut on their bodies
+  if (is_catapult(a) || is_catapult(b)) return detail::crossover_catapult(a, b, -1, def, rng);
+  return detail::crossover_at_plain(a, b, detail::crossover_cut(a, b, rng), def, rng);
 }
 
 Genome crossover(const Genome& a, const Genome& b, Rng& rng) {
@@ -221,6 +235,13 @@ Genome crossover(const Genome& a, const Genome& b, Rng& rng) {
 // ---------------------------------------------------------------- grafting
 
 Genome graft(const Genome& trunk, const Genome& branch, const OperatorDef& def, Rng& rng) {
+  if (is_catapult(trunk) || is_catapult(branch))
+    return detail::graft_catapult(trunk, branch, def, rng);
+  return detail::graft_plain(trunk, branch, 0, def, rng);
+}
+
+Genome detail::graft_plain(const Genome& trunk, const Genome& branch, int first_branch_node,
+                           const OperatorDef& def, Rng& rng) {
   assert(trunk.dialect == branch.dialect && !trunk.nodes.empty() && !branch.nodes.empty());
   Genome g = trunk;
   int most = max_genes(g.dialect, def);
@@ -274,7 +295,9 @@ Genome graft(const Genome& trunk, const Genome& branch, const OperatorDef& def, 
     const auto& pool = fits.empty() ? any : fits;
     src = pool[rng.below(pool.size())];
   } else if (g.dialect != Dialect::Miconi2006) {
-    src = static_cast<int>(rng.below(nb));
+    // nodes from first_branch_node on (a catapult's arm is never a branch)
+    int first = first_branch_node < nb ? std::max(0, first_branch_node) : 0;
+    src = first + static_cast<int>(rng.below(nb - first));
   }
   // connectivity kept where indices exist (miconi2006 5.1), clamped otherwise
   splice_subgraph(g, parent, edge, branch, src, std::max(1, budget), SourceFix::Clamp, &rng);

@@ -206,6 +206,10 @@ class Validator {
                          "no such node (the genome has " + std::to_string(n) + ")", to);
       }
     }
+    // a catapult's arm and projectile before the nodes: the projectile's
+    // fixed joint is the one exception to the dialect's joint types
+    if (g_.catapult)
+      if (auto p = check_catapult()) return p;
     if (r_.tree_only)
       if (auto p = check_tree()) return p;
     for (int i = 0; i < n; ++i)
@@ -214,6 +218,8 @@ class Validator {
       if (auto p =
               check_neuron(g_.global_neurons[j], "global_neurons[" + std::to_string(j) + "]", -1))
         return p;
+    if (g_.catapult)
+      if (auto p = check_release()) return p;
     return check_reachable();
   }
 
@@ -241,6 +247,107 @@ class Validator {
                          to);
         parent[to] = edge_path(i, k);
       }
+    }
+    return std::nullopt;
+  }
+
+  // Catapults (chaumont2007 4.1): the dialect, the projectile node, the one
+  // edge of the arm (node 0) that holds it, no edge back to the arm, the delay.
+  Problem check_catapult() const {
+    const CatapultGene& c = *g_.catapult;
+    int n = static_cast<int>(g_.nodes.size());
+    if (g_.dialect != Dialect::Chaumont2007)
+      return problem("catapult", "catapults belong to dialect chaumont2007 (section 4)",
+                     std::string(to_string(g_.dialect)));
+    int p = c.projectile;
+    if (p < 1 || p >= n)
+      return problem("catapult.projectile",
+                     "must name a node other than the root (the arm), in [1, " +
+                         std::to_string(n) + ")",
+                     p);
+    // the projectile: a plain box, grown once, held by a fixed joint
+    const NodeGene& pn = g_.nodes[p];
+    std::string path = node_path(p);
+    if (pn.shape != Shape::Box)
+      return problem(path + ".shape", "a catapult's projectile must be a box",
+                     std::string(to_string(pn.shape)));
+    if (pn.joint.type != JointType::Fixed)
+      return problem(path + ".joint.type", "a catapult's projectile is held by a fixed joint",
+                     std::string(to_string(pn.joint.type)));
+    auto none = [&](std::string_view field, std::size_t count) -> Problem {
+      if (count == 0) return std::nullopt;
+      return problem(path + "." + std::string(field),
+                     "a catapult's projectile has no " + std::string(field),
+                     static_cast<int>(count));
+    };
+    if (auto q = none("neurons", pn.neurons.size())) return q;
+    if (auto q = none("sensors", pn.sensors.size())) return q;
+    if (auto q = none("effectors", pn.effectors.size())) return q;
+    if (auto q = none("edges", pn.edges.size())) return q;
+    if (pn.recursive_limit != 1)
+      return problem(path + ".recursive_limit", "a catapult's projectile grows once (it must be 1)",
+                     pn.recursive_limit);
+    // edges: one from the arm to the projectile, none to the arm
+    std::string held;  // the path of the edge that holds the projectile
+    for (int i = 0; i < n; ++i) {
+      const auto& edges = g_.nodes[i].edges;
+      for (int k = 0; k < static_cast<int>(edges.size()); ++k) {
+        const EdgeGene& e = edges[k];
+        std::string epath = edge_path(i, k);
+        if (e.to == 0)
+          return problem(epath + ".to",
+                         "no edge may lead to a catapult's arm (node 0): the arm exists once", 0);
+        if (e.to != p) continue;
+        if (i != 0)
+          return problem(epath + ".to", "only the arm (node 0) may hold a catapult's projectile",
+                         p);
+        if (!held.empty())
+          return problem(epath + ".to",
+                         "a catapult's projectile is held by one edge only (already " + held + ")",
+                         p);
+        held = epath;
+        if (!e.reflect.empty())
+          return problem(epath + ".reflect", "the projectile's edge must not reflect (one projectile)",
+                         reflect_json(e.reflect));
+        if (e.terminal_only)
+          return problem(epath + ".terminal_only", "must be false on the projectile's edge", true);
+        if (e.scale != 1.0)
+          return problem(epath + ".scale",
+                         "must be 1 on the projectile's edge (its node gives the projectile's size)",
+                         e.scale);
+      }
+    }
+    if (held.empty())
+      return problem("catapult.projectile",
+                     "no edge of the arm (node 0) holds the projectile node", p);
+    int delay = c.release.delay_steps;
+    if (delay < kMinReleaseDelaySteps || delay > kMaxReleaseDelaySteps)
+      return problem("catapult.release.delay_steps",
+                     "must be in [" + std::to_string(kMinReleaseDelaySteps) + ", " +
+                         std::to_string(kMaxReleaseDelaySteps) + "]",
+                     delay);
+    return std::nullopt;
+  }
+
+  // A catapult's release inputs: sources of the arm (node 0) as a root
+  // neuron's, never through the projectile's edge.
+  Problem check_release() const {
+    const auto& inputs = g_.catapult->release.inputs;
+    int p = g_.catapult->projectile;
+    const auto& edges = g_.nodes[0].edges;
+    for (int k = 0; k < static_cast<int>(inputs.size()); ++k) {
+      const InputGene& in = inputs[k];
+      std::string path = "catapult.release.inputs[" + std::to_string(k) + "]";
+      if (in.place == SourcePlace::Parent)
+        return problem(path + ".from", "the release reads as from the arm, the root: it has no parent",
+                       std::string(to_string(in.place)));
+      if (in.place == SourcePlace::Child && in.edge >= 0 &&
+          in.edge < static_cast<int>(edges.size()) && edges[in.edge].to == p)
+        return problem(path + ".edge",
+                       "reads through the projectile's edge (the projectile has no neurons or "
+                       "sensors)",
+                       in.edge);
+      if (auto q = check_source(in, path, 0)) return q;
     }
     return std::nullopt;
   }
@@ -279,7 +386,9 @@ class Validator {
       return problem(path + ".size", "each dimension must be > 0", vec_json(node.size));
     if (!std::isfinite(node.density) || !(node.density > 0))
       return problem(path + ".density", "must be > 0", node.density);
-    if (auto p = check_joint(node.joint, path + ".joint")) return p;
+    // a catapult's projectile hangs by a fixed joint (checked by check_catapult)
+    bool projectile = g_.catapult && g_.catapult->projectile == i;
+    if (auto p = check_joint(node.joint, path + ".joint", projectile)) return p;
     if (node.recursive_limit < 1)
       return problem(path + ".recursive_limit", "must be >= 1", node.recursive_limit);
     // brain
@@ -299,9 +408,9 @@ class Validator {
     return std::nullopt;
   }
 
-  Problem check_joint(const JointGene& j, const std::string& path) const {
+  Problem check_joint(const JointGene& j, const std::string& path, bool allow_fixed) const {
     std::string type_name(to_string(j.type));
-    if (!contains(r_.joints, j.type))
+    if (!contains(r_.joints, j.type) && !(allow_fixed && j.type == JointType::Fixed))
       return problem(
           path + ".type",
           "joint type not allowed" + in_dialect(r_) + " (" +

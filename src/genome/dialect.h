@@ -51,10 +51,24 @@ const DialectRules& dialect_rules(Dialect d);
 /// Parses "sims1994", "miconi2006", "chaumont2007".
 std::optional<Dialect> parse_dialect(std::string_view name);
 
+/// Shortest and longest delay of a catapult's release mechanism (brain
+/// steps). The mechanism is a constant feeding a chaumont2007 `mem` neuron of
+/// n = delay - 1 (the constant itself takes one step), and mem's n is in
+/// [1, 1000].
+inline constexpr int kMinReleaseDelaySteps = 2;
+inline constexpr int kMaxReleaseDelaySteps = 1001;
+
 /// Checks a genome against its dialect and against itself (edge targets,
 /// source indices, neuron functions and parameter ranges, sensor and
 /// effector degrees of freedom). The error names the field as a path such as
-/// `nodes[2].joint.limits[0]` and the bad value.
+/// `nodes[2].joint.limits[0]` and the bad value. A catapult (Genome::catapult,
+/// chaumont2007 only) also needs: a projectile node other than the root, a
+/// box with a fixed joint (the one exception to the dialect's joint types),
+/// no neurons, sensors, effectors or edges and recursive limit 1; exactly one
+/// edge to it, from node 0 (the arm), unreflected, not terminal-only, scale 1;
+/// no edge to node 0; a delay in [kMinReleaseDelaySteps, kMaxReleaseDelaySteps]; release inputs
+/// that are valid sources of node 0 (no "parent"), none through the
+/// projectile's edge. The projectile counts towards the dialect's max_genes.
 Status validate(const Genome& g);
 
 }  // namespace bx

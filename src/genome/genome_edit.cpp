@@ -28,7 +28,8 @@ bool has_edge(const Genome& g, int p, int c) {
 }
 
 // Calls f(owner, inputs) for the inputs of every neuron and effector
-// (owner: node index) and of every global neuron (owner -1).
+// (owner: node index), of every global neuron (owner -1) and of a
+// catapult's release (read as from the arm, node 0).
 template <class G, class F>
 void for_each_inputs(G& g, F f) {
   for (int i = 0; i < static_cast<int>(g.nodes.size()); ++i) {
@@ -36,6 +37,7 @@ void for_each_inputs(G& g, F f) {
     for (auto& ef : g.nodes[i].effectors) f(i, ef.inputs);
   }
   for (auto& nr : g.global_neurons) f(-1, nr.inputs);
+  if (g.catapult && !g.nodes.empty()) f(0, g.catapult->release.inputs);
 }
 
 // whether input `in` of `owner` reads node `node` (global sources read no node)
@@ -67,16 +69,25 @@ void shift_index(int& index, int k) {
     --index;
 }
 
+// Marks child sources on edge k (edge -1) and renumbers those on later edges.
+void shift_child_sources(std::vector<InputGene>& inputs, int k) {
+  for (InputGene& in : inputs)
+    if (in.place == SourcePlace::Child) shift_index(in.edge, k);
+}
+
 // Within one node: drops edge k, marking child sources on it (edge -1) and
 // renumbering those on later edges. Sources are not repaired.
 void drop_edge_in_node(NodeGene& node, int k) {
-  auto fix = [k](std::vector<InputGene>& inputs) {
-    for (InputGene& in : inputs)
-      if (in.place == SourcePlace::Child) shift_index(in.edge, k);
-  };
-  for (auto& nr : node.neurons) fix(nr.inputs);
-  for (auto& ef : node.effectors) fix(ef.inputs);
+  for (auto& nr : node.neurons) shift_child_sources(nr.inputs, k);
+  for (auto& ef : node.effectors) shift_child_sources(ef.inputs, k);
   node.edges.erase(node.edges.begin() + k);
+}
+
+// Drops edge k of node n of g, as drop_edge_in_node; a catapult's release
+// reads as from node 0, so its child sources follow the root's edges.
+void drop_edge(Genome& g, int n, int k) {
+  if (n == 0 && g.catapult) shift_child_sources(g.catapult->release.inputs, k);
+  drop_edge_in_node(g.nodes[n], k);
 }
 
 // Removes the flagged nodes (never the root) without repairing sources;
@@ -88,7 +99,7 @@ std::vector<int> remove_flagged(Genome& g, const std::vector<bool>& gone) {
     if (gone[i]) continue;
     auto& edges = g.nodes[i].edges;
     for (int k = static_cast<int>(edges.size()) - 1; k >= 0; --k)
-      if (gone[edges[k].to]) drop_edge_in_node(g.nodes[i], k);
+      if (gone[edges[k].to]) drop_edge(g, i, k);
   }
   std::vector<int> map(n, -1);
   std::vector<NodeGene> kept;
@@ -352,7 +363,7 @@ void remove_sensor(Genome& g, int node, int k, SourceFix fix, Rng* rng) {
 void remove_edge(Genome& g, int node, int k, SourceFix fix, Rng* rng) {
   assert(node >= 0 && node < n_nodes(g) && k >= 0 &&
          k < static_cast<int>(g.nodes[node].edges.size()));
-  drop_edge_in_node(g.nodes[node], k);
+  drop_edge(g, node, k);
   repair_sources(g, fix, rng);
 }
 
@@ -360,7 +371,7 @@ void move_edge(Genome& g, int from, int k, int to, SourceFix fix, Rng* rng) {
   assert(from >= 0 && from < n_nodes(g) && to >= 0 && to < n_nodes(g) && k >= 0 &&
          k < static_cast<int>(g.nodes[from].edges.size()));
   EdgeGene e = g.nodes[from].edges[k];
-  drop_edge_in_node(g.nodes[from], k);
+  drop_edge(g, from, k);
   g.nodes[to].edges.push_back(e);
   repair_sources(g, fix, rng);
 }

@@ -2,6 +2,8 @@
 // sensor, edge or node renumbers every source and edge target that pointed
 // past it, and fixes the ones that pointed at it. The operators
 // (operators.h) are built from these; docs/operators.md lists the rules.
+// A catapult's release inputs (Genome::catapult) count as inputs of node 0,
+// the arm: every edit below keeps them pointing at the same sources too.
 #pragma once
 
 #include <vector>

@@ -288,6 +288,21 @@ class Reader {
     return n;
   }
 
+  // {"projectile": int, "release": {"delay_steps": int, "inputs": [source...]}}
+  CatapultGene catapult(const json& j, const std::string& path) const {
+    expect_object(j, path, {"projectile", "release"});
+    CatapultGene c;
+    c.projectile = integer(require(j, path, "projectile"), field_path(path, "projectile"));
+    if (const json* v = find(j, "release")) {
+      std::string rpath = field_path(path, "release");
+      expect_object(*v, rpath, {"delay_steps", "inputs"});
+      if (const json* d = find(*v, "delay_steps"))
+        c.release.delay_steps = integer(*d, field_path(rpath, "delay_steps"));
+      c.release.inputs = list(*v, rpath, "inputs", &Reader::source);
+    }
+    return c;
+  }
+
  private:
   template <class T>
   std::vector<T> list(const json& obj, const std::string& path, std::string_view key,
@@ -417,7 +432,7 @@ Genome parse_genome(const json& j) {
          "unsupported version " + std::to_string(ver) + " (this build reads " +
              std::to_string(kGenomeVersion) + ")",
          version);
-  expect_object(j, "", {"format", "version", "dialect", "nodes", "global_neurons"});
+  expect_object(j, "", {"format", "version", "dialect", "nodes", "global_neurons", "catapult"});
 
   Genome g;
   g.dialect = name_of(require(j, "", "dialect"), "dialect", "dialect", kDialects);
@@ -430,6 +445,7 @@ Genome parse_genome(const json& j) {
     for (std::size_t i = 0; i < v->size(); ++i)
       g.global_neurons.push_back(r.neuron((*v)[i], index_path("global_neurons", i)));
   }
+  if (const json* v = find(j, "catapult")) g.catapult = r.catapult(*v, "catapult");
   return g;
 }
 
@@ -608,6 +624,16 @@ J genome_json(const Genome& g) {
   J globals = J::array();
   for (const NeuronGene& n : g.global_neurons) globals.push_back(neuron_json<J>(n, set));
   o["global_neurons"] = globals;
+  // catapults only (chaumont2007 section 4)
+  if (g.catapult) {
+    J release = J::object();
+    release["delay_steps"] = g.catapult->release.delay_steps;
+    release["inputs"] = inputs_json<J>(g.catapult->release.inputs);
+    J c = J::object();
+    c["projectile"] = g.catapult->projectile;
+    c["release"] = release;
+    o["catapult"] = c;
+  }
   return o;
 }
 

@@ -8,6 +8,7 @@
 #include "genome/dialect.h"
 #include "genome/genome_edit.h"
 #include "genome/operators.h"
+#include "genome/operators_detail.h"
 
 namespace bx {
 
@@ -667,6 +668,11 @@ struct GraphMutator {
 }  // namespace
 
 void mutate(Genome& g, const OperatorDef& def, double rate, Rng& rng) {
+  if (is_catapult(g)) return detail::mutate_catapult(g, def, rate, rng);
+  detail::mutate_plain(g, def, rate, rng);
+}
+
+void detail::mutate_plain(Genome& g, const OperatorDef& def, double rate, Rng& rng) {
   if (g.nodes.empty()) return;
   Genome before = g;
   if (g.dialect == Dialect::Miconi2006)

@@ -228,28 +228,40 @@ struct OperatorDef {
 OperatorDef default_operators(Dialect d);
 
 /// A random genome of `d` (`def.dialect` is ignored in favour of `d`).
+/// With def.catapult.enabled and `d` chaumont2007, a random catapult
+/// (random_catapult()); other dialects ignore the flag.
 Genome random_genome(Dialect d, const OperatorDef& def, Rng& rng);
 
 /// Mutates `g` in place. `rate` is the per-parameter probability
 /// (miconi2006: P_mut for every step; graph dialects: every numeric field;
 /// their structural mutations use def.structure). Rate 0 leaves a
-/// miconi2006 genome unchanged.
+/// miconi2006 genome unchanged. A catapult stays one: its arm and body
+/// mutate as a genome of max_genes - 1; its release inputs, the projectile's
+/// attachment and (with def.catapult.mutate_projectile) the projectile's
+/// size at `rate`; never the release delay.
 void mutate(Genome& g, const OperatorDef& def, double rate, Rng& rng);
 
 /// Crossover (miconi2006 5.1, Sims 1994): the node lists of both parents
 /// aligned, the child takes nodes [0, cut) from `a` and [cut, end) from `b`
 /// for a random cut, then is repaired. Parents must share a dialect.
+/// Catapults (chaumont2007 Fig. 6): the bodies are crossed (the projectile
+/// left out of the rows); the child gets the projectile, its edge and the
+/// release mechanism of `a` (of `b` if only `b` is a catapult).
 Genome crossover(const Genome& a, const Genome& b, Rng& rng);
 
 /// Crossover at a given cut (nodes [0, cut) from `a`, [cut, end) from `b`;
 /// cut is clamped to [1, max(sizes)]), as crossover() after drawing the cut.
-/// For tests and callers that choose the cut themselves.
+/// For tests and callers that choose the cut themselves. For catapults the
+/// cut indexes the bodies' rows (each parent without its projectile).
 Genome crossover_at(const Genome& a, const Genome& b, int cut, const OperatorDef& def, Rng& rng);
 
 /// Grafting: the trunk comes from `trunk`, a new branch from `branch`
 /// (miconi2006 5.1: a branch of the trunk replaced by a branch of the other
 /// parent; Sims 1994: an edge of the trunk pointed at a copy of a subgraph of
-/// the other parent). The root is the trunk's.
+/// the other parent). The root is the trunk's. Catapults (chaumont2007
+/// Fig. 5): the arm, projectile and release mechanism are the trunk's (the
+/// branch's if only the branch is a catapult); the branch is a subgraph of
+/// the other body, never its arm or projectile.
 Genome graft(const Genome& trunk, const Genome& branch, Rng& rng);
 
 /// Crossover and graft with explicit constants (def.max_genes, the lattice,
@@ -311,7 +323,29 @@ std::vector<InputGene> random_inputs(const Genome& g, int owner, int count, cons
 /// joint-angle sensor and one actuator (the root none), hinges on y or z,
 /// angles on the lattice; graph dialects: allowed shapes, joints, sensors;
 /// dofs, arities and parameters within range; canonical unused fields;
-/// every source existing (reassigned at random otherwise).
+/// every source existing (reassigned at random otherwise). A catapult keeps
+/// its projectile (moved to the last node, its edge the arm's last) and its
+/// mechanism; edges to the arm are removed.
 void normalize(Genome& g, const OperatorDef& def, Rng& rng);
+
+// ---------------------------------------------------------------- catapults
+// chaumont2007 section 4 (docs/operators.md, "Catapults"). mutate(),
+// crossover(), graft() and normalize() dispatch to catapult versions when a
+// genome given is a catapult; the others never see the projectile.
+
+/// Whether `g` is a catapult: Genome::catapult set, naming a node other
+/// than the root as its projectile.
+bool is_catapult(const Genome& g);
+
+/// A random catapult (chaumont2007 4.1, Fig. 3), in canonical form: a random
+/// chaumont2007 genome of at most max_genes - 1 genes whose root is the arm
+/// (edges back to the root removed), its release fed by a number of random
+/// sources of the arm in def.catapult.release_inputs_at_creation and delayed
+/// def.catapult.release_delay_steps; then, as the last node, the projectile
+/// (a box of def.catapult.projectile_size and projectile_density on a fixed
+/// joint), held by the arm's last edge, placed as random_edge() places a
+/// limb (clear of the arm's other children where it can; scale 1, no
+/// reflection, not terminal-only).
+Genome random_catapult(const OperatorDef& def, Rng& rng);
 
 }  // namespace bx

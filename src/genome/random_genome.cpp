@@ -8,6 +8,7 @@
 #include "genome/dialect.h"
 #include "genome/genome_edit.h"
 #include "genome/operators.h"
+#include "genome/operators_detail.h"
 
 namespace bx {
 
@@ -594,6 +595,11 @@ void wire_node(Genome& g, int n, const OperatorDef& def, Rng& rng) {
 // ---------------------------------------------------------------- normalize
 
 void normalize(Genome& g, const OperatorDef& def, Rng& rng) {
+  if (is_catapult(g)) return detail::normalize_catapult(g, def, rng);
+  detail::normalize_plain(g, def, rng);
+}
+
+void detail::normalize_plain(Genome& g, const OperatorDef& def, Rng& rng) {
   const DialectRules& r = dialect_rules(g.dialect);
   remove_unreachable(g, SourceFix::Reassign, &rng);
   auto allowed_sensor = [&r](SensorType t) {
@@ -737,7 +743,13 @@ void normalize(Genome& g, const OperatorDef& def, Rng& rng) {
 
 // ---------------------------------------------------------------- random genome
 
-Genome random_genome(Dialect d, const OperatorDef& def_in, Rng& rng) {
+Genome random_genome(Dialect d, const OperatorDef& def, Rng& rng) {
+  // catapults are chaumont2007's (section 4); other dialects ignore the flag
+  if (def.catapult.enabled && d == Dialect::Chaumont2007) return random_catapult(def, rng);
+  return detail::random_genome_plain(d, def, rng);
+}
+
+Genome detail::random_genome_plain(Dialect d, const OperatorDef& def_in, Rng& rng) {
   OperatorDef def = def_in;
   def.dialect = d;
   const DialectRules& r = dialect_rules(d);
