@@ -1,17 +1,20 @@
-// The viewer: one replay at a time on the stage, its time, and every panel
-// kept in step with it. `renderFrame(t)` draws one moment deterministically
-// (the follow camera's standard view), for videos and tests.
+// The viewer: one replay at a time on the stage (with a catapult's flight),
+// its time, and every panel kept in step with it. `renderFrame(t)` draws one
+// moment deterministically (the follow camera's standard view), for videos
+// and tests.
 import { Vector2 } from 'three';
 import { createStage } from './stage.js';
 import { createBodies } from './bodies.js';
 import { createTrail } from './trail_view.js';
+import { createFlight } from './flight_view.js';
+import { centreAt, throwOf, throwStatus } from './flight.js';
 import { createCameraRig } from './camera_rig.js';
 import { createSparklines } from './sparklines.js';
 import { createRunPanel } from './run_panel.js';
 import { createPicker } from './picker.js';
 import { showInfo } from './info_panel.js';
 import { createPlayer } from './player.js';
-import { creatureRadius, followTarget } from './follow.js';
+import { creatureRadius } from './follow.js';
 import { comAt, distanceAt, duration } from './timeline.js';
 import { fitness, metres, seconds } from './format.js';
 
@@ -22,8 +25,8 @@ import { fitness, metres, seconds } from './format.js';
 export function createViewer(ui, data) {
   const stage = createStage(ui.canvas);
   const rig = createCameraRig(ui.canvas);
-  const s = { index: -1, entry: null, t: 0, T: 0, playing: false, speed: 1, joints: false, trail: true, radius: 1 };
-  let bodies = null, trail = null, sparks = null, renderMode = false;
+  const s = { index: -1, entry: null, t: 0, T: 0, playing: false, speed: 1, joints: false, trail: true, flight: true, radius: 1, throw: null };
+  let bodies = null, trail = null, flight = null, sparks = null, renderMode = false;
   // the scene is drawn only when something changed: software GL is slow, and
   // a paused page should cost nothing
   let dirty = true;
@@ -36,10 +39,18 @@ export function createViewer(ui, data) {
     togglePlay: () => setPlaying(!s.playing),
     seek: (t) => { setPlaying(false); setTime(t); },
     speed: (x) => (s.speed = x),
-    camera: () => { rig.setMode(rig.mode === 'follow' ? 'orbit' : 'follow'); setTime(s.t); },
+    camera: () => { rig.setMode(rig.next); setTime(s.t); },
     joints: (on) => { s.joints = on; bodies.showJoints(on); dirty = true; },
     trail: (on) => { s.trail = on; trail.object.visible = on; dirty = true; },
+    flight: (on) => showFlight(on),
   });
+
+  function showFlight(on) {
+    s.flight = on;
+    if (flight) flight.object.visible = on;
+    player.setFlight(on);
+    dirty = true;
+  }
 
   /** Shows replay i from its start. */
   function load(i) {
@@ -49,16 +60,29 @@ export function createViewer(ui, data) {
       bodies.dispose();
       trail.dispose();
     }
+    if (flight) {
+      stage.scene.remove(flight.object);
+      flight.dispose();
+      flight = null;
+    }
     s.index = i;
     s.entry = entry;
     s.T = duration(entry.replay.frames);
     s.radius = creatureRadius(entry.replay);
+    s.throw = throwOf(entry.replay);
     bodies = createBodies(entry.replay);
     bodies.showJoints(s.joints);
     trail = createTrail(entry.replay.frames, s.radius);
     trail.object.visible = s.trail;
     stage.scene.add(bodies.group, trail.object);
-    rig.reset(entry.replay.frames, s.radius);
+    // a catapult: its projectile's flight, the release on the scrub bar
+    if (s.throw) {
+      flight = createFlight(entry.replay, s.radius);
+      flight.object.visible = s.flight;
+      stage.scene.add(flight.object);
+    }
+    player.setThrow(s.throw !== null, s.throw?.release ?? null, s.T);
+    rig.reset(entry.replay.frames, s.radius, s.throw ? s.throw.projectile : -1);
     showInfo(ui.info, entry);
     sparks = createSparklines(ui.neurons, entry.replay);
     picker.setCurrent(i);
@@ -72,11 +96,14 @@ export function createViewer(ui, data) {
     s.t = Math.min(Math.max(t, 0), s.T);
     bodies.setTime(s.t);
     trail.setTime(s.t);
+    flight?.setTime(s.t);
     rig.track(s.t);
-    stage.focus(followTarget(frames, s.t), s.radius);
+    stage.focus(rig.targetAt(s.t), s.radius);
     sparks.setTime(s.t);
     const res = s.entry.replay.result ?? {};
-    ui.hud.textContent = `${s.entry.label}   t ${seconds(s.t)}   distance ${metres(distanceAt(frames, s.t))}` +
+    // how far: the centre of mass's, or a catapult's projectile's since its release
+    const far = s.throw ? throwStatus(frames, s.throw, s.t) : `distance ${metres(distanceAt(frames, s.t))}`;
+    ui.hud.textContent = `${s.entry.label}   t ${seconds(s.t)}   ${far}` +
       (typeof res.fitness === 'number' ? `   fitness ${fitness(res.fitness)}` : '');
     player.show({ t: s.t, duration: s.T, playing: s.playing, speed: s.speed, mode: rig.mode });
     dirty = true;
@@ -123,7 +150,7 @@ export function createViewer(ui, data) {
     requestAnimationFrame(tick);
   }
 
-  // keys: space plays, arrows step a frame, c camera, j joints, t trail
+  // keys: space plays, arrows step a frame, c camera, j joints, t trail, f a catapult's flight
   window.addEventListener('keydown', (ev) => {
     // not while the user types or picks from a list
     const t = ev.target;
@@ -132,9 +159,10 @@ export function createViewer(ui, data) {
     if (ev.key === ' ') setPlaying(!s.playing);
     else if (ev.key === 'ArrowRight') { setPlaying(false); setTime(s.t + dt); }
     else if (ev.key === 'ArrowLeft') { setPlaying(false); setTime(s.t - dt); }
-    else if (ev.key === 'c') { rig.setMode(rig.mode === 'follow' ? 'orbit' : 'follow'); setTime(s.t); }
+    else if (ev.key === 'c') { rig.setMode(rig.next); setTime(s.t); }
     else if (ev.key === 'j') { s.joints = !s.joints; bodies.showJoints(s.joints); player.setJoints(s.joints); dirty = true; }
     else if (ev.key === 't') { s.trail = !s.trail; trail.object.visible = s.trail; player.setTrail(s.trail); dirty = true; }
+    else if (ev.key === 'f' && flight) showFlight(!s.flight);
     else return;
     ev.preventDefault();
   });
@@ -142,12 +170,19 @@ export function createViewer(ui, data) {
   load(0);
   requestAnimationFrame(tick);
 
-  /** The present moment: time, replay, root part's and centre of mass's positions. */
+  /**
+   * The present moment: time, replay, root part's and centre of mass's
+   * positions; for a catapult, the projectile's centre and whether its
+   * flight is drawn.
+   */
   function state() {
     const p = bodies.parts[0].position;
+    const frames = s.entry.replay.frames;
     return {
       t: s.t, replayIndex: s.index, playing: s.playing, camera: rig.mode,
-      root: [p.x, p.y, p.z], com: comAt(s.entry.replay.frames, s.t), sparklines: sparks.rows,
+      root: [p.x, p.y, p.z], com: comAt(frames, s.t), sparklines: sparks.rows,
+      projectile: s.throw ? centreAt(frames, s.throw.projectile, s.t) : null,
+      flight: flight ? flight.drawn && s.flight : false,
     };
   }
 
@@ -170,11 +205,11 @@ export function createViewer(ui, data) {
     renderFrame(t) {
       setPlaying(false);
       setTime(t);
-      if (rig.mode === 'follow') rig.standardFollow(s.t);
+      if (rig.mode !== 'orbit') rig.standardFollow(s.t);
       draw();
       return state();
     },
-    /** Sets the camera: "follow" or "orbit". */
+    /** Sets the camera: "follow", "projectile" (a catapult's) or "orbit". */
     setCamera(mode) { rig.setMode(mode); setTime(s.t); draw(); },
   };
 }

@@ -1,12 +1,13 @@
 // Meshes for the creature's parts and the scene's props, posed per moment.
-// Each part is its true shape, coloured by its gene; joint axes hang on the
-// child part (the replay gives anchor and axes in the child's frame), so they
+// Each part is its true shape, coloured by its gene (a catapult's projectile
+// in its own colour, whatever its gene); joint axes hang on the child part (the replay gives anchor and axes in the child's frame), so they
 // move with it.
 import {
   ArrowHelper, EdgesGeometry, Group, LineBasicMaterial, LineSegments, Mesh, MeshBasicMaterial,
   MeshStandardMaterial, SphereGeometry, Vector3,
 } from 'three';
-import { geneColor } from './palette.js';
+import { geneColor, PROJECTILE_COLOR } from './palette.js';
+import { throwOf } from './flight.js';
 import { shapeGeometry } from './shapes.js';
 import { partPoseAt } from './timeline.js';
 import { propPoseAt, sceneProps } from './props.js';
@@ -73,8 +74,10 @@ function jointMarker(joint, partSize) {
 export function createBodies(replay) {
   const group = new Group();
   // parts, each with the markers of the joints that attach it to its parent
-  const parts = replay.parts.map((p) => {
-    const mesh = solid(p.shape, p.size, geneColor(p.gene, p.mirrored));
+  const projectile = throwOf(replay)?.projectile ?? -1;
+  const parts = replay.parts.map((p, k) => {
+    const color = k === projectile ? PROJECTILE_COLOR : geneColor(p.gene, p.mirrored);
+    const mesh = solid(p.shape, p.size, color);
     group.add(mesh);
     return mesh;
   });

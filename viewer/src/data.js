@@ -109,8 +109,31 @@ export function parseReplay(r, path = 'replay') {
       f.props.forEach((p, i) => numbers(p, 7, `${at}.props[${i}]`));
     }
   });
+  if (r.throw !== undefined && r.throw !== null) parseThrow(r.throw, parts.length, `${path}.throw`);
   obj(r.result, `${path}.result`);
+  parseThrowResult(r.result, `${path}.result`);
   return r;
+}
+
+/**
+ * Checks a catapult's throw (optional in a replay): { projectile: part index,
+ * release_t: time (s) >= 0 or null when it never released, target: [x, y, z]
+ * or null }.
+ */
+export function parseThrow(th, nParts, path = 'throw') {
+  obj(th, path);
+  if (int(th.projectile, `${path}.projectile`, 0) >= nParts)
+    fail(`${path}.projectile`, `no such part (the creature has ${nParts})`, th.projectile);
+  if (th.release_t !== null && !(isNum(th.release_t) && th.release_t >= 0))
+    fail(`${path}.release_t`, 'expected a time >= 0 or null', th.release_t);
+  if (th.target !== null) numbers(th.target, 3, `${path}.target`);
+  return th;
+}
+
+// a throw's results, when present: D_p a number, D_t a number or null
+function parseThrowResult(res, path) {
+  if (res.throw_distance !== undefined) num(res.throw_distance, `${path}.throw_distance`);
+  if (res.target_miss !== undefined && res.target_miss !== null) num(res.target_miss, `${path}.target_miss`);
 }
 
 /** Checks a run's curves: generations with best/mean/median, and the best of each. */

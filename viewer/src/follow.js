@@ -1,16 +1,39 @@
-// Where the follow camera looks: the centre of mass smoothed over a second,
-// so the camera glides instead of shaking with every step. A pure function of
-// time, so scrubbing and rendering a video frame by frame give the same view.
-import { comAt } from './timeline.js';
+// Where the follow camera looks: the centre of mass (or a catapult's
+// projectile) smoothed over a second, so the camera glides instead of shaking
+// with every step. A pure function of time, so scrubbing and rendering a
+// video frame by frame give the same view.
+import { comAt, partPoseAt } from './timeline.js';
 
-/** Smoothed look-at point at time t: mean of the centre of mass over [t - w/2, t + w/2]. */
-export function followTarget(frames, t, window = 1.0, samples = 11) {
+/** Mean of the point `at(t)` over [t - w/2, t + w/2], from `samples` samples. */
+export function smoothed(at, t, window = 1.0, samples = 11) {
   const sum = [0, 0, 0];
   for (let k = 0; k < samples; ++k) {
-    const c = comAt(frames, t - window / 2 + (window * k) / (samples - 1));
+    const c = at(t - window / 2 + (window * k) / (samples - 1));
     sum[0] += c[0]; sum[1] += c[1]; sum[2] += c[2];
   }
   return sum.map((v) => v / samples);
+}
+
+/** The camera modes, in the order the camera button goes through them. */
+export const CAMERA_MODES = ['follow', 'projectile', 'orbit'];
+
+/**
+ * The camera mode after `mode`, skipping "projectile" for a creature without
+ * one (where it means "follow").
+ */
+export function nextMode(mode, hasProjectile) {
+  const modes = hasProjectile ? CAMERA_MODES : CAMERA_MODES.filter((m) => m !== 'projectile');
+  return modes[(Math.max(modes.indexOf(mode), 0) + 1) % modes.length];
+}
+
+/** Smoothed look-at point at time t: mean of the centre of mass over [t - w/2, t + w/2]. */
+export function followTarget(frames, t, window = 1.0, samples = 11) {
+  return smoothed((u) => comAt(frames, u), t, window, samples);
+}
+
+/** Smoothed look-at point following part `k` (a projectile) instead. */
+export function partTarget(frames, k, t, window = 1.0, samples = 11) {
+  return smoothed((u) => partPoseAt(frames, k, u), t, window, samples);
 }
 
 /**
@@ -29,12 +52,19 @@ export function creatureRadius(replay) {
   return Math.max(r, 0.1);
 }
 
-/** Bounds of the centre of mass's path on the ground: {min, max, centre, span}. */
-export function pathBounds(frames) {
+/**
+ * Bounds of the centre of mass's path on the ground: {min, max, centre, span};
+ * with `k` >= 0, of part k's path (a projectile's) as well.
+ */
+export function pathBounds(frames, k = -1) {
   const min = [Infinity, Infinity], max = [-Infinity, -Infinity];
+  const add = (p) => {
+    min[0] = Math.min(min[0], p[0]); max[0] = Math.max(max[0], p[0]);
+    min[1] = Math.min(min[1], p[1]); max[1] = Math.max(max[1], p[1]);
+  };
   for (const f of frames) {
-    min[0] = Math.min(min[0], f.com[0]); max[0] = Math.max(max[0], f.com[0]);
-    min[1] = Math.min(min[1], f.com[1]); max[1] = Math.max(max[1], f.com[1]);
+    add(f.com);
+    if (k >= 0) add(f.poses[k]);
   }
   return {
     min, max,
@@ -47,10 +77,12 @@ export function pathBounds(frames) {
  * Direction from the look-at point towards the camera (unit xyz): on the
  * right of the creature's overall heading, turned a little towards its front
  * and raised, so it walks left to right across the screen. A creature that
- * barely moves is seen from -y.
+ * barely moves is seen from -y. With `k` >= 0 the heading is part k's (a
+ * catapult's projectile: it flies across the screen).
  */
-export function viewDirection(frames, ahead = 0.5, elevation = 0.42) {
-  const a = frames[0].com, b = frames[frames.length - 1].com;
+export function viewDirection(frames, ahead = 0.5, elevation = 0.42, k = -1) {
+  const at = (f) => (k >= 0 ? f.poses[k] : f.com);
+  const a = at(frames[0]), b = at(frames[frames.length - 1]);
   let hx = b[0] - a[0], hy = b[1] - a[1];
   const n = Math.hypot(hx, hy);
   if (n < 0.05) {

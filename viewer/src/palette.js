@@ -28,6 +28,16 @@ export function geneColor(gene, mirrored = false) {
   return mirrored ? mix(c, 0xffffff, 0.35) : c;
 }
 
+/**
+ * Colour of a catapult's projectile: a warm yellow far from every gene's
+ * colour (the nearest, gene 1's orange, is on most bodies), so the
+ * projectile stands out from the body.
+ */
+export const PROJECTILE_COLOR = 0xffc61a;
+
+/** Colour of the projectile's flight path: a deeper shade of its yellow, to read on the grey ground. */
+export const FLIGHT_COLOR = 0xe8a100;
+
 /** A colour as CSS text, "#rrggbb". */
 export function cssColor(c) {
   return '#' + c.toString(16).padStart(6, '0');

@@ -1,8 +1,8 @@
 // Checking the page's data: good data passes, bad data names the field.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { parsePageData, parseReplay, parseRun } from '../src/data.js';
-import { makeReplay, makeRun } from './fixture.mjs';
+import { parsePageData, parseReplay, parseRun, parseThrow } from '../src/data.js';
+import { makeCatapult, makeReplay, makeRun } from './fixture.mjs';
 
 test('a well-formed replay passes unchanged', () => {
   const r = makeReplay();
@@ -50,4 +50,43 @@ test('bad page data is refused with the place of the fault', () => {
   const run = makeRun();
   run.generations[3].mean = null;
   assert.throws(() => parseRun(run, 3), { message: /^run\.generations\[3\]\.mean: expected a number, got null$/ });
+});
+
+test('a catapult replay passes, with or without a target or a release', () => {
+  for (const opts of [{}, { target: [2, 0, 0.075] }, { release: null }, { release: 0 }]) {
+    const r = makeCatapult(opts);
+    assert.equal(parseReplay(r), r);
+  }
+  // other replays have no throw
+  const r = makeReplay();
+  r.throw = null;
+  assert.equal(parseReplay(r), r);
+});
+
+test('a bad throw names its field', () => {
+  const cases = [
+    [(r) => (r.throw = 3), /^replay\.throw: expected an object, got 3$/],
+    [(r) => (r.throw.projectile = 3), /^replay\.throw\.projectile: no such part \(the creature has 3\), got 3$/],
+    [(r) => (r.throw.projectile = -1), /^replay\.throw\.projectile: expected an integer >= 0, got -1$/],
+    [(r) => (r.throw.projectile = '2'), /^replay\.throw\.projectile: expected an integer >= 0, got "2"$/],
+    [(r) => (r.throw.release_t = -0.5), /^replay\.throw\.release_t: expected a time >= 0 or null, got -0\.5$/],
+    [(r) => (r.throw.release_t = '0.5'), /^replay\.throw\.release_t: expected a time >= 0 or null, got "0\.5"$/],
+    [(r) => delete r.throw.release_t, /^replay\.throw\.release_t: expected a time >= 0 or null, got nothing$/],
+    [(r) => (r.throw.target = [1, 2]), /^replay\.throw\.target: expected 3 numbers, got \[1,2\]$/],
+    [(r) => delete r.throw.target, /^replay\.throw\.target: expected 3 numbers, got nothing$/],
+    [(r) => (r.result.throw_distance = null), /^replay\.result\.throw_distance: expected a number, got null$/],
+    [(r) => (r.result.target_miss = 'far'), /^replay\.result\.target_miss: expected a number, got "far"$/],
+  ];
+  for (const [spoil, message] of cases) {
+    const r = makeCatapult();
+    spoil(r);
+    assert.throws(() => parseReplay(r), { message });
+  }
+  // on its own, with its own path
+  assert.throws(() => parseThrow({ projectile: 0, release_t: Infinity, target: null }, 1), { message: /^throw\.release_t: / });
+  // a run page names the replay
+  const bad = makeCatapult();
+  bad.throw.projectile = 9;
+  assert.throws(() => parsePageData({ replays: [{ label: 'a', replay: makeCatapult() }, { label: 'b', replay: bad }] }),
+    { message: /^replays\[1\]\.replay\.throw\.projectile: no such part/ });
 });

@@ -1,6 +1,7 @@
-// A small synthetic replay for the tests: two boxes joined by a hinge, moving
+// Small synthetic replays for the tests: two boxes joined by a hinge, moving
 // along +x at 1 m/s for 2 s at 10 frames per second, the second part turning
-// about z at 45 degrees per second, one neuron following sin(t).
+// about z at 45 degrees per second, one neuron following sin(t); and a
+// catapult throwing its projectile (makeCatapult).
 
 /** Quaternion [w, x, y, z] for `angle` radians about z. */
 export function aboutZ(angle) {
@@ -53,5 +54,69 @@ export function makeRun() {
       { gen: 4, replay_index: 2 },
       { gen: 2, replay_index: 1 },
     ],
+  };
+}
+
+/**
+ * Centre of the fixture catapult's projectile at time t: carried along +x at
+ * 2 m/s by the arm, then from the release at 0.5 s thrown up at 1.5 m/s
+ * (g = 10) until it lands at z = 0.075, still moving along +x.
+ */
+export function projectileAt(t) {
+  const u = Math.max(t - 0.5, 0);
+  return [2 * t - 0.6, 0, Math.max(0.5 + 1.5 * u - 5 * u * u, 0.075)];
+}
+
+/**
+ * A fresh catapult replay: an arm (the root) on a base, holding the
+ * projectile (part 2), 1 s at 10 frames per second, released at 0.5 s;
+ * `target` adds a target point (and its prop), `release` changes release_t.
+ */
+export function makeCatapult({ target = null, release = 0.5 } = {}) {
+  const frames = [];
+  for (let k = 0; k <= 10; ++k) {
+    const t = k * 0.1;
+    frames.push({
+      t,
+      poses: [
+        [0.4, 0, 0.5, 1, 0, 0, 0],
+        [0, 0, 0.2, 1, 0, 0, 0],
+        [...projectileAt(t), 1, 0, 0, 0],
+      ],
+      com: [0.1, 0, 0.3],
+      neurons: [],
+      effectors: [],
+    });
+  }
+  const props = target
+    ? [{ name: 'target', shape: 'sphere', size: [0.12, 0.12, 0.12], color: '#d6336c', opacity: 0.8, pose: [...target, 1, 0, 0, 0] }]
+    : [];
+  const thrown = Math.abs(projectileAt(1)[0] - projectileAt(0.5)[0]);
+  return {
+    format: 'bestiary-replay',
+    version: 1,
+    bestiary: 'test',
+    genome: 'catapult.json',
+    dialect: 'chaumont2007',
+    seed: 1,
+    dt: 0.01,
+    scene: { ground: { type: 'plane', z: 0, friction: 1 }, props },
+    throw: { projectile: 2, release_t: release, target },
+    parts: [
+      { shape: 'box', size: [0.8, 0.1, 0.05], mass: 4, gene: 0, parent: -1, mirrored: false },
+      { shape: 'box', size: [0.8, 0.6, 0.12], mass: 57.6, gene: 1, parent: 0, mirrored: false },
+      { shape: 'box', size: [0.15, 0.15, 0.15], mass: 3.375, gene: 2, parent: 0, mirrored: false },
+    ],
+    joints: [
+      { type: 'hinge', parent: 0, child: 1, anchor: [0.4, 0, 0], axis1: [0, 1, 0], axis2: [0, 0, 1] },
+      { type: 'fixed', parent: 0, child: 2, anchor: [0, 0, -0.05], axis1: [1, 0, 0], axis2: [0, 1, 0] },
+    ],
+    neurons: [],
+    effectors: [],
+    frames,
+    result: {
+      fitness: thrown, distance: thrown, failed: false, failure: '', seconds: 1, steps: 100, warnings: [],
+      throw_distance: thrown, target_miss: target ? 0.4 : null,
+    },
   };
 }

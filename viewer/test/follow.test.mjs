@@ -1,8 +1,8 @@
 // The follow camera's target and framing.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { creatureRadius, followTarget, pathBounds, viewDirection } from '../src/follow.js';
-import { makeReplay } from './fixture.mjs';
+import { creatureRadius, followTarget, nextMode, partTarget, pathBounds, viewDirection } from '../src/follow.js';
+import { makeCatapult, makeReplay } from './fixture.mjs';
 
 const near = (a, b, eps = 1e-6) => assert.ok(Math.abs(a - b) < eps, `${a} != ${b}`);
 
@@ -45,4 +45,36 @@ test('the camera looks from the right of the heading, a little ahead and above',
   still.frames.forEach((f) => (f.com = [0, 0, 0.1]));
   const s = viewDirection(still.frames);
   assert.ok(s[1] < 0);
+});
+
+test("a catapult's camera can follow its projectile, and orbit over its flight", () => {
+  const frames = makeCatapult().frames;
+  // the projectile moves along x at 2 m/s throughout: its smoothed x is its x
+  near(partTarget(frames, 2, 0.5)[0], 0.4);
+  near(followTarget(frames, 0.5)[0], 0.1); // the centre of mass stays put
+  // the orbit view's bounds take in the projectile's path
+  near(pathBounds(frames).span, 0);
+  const b = pathBounds(frames, 2);
+  near(b.min[0], -0.6);
+  near(b.max[0], 1.4);
+});
+
+test('the camera button goes follow, projectile (catapults only), orbit', () => {
+  assert.equal(nextMode('follow', true), 'projectile');
+  assert.equal(nextMode('projectile', true), 'orbit');
+  assert.equal(nextMode('orbit', true), 'follow');
+  assert.equal(nextMode('follow', false), 'orbit');
+  assert.equal(nextMode('orbit', false), 'follow');
+  assert.equal(nextMode('projectile', false), 'orbit');
+});
+
+test("a catapult is seen across its throw's direction", () => {
+  const r = makeCatapult();
+  // the centre of mass stays put: seen from -y; the projectile flies along +x: also from -y, turned ahead
+  const d = viewDirection(r.frames, 0.5, 0.42, 2);
+  assert.ok(d[1] < 0 && d[0] > 0, JSON.stringify(d));
+  // thrown along +y instead: seen from +x
+  r.frames.forEach((f) => (f.poses[2] = [0, f.poses[2][0], f.poses[2][2], 1, 0, 0, 0]));
+  const e = viewDirection(r.frames, 0.5, 0.42, 2);
+  assert.ok(e[0] > 0.5 && e[1] > 0, JSON.stringify(e));
 });

@@ -1,0 +1,34 @@
+// What the side panel says about a creature, and about a catapult's throw.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { infoRows } from '../src/info_panel.js';
+import { makeCatapult, makeReplay } from './fixture.mjs';
+
+const rows = (replay) => Object.fromEntries(infoRows({ label: 'x', replay }));
+
+test('a creature: its body, distance and fitness', () => {
+  const r = rows(makeReplay());
+  assert.equal(r.body, '2 parts, 1 joints, 1 neurons');
+  assert.equal(r.distance, '2.00 m');
+  assert.equal(r.fitness, '2');
+  assert.equal(r.projectile, undefined);
+  assert.equal(r.release, undefined);
+});
+
+test('a catapult: its projectile, the release, the throw distance', () => {
+  const r = rows(makeCatapult());
+  assert.equal(r.projectile, 'part 2');
+  assert.equal(r.release, 'released at 0.50 s');
+  assert.equal(r['throw distance'], '1.00 m');
+  assert.equal(r['target miss'], undefined); // no target
+  assert.equal(r.distance, undefined); // the throw distance says it
+  assert.equal(rows(makeCatapult({ release: null })).release, 'not released');
+});
+
+test('a catapult aiming at a target: the miss too', () => {
+  const r = rows(makeCatapult({ target: [2, 0, 0.075] }));
+  assert.equal(r['target miss'], '0.40 m');
+  // rows in order: the throw's facts before the fitness
+  const keys = infoRows({ label: 'x', replay: makeCatapult({ target: [2, 0, 0.075] }) }).map(([k]) => k);
+  assert.deepEqual(keys.slice(-5), ['projectile', 'release', 'throw distance', 'target miss', 'fitness']);
+});
