@@ -26,6 +26,21 @@ generations = 4
 seconds = 1
 )";
 
+// a small catapult run (chaumont2007 section 4): the throwing task
+const char* kCatapultConfig = R"(
+[genome]
+dialect = "chaumont2007"
+[catapult]
+enabled = true
+[task]
+kind = "throwing"
+[evolution]
+population = 12
+generations = 3
+[throwing]
+seconds = 3
+)";
+
 // every row of the generation and individual tables, as text
 std::string dump(const std::string& dir) {
   sqlite3* db = nullptr;
@@ -59,11 +74,11 @@ class Runs : public ::testing::Test {
     fs::create_directories(root);
   }
   void TearDown() override { fs::remove_all(root); }
-  std::string make(const std::string& name, std::uint64_t seed = 9) {
-    auto cfg = read_run_config(kConfig, "test.toml");
+  std::string make(const std::string& name, std::uint64_t seed = 9, const char* config = kConfig) {
+    auto cfg = read_run_config(config, "test.toml");
     EXPECT_TRUE(cfg.ok()) << cfg.error();
     std::string dir = (root / name).string();
-    Status s = create_run(dir, *cfg, kConfig, "test.toml", seed);
+    Status s = create_run(dir, *cfg, config, "test.toml", seed);
     EXPECT_TRUE(s.ok()) << s.error();
     return dir;
   }
@@ -98,6 +113,19 @@ TEST_F(Runs, StoppedAfterAnyGenerationAndResumedEndsTheSame) {
   // resuming a finished run does nothing
   ASSERT_TRUE(drive_run(whole, {2, true, 0}).ok());
   EXPECT_EQ(dump(whole), expected);
+}
+
+TEST_F(Runs, CatapultRunsAreTheSameForAnyWorkersAndResumeExactly) {
+  std::string one = make("one", 3, kCatapultConfig), two = make("two", 3, kCatapultConfig);
+  ASSERT_TRUE(drive_run(one, {1, true, 0}).ok());
+  ASSERT_TRUE(drive_run(two, {2, true, 0}).ok());
+  std::string expected = dump(one);
+  EXPECT_EQ(expected, dump(two));
+  EXPECT_NE(expected.find("\"catapult\""), std::string::npos) << "the genomes are catapults";
+  std::string stopped = make("stopped", 3, kCatapultConfig);
+  ASSERT_TRUE(drive_run(stopped, {2, true, 1}).ok());
+  ASSERT_TRUE(drive_run(stopped, {1, true, 0}).ok());
+  EXPECT_EQ(dump(stopped), expected);
 }
 
 TEST_F(Runs, CreateRefusesAnExistingDirectory) {

@@ -88,4 +88,27 @@ TEST_F(ViewerInBrowser, ARunPageShowsCurvesAndSwitchesToTheChosenGeneration) {
   EXPECT_EQ(r["afterClick"], 0);
 }
 
+TEST_F(ViewerInBrowser, ACatapultsProjectileFliesAwayWithItsTrajectoryDrawn) {
+  // tests/creatures/catapult.json releases at 0.5 s and throws about 2.5 m
+  fs::path page = dir / "catapult.html";
+  ASSERT_EQ(bestiary("show " + creature("catapult.json") + " --out " + page.string()).code, 0);
+  json seen = inspect(page, "catapult", "--times 0.2,2.5");
+  ASSERT_FALSE(seen.is_null());
+  EXPECT_TRUE(seen["errors"].empty()) << seen["errors"];
+  const json& before = seen["moments"][0]["state"];
+  const json& after = seen["moments"][1]["state"];
+  ASSERT_TRUE(before["projectile"].is_array()) << before;
+  ASSERT_TRUE(after["projectile"].is_array()) << after;
+  // before the release no flight is drawn; after it the tube is there
+  EXPECT_FALSE(before["flight"].get<bool>());
+  EXPECT_TRUE(after["flight"].get<bool>());
+  // the projectile left the arm: far from the root, while it rode near it
+  auto gap = [](const json& s) {
+    return std::hypot(s["projectile"][0].get<double>() - s["root"][0].get<double>(),
+                      s["projectile"][1].get<double>() - s["root"][1].get<double>());
+  };
+  EXPECT_LT(gap(before), 1.0) << before;
+  EXPECT_GT(gap(after), 1.5) << after;
+}
+
 }  // namespace
