@@ -12,10 +12,21 @@ same creature simulated for twice the task's time: the gait counts as
 sustained when, in that run, the centre of mass moves (in the plane) over the
 second half at least half as far as over the first half, and more than half a
 body length.
+
+For a throwing run (chaumont2007's catapults) instead: the best fitness of the
+first and last generation; the best creature re-simulated exactly: its throw
+distance D_p, its target miss D_t (aim task), its release time (the mechanism
+fires at 0.5 s; earlier means the body fired it), its projectile's size; the
+median throw of the same creature over evaluation seeds 1-5 (throws are
+chaotic: this says how much of the best was luck); and the explosion and
+speed discards (5.4) as a share of the evaluations of the first generation,
+the last generation and the whole run.
 """
 import argparse, json, os, re, sqlite3, subprocess, sys
 
-BESTIARY = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "build", "bestiary")
+# $BESTIARY overrides (e.g. a frozen copy while the build tree changes)
+BESTIARY = os.environ.get("BESTIARY") or os.path.join(
+    os.path.dirname(os.path.abspath(__file__)), "..", "build", "bestiary")
 
 
 def sh(args, **kw):
@@ -69,13 +80,47 @@ def row(preset, seed, run_dir):
             f"{d1 / bl:.1f} | {d2:.2f} | {sustained} | {failed} | {rejected} |")
 
 
+def is_throwing(run_dir):
+    cfg = open(os.path.join(run_dir, "config.toml")).read()
+    return re.search(r'^kind = "throwing"', cfg, re.M) is not None
+
+
+def throw_row(preset, seed, run_dir):
+    con = sqlite3.connect(os.path.join(run_dir, "run.sqlite"))
+    gens = con.execute("select gen, evaluations, best, failed from generation order by gen").fetchall()
+    # evaluations is cumulative: each generation's own are the difference
+    per_gen, prev = [], 0
+    for g, ev, best, failed in gens:
+        per_gen.append((g, ev - prev, best, failed))
+        prev = ev
+    share = lambda f, n: f"{100.0 * f / n:.1f}%" if n else "-"
+    first, last = per_gen[0], per_gen[-1]
+    total_failed = sum(x[3] for x in per_gen)
+    out = os.path.join(run_dir, "best.json")
+    b = sh(["best", run_dir, "--out", out])
+    cmd = ["simulate"] + re.search(r"bestiary simulate (.*)$", b.stderr, re.M).group(1).split()
+    one = json.loads(sh(cmd + ["--json", "--replay", os.path.join(run_dir, "best.replay.json")]).stdout)
+    genome = json.load(open(out))
+    size = genome["nodes"][genome["catapult"]["projectile"]]["size"]
+    # the same creature under other evaluation seeds (drop the exact one)
+    base = cmd[:cmd.index("--seed")] if "--seed" in cmd else cmd
+    others = sorted(json.loads(sh(base + ["--seed", str(k), "--json"]).stdout)["distance"] for k in range(1, 6))
+    miss = one.get("target_miss")
+    release = one.get("release_time")
+    return (f"| {preset} | {seed} | {gens[-1][1]} | {first[2]:.3g} | {last[2]:.3g} | "
+            f"{one['distance']:.2f} | {'-' if miss is None else f'{miss:.2f}'} | "
+            f"{'never' if release is None or release < 0 else f'{release:.3f}'} | "
+            f"{' x '.join(f'{v:.3g}' for v in size)} | {others[2]:.2f} | "
+            f"{share(first[3], first[1])} | {share(last[3], last[1])} | {share(total_failed, gens[-1][1])} |")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("runs", nargs="+", help="PRESET:SEEDS, seeds as N or A-B")
     ap.add_argument("--runs-dir", default="runs/results")
     ap.add_argument("--workers", default="2")
     a = ap.parse_args()
-    rows = []
+    rows, throws = [], []
     for spec in a.runs:
         preset, _, s = spec.partition(":")
         for seed in seeds(s or "1"):
@@ -87,8 +132,20 @@ def main():
                 r = sh(args + ["--workers", a.workers, "--quiet"])
                 if r.returncode != 0:
                     sys.exit(r.stderr)
+            if is_throwing(run_dir):
+                throws.append(throw_row(preset, seed, run_dir))
+                print(throws[-1], flush=True)
+                continue
             rows.append(row(preset, seed, run_dir))
             print(rows[-1], flush=True)
+    if throws:
+        print("\n| preset | seed | evaluations | best, first generation | best, last | throw (m) | target miss (m) "
+              "| release (s) | projectile (m) | median throw, seeds 1-5 (m) | discarded, first generation "
+              "| discarded, last | discarded, run |")
+        print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+        print("\n".join(throws))
+    if not rows:
+        return
     print("\n| preset | seed | evaluations | best, first generation | best, last | parts | distance (m) "
           "| body lengths | distance, 2x time (m) | sustained | failed | rejected |")
     print("|---|---|---|---|---|---|---|---|---|---|---|---|")
