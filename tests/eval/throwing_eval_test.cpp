@@ -142,5 +142,21 @@ TEST(ThrowingEval, ANonCatapultCannotThrow) {
   EXPECT_NE(r.note.find("not a catapult"), std::string::npos);
 }
 
+TEST(ThrowingEval, TheSpeedTestDiscardsAThrowFasterThanTheThreshold) {
+  // 5.4: a part faster than physics.max_speed ends the evaluation as failed.
+  // The hand-made catapult's arm and projectile move faster than 3 m/s: a
+  // 3 m/s threshold discards it; the default 50 m/s lets it throw.
+  CreatureModel m = grow(catapult());
+  SimConfig cfg = default_sim_config(catapult());
+  EvalResult fine = evaluate(m, cfg, 1);
+  ASSERT_FALSE(fine.failed) << fine.failure;
+  cfg.physics.max_speed = 3.0;
+  EvalResult fast = evaluate(m, cfg, 1);
+  ASSERT_TRUE(fast.failed);
+  EXPECT_NE(fast.failure.find("above max_speed 3"), std::string::npos) << fast.failure;
+  EXPECT_EQ(fast.fitness, 0.0);
+  EXPECT_LT(fast.seconds, fine.seconds);
+}
+
 }  // namespace
 }  // namespace bx
