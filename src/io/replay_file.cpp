@@ -38,7 +38,12 @@ std::string replay_to_string(const CreatureModel& m, const Replay& r, const Eval
   j["bestiary"] = std::string(BESTIARY_VERSION);
   j["genome"] = info.genome_source;
   j["dialect"] = std::string(to_string(m.dialect));
-  j["seed"] = info.seed;
+  // a JSON number above 2^53 loses digits in JavaScript (the viewer): such a
+  // seed is written as its decimal string
+  if (info.seed > (std::uint64_t{1} << 53))
+    j["seed"] = std::to_string(info.seed);
+  else
+    j["seed"] = info.seed;
   j["dt"] = info.dt;
   // the scene: ground and props, each drawn from its description
   json props = json::array();

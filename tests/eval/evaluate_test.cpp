@@ -56,6 +56,23 @@ TEST(Evaluate, SameSeedGivesBitIdenticalResultsAndReplays) {
   EXPECT_EQ(ra.frames.size(), 1u + 150u);  // t = 0 and 30 frames per second
 }
 
+TEST(Evaluate, AReplayKeepsALargeSeedExactForJavaScript) {
+  // seeds of evolved individuals are 64-bit; above 2^53 a JSON number loses
+  // digits in the viewer, so the replay writes them as strings
+  SimConfig cfg;
+  CreatureModel m = grow("walker.json", &cfg);
+  cfg.task.seconds = 0.1;
+  Replay r;
+  EvalResult res = evaluate(m, cfg, 1, &r);
+  auto seed_of = [&](std::uint64_t seed) {
+    std::string text = replay_to_string(m, r, res, {"walker.json", seed, cfg.physics.dt, 1.0});
+    auto at = text.find("\"seed\":");
+    return text.substr(at, text.find(',', at) - at);
+  };
+  EXPECT_EQ(seed_of(7), "\"seed\":7");
+  EXPECT_EQ(seed_of(16362424434296498360ULL), "\"seed\":\"16362424434296498360\"");
+}
+
 TEST(Evaluate, ExplosionEndsTheEvaluationWithAFailingScore) {
   SimConfig cfg;
   CreatureModel m = grow("walker.json", &cfg);
