@@ -98,6 +98,7 @@ int cmd_simulate(const SimulateArgs& a) {
     out["failed"] = res.failed;
     out["failure"] = res.failure;
     out["note"] = res.note;
+    if (!res.trial_fitness.empty()) out["trial_fitness"] = res.trial_fitness;
     if (m.projectile >= 0) {
       out["release_time"] = res.release_time >= 0 ? nlohmann::json(res.release_time) : nlohmann::json(nullptr);
       out["target_miss"] = res.target_miss >= 0 ? nlohmann::json(res.target_miss) : nlohmann::json(nullptr);
@@ -124,6 +125,13 @@ int cmd_simulate(const SimulateArgs& a) {
   } else {
     std::printf("distance %.4f m (%.2f body lengths)\nfitness %.6g\n", res.distance,
                 bl > 0 ? res.distance / bl : 0.0, res.fitness);
+  }
+  if (!res.trial_fitness.empty()) {
+    // task.trials > 1: the lines above are the first trial's, the fitness the mean
+    std::printf("fitness is the mean of %zu trials (the lines above are the first's):",
+                res.trial_fitness.size());
+    for (double f : res.trial_fitness) std::printf(" %.6g", f);
+    std::printf("\n");
   }
   if (!a.replay.empty()) std::printf("replay written to %s\n", a.replay.c_str());
   return 0;

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "brain/brain_model.h"
+#include "core/rng.h"
 #include "physics/world.h"
 
 namespace bx {
@@ -157,10 +158,8 @@ EvalResult evaluate_throwing(const CreatureModel& m, const SimConfig& cfg, EvalR
   return res;
 }
 
-}  // namespace
-
-EvalResult evaluate(const CreatureModel& m, const SimConfig& cfg, std::uint64_t seed,
-                    Replay* replay) {
+EvalResult evaluate_once(const CreatureModel& m, const SimConfig& cfg, std::uint64_t seed,
+                         Replay* replay) {
   EvalResult res;
   res.warnings = m.warnings;
   reseed_physics(seed);
@@ -168,6 +167,39 @@ EvalResult evaluate(const CreatureModel& m, const SimConfig& cfg, std::uint64_t 
     case TaskKind::Locomotion: return evaluate_locomotion(m, cfg, std::move(res), replay);
     case TaskKind::Throwing: return evaluate_throwing(m, cfg, std::move(res), replay);
   }
+  return res;
+}
+
+}  // namespace
+
+// the stream of trial seeds (evolution.cpp's streams are 1-4)
+constexpr std::uint64_t kTrialStream = 5;
+
+std::uint64_t trial_seed(std::uint64_t seed, int trial) {
+  return trial == 0 ? seed : stream_seed({seed, kTrialStream, static_cast<std::uint64_t>(trial)});
+}
+
+EvalResult evaluate(const CreatureModel& m, const SimConfig& cfg, std::uint64_t seed,
+                    Replay* replay) {
+  EvalResult res = evaluate_once(m, cfg, seed, replay);
+  if (cfg.trials <= 1) return res;
+  // the first trial is the one a replay shows and the one distance, release
+  // and target miss describe; the others only score
+  res.trial_fitness = {res.fitness};
+  double fitness = res.fitness;
+  for (int k = 1; k < cfg.trials; ++k) {
+    EvalResult t = evaluate_once(m, cfg, trial_seed(seed, k), nullptr);
+    res.trial_fitness.push_back(t.fitness);
+    fitness += t.fitness;
+    res.steps += t.steps;
+    if (t.failed && !res.failed) {
+      res.failed = true;
+      res.failure = "trial " + std::to_string(k + 1) + " of " + std::to_string(cfg.trials) + ": " +
+                    t.failure;
+    }
+  }
+  // a creature that blows up in any trial is discarded (5.4), as in one
+  res.fitness = res.failed ? 0 : fitness / cfg.trials;
   return res;
 }
 

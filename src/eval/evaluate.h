@@ -43,6 +43,9 @@ struct EvalResult {
   double seconds = 0;       ///< simulated time
   long steps = 0;
   std::vector<std::string> warnings;
+  /// SimConfig::trials > 1: each trial's fitness, the first being the one
+  /// a replay shows (`fitness` is their mean); empty for a single trial.
+  std::vector<double> trial_fitness;
 };
 
 /// Simulates the creature on flat ground with its own brain, in the task
@@ -50,7 +53,16 @@ struct EvalResult {
 /// creature it scores 0 with a note). Reseeds ODE's
 /// generator from `seed` first, so equal inputs give bit-identical results.
 /// When `replay` is given, frames are appended to it.
+///
+/// With cfg.trials = K > 1 it evaluates K times, under trial_seed(seed, 0..K-1):
+/// fitness is the trials' mean (each in trial_fitness), steps their sum, and
+/// a numerical explosion in any trial fails the whole evaluation; the rest
+/// (distance, release, target miss, seconds, the replay) is the first
+/// trial's, whose seed is `seed` itself.
 EvalResult evaluate(const CreatureModel& m, const SimConfig& cfg, std::uint64_t seed,
                     Replay* replay = nullptr);
+
+/// The physics seed of trial `trial` (0-based) of an evaluation under `seed`.
+std::uint64_t trial_seed(std::uint64_t seed, int trial);
 
 }  // namespace bx

@@ -26,6 +26,10 @@ struct SimConfig {
   TaskKind task_kind = TaskKind::Locomotion;
   LocomotionDef task;
   ThrowingDef throwing;
+  /// Evaluations per creature under different physics seeds; its fitness is
+  /// their mean (QuickStep's randomised solver makes a chaotic motion, such
+  /// as a throw, depend on the seed).
+  int trials = 1;
   double replay_fps = 30;  ///< frames per simulated second in replays
 };
 

@@ -66,6 +66,7 @@ const std::vector<Field>& fields() {
       {"task", "burst_seconds", Field::Real, 0, 1e4, {}, [](RunConfig& c) -> void* { return &c.sim.task.burst_seconds; }, "the first controller activation (s)"},
       {"task", "kappa", Field::Real, 0, 10, {}, [](RunConfig& c) -> void* { return &c.sim.task.kappa; }, "eq. 1's reward per block"},
       {"task", "kind", Field::Choice, 0, 0, {"locomotion", "throwing"}, [](RunConfig& c) -> void* { return &c.sim.task_kind; }, "locomotion (the [task] keys) or throwing (the [throwing] keys; needs catapults)"},
+      {"task", "trials", Field::Int, 1, 1000, {}, [](RunConfig& c) -> void* { return &c.sim.trials; }, "evaluations per creature under different physics seeds; fitness is their mean"},
       {"throwing", "fitness", Field::Choice, 0, 0, {"distance", "aim"}, [](RunConfig& c) -> void* { return &c.sim.throwing.fitness; }, "distance (chaumont2007 eq. 2: D_p) or aim (eq. 3: D_p - D_t)"},
       {"throwing", "seconds", Field::Real, 0, 1e6, {}, [](RunConfig& c) -> void* { return &c.sim.throwing.seconds; }, "longest evaluation (s); it ends earlier once the projectile rests"},
       {"throwing", "drop_height", Field::Real, 0, 1e3, {}, [](RunConfig& c) -> void* { return &c.sim.throwing.drop_height; }, "gap between the lowest part and the ground at the start (m)"},

@@ -117,6 +117,7 @@ std::string replay_to_string(const CreatureModel& m, const Replay& r, const Eval
                  {"failed", res.failed},     {"failure", res.failure},
                  {"seconds", res.seconds},   {"steps", res.steps},
                  {"warnings", res.warnings}};
+  if (!res.trial_fitness.empty()) j["result"]["trial_fitness"] = res.trial_fitness;
   if (m.projectile >= 0) {
     j["result"]["throw_distance"] = res.distance;
     j["result"]["target_miss"] = res.target_miss >= 0 ? json(res.target_miss) : json(nullptr);

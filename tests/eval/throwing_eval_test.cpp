@@ -158,5 +158,40 @@ TEST(ThrowingEval, TheSpeedTestDiscardsAThrowFasterThanTheThreshold) {
   EXPECT_LT(fast.seconds, fine.seconds);
 }
 
+TEST(ThrowingEval, TrialsAverageTheThrowsOfSeveralSeeds) {
+  // task.trials = 3: three evaluations under trial_seed(seed, 0..2), each
+  // the same as a single evaluation under that seed; fitness is their mean,
+  // the rest (distance, release, the replay) the first trial's
+  CreatureModel m = grow(catapult());
+  SimConfig one = default_sim_config(catapult());
+  SimConfig three = one;
+  three.trials = 3;
+  Replay replay;
+  EvalResult r = evaluate(m, three, 7, &replay);
+  ASSERT_FALSE(r.failed) << r.failure;
+  ASSERT_EQ(r.trial_fitness.size(), 3u);
+  EXPECT_EQ(trial_seed(7, 0), 7u);
+  double sum = 0;
+  for (int k = 0; k < 3; ++k) {
+    EvalResult single = evaluate(m, one, trial_seed(7, k));
+    EXPECT_EQ(r.trial_fitness[k], single.fitness) << k;
+    EXPECT_GT(single.fitness, 1.5) << k;
+    sum += single.fitness;
+  }
+  EXPECT_DOUBLE_EQ(r.fitness, sum / 3);
+  EvalResult first = evaluate(m, one, 7);
+  EXPECT_EQ(r.distance, first.distance);
+  EXPECT_EQ(r.release_time, first.release_time);
+  EXPECT_EQ(replay.release_time, first.release_time);
+  // the seeds differ, and so (QuickStep is randomised) do the throws
+  EXPECT_NE(trial_seed(7, 1), trial_seed(7, 2));
+  EXPECT_NE(r.trial_fitness[0], r.trial_fitness[1]);
+  // an explosion in any trial discards the creature
+  three.physics.max_speed = 3.0;
+  EvalResult fast = evaluate(m, three, 7);
+  EXPECT_TRUE(fast.failed);
+  EXPECT_EQ(fast.fitness, 0.0);
+}
+
 }  // namespace
 }  // namespace bx
