@@ -30,6 +30,11 @@ export function infoRows(entry) {
     rows.push(['distance', num(res.distance, metres)]);
   }
   rows.push(['fitness', num(res.fitness, fitness)]);
+  // task.trials > 1: the fitness is a mean; what is shown is the first trial
+  const trials = res.trial_fitness;
+  if (Array.isArray(trials) && trials.length > 1) {
+    rows.push(['trials', `mean of ${trials.length}: ${trials.map(fitness).join(', ')} (shown: the first)`]);
+  }
   return rows;
 }
 

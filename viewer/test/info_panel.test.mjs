@@ -32,3 +32,13 @@ test('a catapult aiming at a target: the miss too', () => {
   const keys = infoRows({ label: 'x', replay: makeCatapult({ target: [2, 0, 0.075] }) }).map(([k]) => k);
   assert.deepEqual(keys.slice(-5), ['projectile', 'release', 'throw distance', 'target miss', 'fitness']);
 });
+
+test('a fitness averaged over trials says so, and which trial is shown', () => {
+  const replay = makeCatapult();
+  replay.result.fitness = 2;
+  replay.result.trial_fitness = [1, 2.5, 2.5];
+  const r = rows(replay);
+  assert.equal(r.fitness, '2');
+  assert.equal(r.trials, 'mean of 3: 1, 2.5, 2.5 (shown: the first)');
+  assert.equal(rows(makeCatapult()).trials, undefined); // one trial: no row
+});
