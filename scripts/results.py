@@ -20,9 +20,13 @@ fires at 0.5 s; earlier means the body fired it), its projectile's size; the
 median throw of the same creature over evaluation seeds 1-5 (throws are
 chaotic: this says how much of the best was luck); and the explosion and
 speed discards (5.4) as a share of the evaluations of the first generation,
-the last generation and the whole run.
+the last generation and the whole run. Then how the best threw (its replay,
+the first trial; see throw_profile): the body's parts, height and mass over
+the projectile's, the release's height, the projectile's top speed, its
+flight to the first touch of the ground, its roll from there to rest, and the
+kick (above 1: something struck it on the ground, as in a drop-kick).
 """
-import argparse, json, os, re, sqlite3, subprocess, sys
+import argparse, json, math, os, re, sqlite3, subprocess, sys
 
 # $BESTIARY overrides (e.g. a frozen copy while the build tree changes)
 BESTIARY = os.environ.get("BESTIARY") or os.path.join(
@@ -85,6 +89,47 @@ def is_throwing(run_dir):
     return re.search(r'^kind = "throwing"', cfg, re.M) is not None
 
 
+def half_height(pose, size):
+    """Half a box's vertical extent: its half extents projected on the
+    vertical (the third row of its rotation matrix)."""
+    w, qx, qy, qz = pose[3:7]
+    row = (2 * (qx * qz - w * qy), 2 * (qy * qz + w * qx), 1 - 2 * (qx * qx + qy * qy))
+    return sum(abs(r) * h / 2 for r, h in zip(row, size))
+
+
+def throw_profile(replay):
+    """How a catapult threw, from its replay (the first trial): the release's
+    height and the projectile's top speed after it; the flight (release to the
+    projectile's first touch of the ground) and the roll (first touch to rest)
+    as horizontal distances; the kick, the projectile's largest horizontal
+    speed after it touched the ground over its speed at the touch (above 1
+    means something hit it on the ground: a drop-kick, chaumont2007 4.3); the
+    body's height at the start (its parts' highest corner) and its mass over
+    the projectile's."""
+    parts, frames, t = replay["parts"], replay["frames"], replay["throw"]
+    p, rel = t["projectile"], t["release_t"]
+    size = parts[p]["size"]
+    top = max(f[2] + half_height(f, parts[i]["size"])
+              for i, f in enumerate(frames[0]["poses"]) if i != p)
+    mass = sum(q["mass"] for i, q in enumerate(parts) if i != p) / parts[p]["mass"]
+    out = {"height": top, "mass": mass}
+    if rel is None:
+        return out
+    after = [f for f in frames if f["t"] >= rel - 1e-9]
+    xy = lambda f: f["poses"][p][:2]
+    dist = lambda a, b: ((a[0] - b[0]) ** 2 + (a[1] - b[1]) ** 2) ** 0.5
+    speed = [dist(xy(a), xy(b)) / (b["t"] - a["t"]) for a, b in zip(after, after[1:])]
+    vz = [(b["poses"][p][2] - a["poses"][p][2]) / (b["t"] - a["t"]) for a, b in zip(after, after[1:])]
+    touch = next((k for k, f in enumerate(after) if f["poses"][p][2] - half_height(f["poses"][p], size) < 0.01), len(after) - 1)
+    out["release_z"] = after[0]["poses"][p][2]
+    out["top_speed"] = max((math.hypot(a, b) for a, b in zip(speed, vz)), default=0)
+    out["flight"] = dist(xy(after[0]), xy(after[touch]))
+    out["roll"] = dist(xy(after[touch]), xy(after[-1]))
+    at = max(speed[touch - 1] if touch > 0 else 0, 1e-3) if speed else 1e-3
+    out["kick"] = max(speed[touch:], default=0) / at
+    return out
+
+
 def throw_row(preset, seed, run_dir):
     con = sqlite3.connect(os.path.join(run_dir, "run.sqlite"))
     gens = con.execute("select gen, evaluations, best, failed from generation order by gen").fetchall()
@@ -99,7 +144,10 @@ def throw_row(preset, seed, run_dir):
     out = os.path.join(run_dir, "best.json")
     b = sh(["best", run_dir, "--out", out])
     cmd = ["simulate"] + re.search(r"bestiary simulate (.*)$", b.stderr, re.M).group(1).split()
-    one = json.loads(sh(cmd + ["--json", "--replay", os.path.join(run_dir, "best.replay.json")]).stdout)
+    replay = os.path.join(run_dir, "best.replay.json")
+    one = json.loads(sh(cmd + ["--json", "--replay", replay]).stdout)
+    prof = throw_profile(json.load(open(replay)))
+    opt = lambda k, f="{:.2f}": f.format(prof[k]) if k in prof else "-"
     genome = json.load(open(out))
     size = genome["nodes"][genome["catapult"]["projectile"]]["size"]
     # the same creature under other evaluation seeds (drop the exact one)
@@ -111,7 +159,9 @@ def throw_row(preset, seed, run_dir):
             f"{one['distance']:.2f} | {'-' if miss is None else f'{miss:.2f}'} | "
             f"{'never' if release is None or release < 0 else f'{release:.3f}'} | "
             f"{' x '.join(f'{v:.3g}' for v in size)} | {others[2]:.2f} | "
-            f"{share(first[3], first[1])} | {share(last[3], last[1])} | {share(total_failed, gens[-1][1])} |")
+            f"{share(first[3], first[1])} | {share(last[3], last[1])} | {share(total_failed, gens[-1][1])} | "
+            f"{one['parts']} | {prof['height']:.2f} | {prof['mass']:.3g} | {opt('release_z')} | {opt('top_speed', '{:.1f}')} | "
+            f"{opt('flight')} | {opt('roll')} | {opt('kick', '{:.1f}')} |")
 
 
 def main():
@@ -141,8 +191,9 @@ def main():
     if throws:
         print("\n| preset | seed | evaluations | best, first generation | best, last | throw (m) | target miss (m) "
               "| release (s) | projectile (m) | median throw, seeds 1-5 (m) | discarded, first generation "
-              "| discarded, last | discarded, run |")
-        print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+              "| discarded, last | discarded, run | parts | height (m) | body / projectile mass | release height (m) "
+              "| top speed (m/s) | flight (m) | roll (m) | kick |")
+        print("|" + "---|" * 21)
         print("\n".join(throws))
     if not rows:
         return

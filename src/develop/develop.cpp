@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "genome/dialect.h"
@@ -329,6 +330,13 @@ Development develop(const Genome& g, const DevelopDef& def) {
       j.limits = {*rules.default_hinge_limits};
     joint_of[i] = static_cast<int>(m.joints.size());
     m.joints.push_back(j);
+  }
+
+  if (def.max_body_length > 0 && m.body_length() > def.max_body_length) {
+    char buf[128];
+    std::snprintf(buf, sizeof buf, "too large: body length %.4g m, above develop.max_body_length %g",
+                  m.body_length(), def.max_body_length);
+    return {std::nullopt, buf};
   }
 
   // self-intersection of parts not joined to each other

@@ -53,6 +53,7 @@ const std::vector<Field>& fields() {
       {"motor", "kd", Field::Real, 0, inf, {}, [](RunConfig& c) -> void* { return &c.sim.motor.kd; }, "pd: damping gain"},
       {"brain", "steps_per_physics_step", Field::Int, 1, 100, {}, [](RunConfig& c) -> void* { return &c.sim.brain_steps_per_physics_step; }, "brain updates per physics step"},
       {"develop", "max_parts", Field::Int, 0, 100000, {}, [](RunConfig& c) -> void* { return &c.sim.develop.max_parts; }, "most parts after development (0: the dialect's limit)"},
+      {"develop", "max_body_length", Field::Real, 0, 1e6, {}, [](RunConfig& c) -> void* { return &c.sim.develop.max_body_length; }, "largest extent of the starting pose (m): longer creatures are not viable (0: no limit)"},
       {"develop", "overlap_margin", Field::Real, 0, 1, {}, [](RunConfig& c) -> void* { return &c.sim.develop.overlap_margin; }, "self-intersection test shrinks parts by this much (m)"},
       {"task", "seconds", Field::Real, 0, 1e6, {}, [](RunConfig& c) -> void* { return &c.sim.task.seconds; }, "evaluation length (s); with the chaumont2007 sequence, the measured phase"},
       {"task", "drop_height", Field::Real, 0, 1e3, {}, [](RunConfig& c) -> void* { return &c.sim.task.drop_height; }, "gap between the lowest part and the ground at the start (m)"},
@@ -131,7 +132,12 @@ std::string num(double v) {
   return std::string(buf, r.ptr);
 }
 
-std::string vec_text(Vec3 v) { return "[" + num(v.x) + ", " + num(v.y) + ", " + num(v.z) + "]"; }
+std::string vec_text(Vec3 v) {
+  // appended piecewise: GCC 12 at -O3 warns falsely (-Wrestrict) on "[" + string&&
+  std::string s = "[";
+  s.append(num(v.x)).append(", ").append(num(v.y)).append(", ").append(num(v.z)).append("]");
+  return s;
+}
 
 // sets one field from a TOML value, or says what is wrong
 Status set_field(const Field& f, RunConfig& cfg, const toml::node& n, const std::string& where) {

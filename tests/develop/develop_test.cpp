@@ -139,6 +139,26 @@ TEST(Develop, TooManyPartsIsNotViable) {
   EXPECT_EQ(d.reason, "too many parts: more than 10");
 }
 
+// A recursive edge that scales by 1.5 grows giants: the body-length limit
+// makes them non-viable, and leaves creatures within it alone.
+TEST(Develop, BodyLongerThanTheLimitIsNotViable) {
+  Genome g = load("sims_recursive.json");
+  double base = grow("sims_recursive.json").body_length();
+  DevelopDef def;
+  def.max_body_length = base * 1.01;
+  EXPECT_TRUE(develop(g, def).viable());
+  for (auto& node : g.nodes)
+    for (auto& e : node.edges)
+      if (e.to == &node - g.nodes.data()) e.scale = 1.5;
+  Development big = develop(g);
+  ASSERT_TRUE(big.viable()) << big.reason;
+  ASSERT_GT(big.model->body_length(), base * 1.2);
+  Development d = develop(g, def);
+  EXPECT_FALSE(d.viable());
+  EXPECT_EQ(d.reason.rfind("too large: body length ", 0), 0u) << d.reason;
+  EXPECT_NE(d.reason.find("above develop.max_body_length"), std::string::npos) << d.reason;
+}
+
 TEST(Develop, MiconiMassIsScaledTanhOfVolume) {
   Genome g;
   g.dialect = Dialect::Miconi2006;
