@@ -8,6 +8,8 @@
 #include "develop/develop.h"
 #include "eval/evaluate.h"
 #include "genome/genome_json.h"
+#include "io/config.h"
+#include "io/presets.h"
 
 namespace bx {
 namespace {
@@ -156,6 +158,39 @@ TEST(ThrowingEval, TheSpeedTestDiscardsAThrowFasterThanTheThreshold) {
   EXPECT_NE(fast.failure.find("above max_speed 3"), std::string::npos) << fast.failure;
   EXPECT_EQ(fast.fitness, 0.0);
   EXPECT_LT(fast.seconds, fine.seconds);
+}
+
+TEST(ThrowingEval, ThePresetsDiscardAThrowThatStretchesAJoint) {
+  // An evolved catapult (chaumont2007-catapult-small, seed 1, before the
+  // presets bounded joint gaps): its tiny arm whips on a hinge whose anchors
+  // drift 0.2 m apart, and the stretched joint slings the projectile 35 m.
+  // The catapult presets' 0.05 m joint-gap test discards it as an explosion;
+  // the default 0.5 m let it win.
+  auto g = load_genome(std::string(BESTIARY_SOURCE_DIR) + "/tests/creatures/catapult_stretched_joint.json");
+  ASSERT_TRUE(g.ok()) << g.error();
+  const Preset* preset = nullptr;
+  for (const auto& p : presets())
+    if (p.name == "chaumont2007-catapult") preset = &p;
+  ASSERT_NE(preset, nullptr);
+  auto run = read_run_config(preset->text, preset->name);
+  ASSERT_TRUE(run.ok()) << run.error();
+  SimConfig cfg = run->sim;
+  ASSERT_EQ(cfg.physics.max_joint_gap, 0.05);
+  CreatureModel m = grow(*g);
+  const std::uint64_t seed = 9012069040851672854ull;  // its evaluation in that run
+  EvalResult r = evaluate(m, cfg, seed);
+  ASSERT_TRUE(r.failed);
+  EXPECT_NE(r.failure.find("joint 0: anchors"), std::string::npos) << r.failure;
+  EXPECT_NE(r.failure.find("above max_joint_gap 0.05"), std::string::npos) << r.failure;
+  cfg.physics.max_joint_gap = 0.5;
+  EvalResult loose = evaluate(m, cfg, seed);
+  ASSERT_FALSE(loose.failed) << loose.failure;
+  EXPECT_GT(loose.fitness, 30.0);
+  // the hand-made catapult keeps its joints together and throws under the preset
+  SimConfig strict = run->sim;
+  EvalResult fine = evaluate(grow(catapult()), strict, 1);
+  EXPECT_FALSE(fine.failed) << fine.failure;
+  EXPECT_GT(fine.distance, 1.5);
 }
 
 TEST(ThrowingEval, TrialsAverageTheThrowsOfSeveralSeeds) {

@@ -50,6 +50,22 @@ TEST(Presets, PaperPresetsCarryThePapersConstants) {
   EXPECT_EQ(c.sim.task.kappa, 1.02);
   EXPECT_EQ(c.sim.task.seconds, 20);
   EXPECT_EQ(c.sim.task.activation, Activation::Chaumont2007);
+  // the catapults: the paper's GA, the 30-step release; our bounds on giants
+  // and stretched joints (the presets' Deviations) in every one of them
+  for (const char* name : {"chaumont2007-catapult", "chaumont2007-catapult-aim",
+                           "chaumont2007-catapult-free-projectile", "chaumont2007-catapult-small",
+                           "chaumont2007-catapult-aim-small",
+                           "chaumont2007-catapult-free-projectile-small"}) {
+    RunConfig k = find(name);
+    EXPECT_EQ(k.sim.task_kind, TaskKind::Throwing) << name;
+    EXPECT_EQ(k.evolution.elite_fraction, 0.2) << name;
+    EXPECT_EQ(k.sim.develop.max_body_length, 3.0) << name;
+    EXPECT_EQ(k.sim.physics.max_joint_gap, 0.05) << name;
+    if (std::string(name).find("-small") == std::string::npos) {
+      EXPECT_EQ(k.evolution.population, 300) << name;
+      EXPECT_EQ(k.evolution.generations, 100) << name;
+    }
+  }
 }
 
 }  // namespace
