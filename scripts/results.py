@@ -24,9 +24,11 @@ the last generation and the whole run. Then how the best threw (its replay,
 the first trial; see throw_profile): the body's parts, height and mass over
 the projectile's, the release's height, the projectile's top speed, its
 flight to the first touch of the ground, its roll from there to rest, and the
-kick (above 1: something struck it on the ground, as in a drop-kick).
+kick (above 1: something struck it on the ground, as in a drop-kick); and
+the share of the first and last generation's new individuals whose body fires
+the release before the mechanism's delay (each simulated once, seed 1).
 """
-import argparse, json, math, os, re, sqlite3, subprocess, sys
+import argparse, json, math, os, re, sqlite3, subprocess, sys, tempfile
 
 # $BESTIARY overrides (e.g. a frozen copy while the build tree changes)
 BESTIARY = os.environ.get("BESTIARY") or os.path.join(
@@ -130,6 +132,29 @@ def throw_profile(replay):
     return out
 
 
+def early_releases(run_dir, gen):
+    """Share of a generation's new individuals whose body fires the release
+    before the mechanism's delay (simulated once, evaluation seed 1)."""
+    con = sqlite3.connect(os.path.join(run_dir, "run.sqlite"))
+    cfg = os.path.join(run_dir, "config.toml")
+    text = open(cfg).read()
+    dt = float(re.search(r"^dt = ([0-9.e+-]+)", text, re.M).group(1))
+    per = int(re.search(r"^steps_per_physics_step = (\d+)", text, re.M).group(1))
+    early = n = 0
+    with tempfile.TemporaryDirectory() as tmp:
+        path = os.path.join(tmp, "genome.json")
+        for (genome,) in con.execute("select genome from individual where gen = ?", (gen,)):
+            open(path, "w").write(genome)
+            r = sh(["simulate", path, "--config", cfg, "--json"])
+            if r.returncode != 0:
+                continue
+            t = json.loads(r.stdout).get("release_time")
+            delay = json.loads(genome)["catapult"].get("release", {}).get("delay_steps", 30) * dt / per
+            n += 1
+            early += t is not None and 0 <= t < delay - dt / 2
+    return f"{100.0 * early / n:.0f}%" if n else "-"
+
+
 def throw_row(preset, seed, run_dir):
     con = sqlite3.connect(os.path.join(run_dir, "run.sqlite"))
     gens = con.execute("select gen, evaluations, best, failed from generation order by gen").fetchall()
@@ -154,15 +179,18 @@ def throw_row(preset, seed, run_dir):
     base = cmd[:cmd.index("--seed")] if "--seed" in cmd else cmd
     others = sorted(json.loads(sh(base + ["--seed", str(k), "--json"]).stdout)["distance"] for k in range(1, 6))
     miss = one.get("target_miss")
+    early0, early1 = early_releases(run_dir, first[0]), early_releases(run_dir, last[0])
     release = one.get("release_time")
-    return (f"| {preset} | {seed} | {gens[-1][1]} | {first[2]:.3g} | {last[2]:.3g} | "
-            f"{one['distance']:.2f} | {'-' if miss is None else f'{miss:.2f}'} | "
-            f"{'never' if release is None or release < 0 else f'{release:.3f}'} | "
-            f"{' x '.join(f'{v:.3g}' for v in size)} | {others[2]:.2f} | "
-            f"{share(first[3], first[1])} | {share(last[3], last[1])} | {share(total_failed, gens[-1][1])} | "
-            f"{one['parts']} | {prof['height']:.2f} | {prof['mass']:.3g} | {opt('release_z')} | {opt('top_speed', '{:.1f}')} | "
-            f"{opt('flight')} | {opt('roll')} | {opt('kick', '{:.1f}')} |")
-
+    head = f"| {preset} | {seed} | "
+    result = (head + f"{gens[-1][1]} | {first[2]:.3g} | {last[2]:.3g} | "
+              f"{one['distance']:.2f} | {'-' if miss is None else f'{miss:.2f}'} | {others[2]:.2f} | "
+              f"{share(first[3], first[1])} | {share(last[3], last[1])} | {share(total_failed, gens[-1][1])} |")
+    how = (head + f"{one['parts']} | {prof['height']:.2f} | {prof['mass']:.3g} | "
+           f"{' x '.join(f'{v:.3g}' for v in size)} | "
+           f"{'never' if release is None or release < 0 else f'{release:.3f}'} | {opt('release_z')} | "
+           f"{opt('top_speed', '{:.1f}')} | {opt('flight')} | {opt('roll')} | {opt('kick', '{:.1f}')} | "
+           f"{early0} | {early1} |")
+    return result, how
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -184,17 +212,20 @@ def main():
                     sys.exit(r.stderr)
             if is_throwing(run_dir):
                 throws.append(throw_row(preset, seed, run_dir))
-                print(throws[-1], flush=True)
+                print("\n".join(throws[-1]), flush=True)
                 continue
             rows.append(row(preset, seed, run_dir))
             print(rows[-1], flush=True)
     if throws:
         print("\n| preset | seed | evaluations | best, first generation | best, last | throw (m) | target miss (m) "
-              "| release (s) | projectile (m) | median throw, seeds 1-5 (m) | discarded, first generation "
-              "| discarded, last | discarded, run | parts | height (m) | body / projectile mass | release height (m) "
-              "| top speed (m/s) | flight (m) | roll (m) | kick |")
-        print("|" + "---|" * 21)
-        print("\n".join(throws))
+              "| median throw, seeds 1-5 (m) | discarded, first generation | discarded, last | discarded, run |")
+        print("|" + "---|" * 11)
+        print("\n".join(t[0] for t in throws))
+        print("\n| preset | seed | parts | height (m) | body / projectile mass | projectile (m) | release (s) "
+              "| release height (m) | top speed (m/s) | flight (m) | roll (m) | kick "
+              "| early release, first generation | early release, last |")
+        print("|" + "---|" * 14)
+        print("\n".join(t[1] for t in throws))
     if not rows:
         return
     print("\n| preset | seed | evaluations | best, first generation | best, last | parts | distance (m) "
