@@ -122,13 +122,14 @@ def throw_profile(replay):
     dist = lambda a, b: ((a[0] - b[0]) ** 2 + (a[1] - b[1]) ** 2) ** 0.5
     speed = [dist(xy(a), xy(b)) / (b["t"] - a["t"]) for a, b in zip(after, after[1:])]
     vz = [(b["poses"][p][2] - a["poses"][p][2]) / (b["t"] - a["t"]) for a, b in zip(after, after[1:])]
-    touch = next((k for k, f in enumerate(after) if f["poses"][p][2] - half_height(f["poses"][p], size) < 0.01), len(after) - 1)
+    grounded = lambda f: f["poses"][p][2] - half_height(f["poses"][p], size) < 0.01
+    touch = next((k for k, f in enumerate(after) if grounded(f)), len(after) - 1)
     out["release_z"] = after[0]["poses"][p][2]
     out["top_speed"] = max((math.hypot(a, b) for a, b in zip(speed, vz)), default=0)
     out["flight"] = dist(xy(after[0]), xy(after[touch]))
     out["roll"] = dist(xy(after[touch]), xy(after[-1]))
-    at = max(speed[touch - 1] if touch > 0 else 0, 1e-3) if speed else 1e-3
-    out["kick"] = max(speed[touch:], default=0) / at
+    at = speed[touch - 1] if 0 < touch <= len(speed) else 0
+    out["kick"] = max(speed[touch:], default=0) / max(at, 1e-3)
     return out
 
 
@@ -149,7 +150,8 @@ def early_releases(run_dir, gen):
             if r.returncode != 0:
                 continue
             t = json.loads(r.stdout).get("release_time")
-            delay = json.loads(genome)["catapult"].get("release", {}).get("delay_steps", 30) * dt / per
+            steps = json.loads(genome)["catapult"].get("release", {}).get("delay_steps", 30)
+            delay = steps * dt / per
             n += 1
             early += t is not None and 0 <= t < delay - dt / 2
     return f"{100.0 * early / n:.0f}%" if n else "-"
@@ -191,6 +193,7 @@ def throw_row(preset, seed, run_dir):
            f"{opt('top_speed', '{:.1f}')} | {opt('flight')} | {opt('roll')} | {opt('kick', '{:.1f}')} | "
            f"{early0} | {early1} |")
     return result, how
+
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)

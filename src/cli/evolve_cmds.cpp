@@ -48,8 +48,7 @@ Result<std::pair<std::string, std::string>> config_source(const std::string& arg
     if (!text) return Error{text.error()};
     return std::pair{fs::path(arg).stem().string(), *text};
   }
-  for (const auto& p : presets())
-    if (p.name == arg) return std::pair{p.name, p.text};
+  if (const Preset* p = find_preset(arg)) return std::pair{p->name, p->text};
   return Error{arg + ": no such config file, and no preset of that name (`bestiary presets` lists them)"};
 }
 

@@ -310,6 +310,15 @@ Development develop(const Genome& g, const DevelopDef& def) {
     part.depth = in.parent < 0 ? 0 : m.parts[in.parent].depth + 1;
     m.parts.push_back(part);
   }
+  if (def.max_body_length > 0) {
+    double length = m.body_length();
+    if (length > def.max_body_length) {
+      char buf[128];
+      std::snprintf(buf, sizeof buf, "too large: body length %.4g m, above develop.max_body_length %g",
+                    length, def.max_body_length);
+      return {std::nullopt, buf};
+    }
+  }
   std::vector<int> joint_of(n, -1);
   for (int i = 1; i < n; ++i) {
     const Instance& in = inst[i];
@@ -330,13 +339,6 @@ Development develop(const Genome& g, const DevelopDef& def) {
       j.limits = {*rules.default_hinge_limits};
     joint_of[i] = static_cast<int>(m.joints.size());
     m.joints.push_back(j);
-  }
-
-  if (def.max_body_length > 0 && m.body_length() > def.max_body_length) {
-    char buf[128];
-    std::snprintf(buf, sizeof buf, "too large: body length %.4g m, above develop.max_body_length %g",
-                  m.body_length(), def.max_body_length);
-    return {std::nullopt, buf};
   }
 
   // self-intersection of parts not joined to each other

@@ -4,6 +4,12 @@
 
 namespace bx {
 
+const Preset* find_preset(const std::string& name) {
+  for (const auto& p : presets())
+    if (p.name == name) return &p;
+  return nullptr;
+}
+
 std::string preset_summary(const Preset& p) {
   std::istringstream in(p.text);
   std::string line;

@@ -16,6 +16,9 @@ struct Preset {
 /// Every preset, by name.
 const std::vector<Preset>& presets();
 
+/// The preset of that name, or nullptr.
+const Preset* find_preset(const std::string& name);
+
 /// The preset's one-line summary: the first comment line of its text.
 std::string preset_summary(const Preset& p);
 

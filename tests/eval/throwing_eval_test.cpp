@@ -168,9 +168,7 @@ TEST(ThrowingEval, ThePresetsDiscardAThrowThatStretchesAJoint) {
   // the default 0.5 m let it win.
   auto g = load_genome(std::string(BESTIARY_SOURCE_DIR) + "/tests/creatures/catapult_stretched_joint.json");
   ASSERT_TRUE(g.ok()) << g.error();
-  const Preset* preset = nullptr;
-  for (const auto& p : presets())
-    if (p.name == "chaumont2007-catapult") preset = &p;
+  const Preset* preset = find_preset("chaumont2007-catapult");
   ASSERT_NE(preset, nullptr);
   auto run = read_run_config(preset->text, preset->name);
   ASSERT_TRUE(run.ok()) << run.error();

@@ -22,8 +22,7 @@ TEST(Presets, EveryPresetReadsAndDocumentsItself) {
 
 TEST(Presets, PaperPresetsCarryThePapersConstants) {
   auto find = [](const std::string& name) {
-    for (const auto& p : presets())
-      if (p.name == name) return *read_run_config(p.text, name);
+    if (const Preset* p = find_preset(name)) return *read_run_config(p->text, name);
     ADD_FAILURE() << name;
     return RunConfig{};
   };
@@ -61,6 +60,7 @@ TEST(Presets, PaperPresetsCarryThePapersConstants) {
     EXPECT_EQ(k.evolution.elite_fraction, 0.2) << name;
     EXPECT_EQ(k.sim.develop.max_body_length, 3.0) << name;
     EXPECT_EQ(k.sim.physics.max_joint_gap, 0.05) << name;
+    EXPECT_EQ(k.operators.catapult.release_delay_steps, 30) << name;
     if (std::string(name).find("-small") == std::string::npos) {
       EXPECT_EQ(k.evolution.population, 300) << name;
       EXPECT_EQ(k.evolution.generations, 100) << name;
