@@ -23,6 +23,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -63,14 +64,24 @@ struct Figures {
   double ours_contacts = 0, raw_contacts = 0;
 };
 
+/// The solver to time (--solver, --iterations); default: the dialect's.
+struct SolverChoice {
+  std::optional<Solver> solver;
+  std::optional<int> iterations;
+};
+
 Figures bench_creature(const char* label, const std::string& path, long steps, int reps,
-                       std::uint64_t seed) {
+                       std::uint64_t seed, const SolverChoice& choice) {
   auto genome = load_genome(path);
   if (!genome) {
     std::fprintf(stderr, "bench_step: %s\n", genome.error().c_str());
     std::exit(2);
   }
   SimConfig cfg = default_sim_config(genome->dialect);
+  if (choice.solver) cfg.physics.solver = *choice.solver;
+  if (choice.iterations) cfg.physics.solver_iterations = *choice.iterations;
+  // the raw replay places the creature unturned
+  cfg.start_yaw_jitter = 0;
   if (cfg.motor.model != MotorModel::Torque) {
     std::fprintf(stderr, "bench_step: %s: raw replay supports the Torque motor model only\n",
                  path.c_str());
@@ -143,9 +154,11 @@ int usage(const char* msg) {
   if (msg) std::fprintf(stderr, "bench_step: %s\n", msg);
   std::fprintf(stderr,
                "usage: bench_step [--quick] [--steps N] [--reps R] [--seed S] [--only NAME]\n"
+               "                  [--solver quickstep|exact] [--iterations N]\n"
                "  steps per second of our evaluation vs raw ODE, 6- and 12-part creatures\n"
                "  --quick   500 steps x 3 repetitions (smoke test)\n"
                "  --only    one creature: snake or centipede (for profiling)\n"
+               "  --solver, --iterations: the physics solver (default: the dialect's, exact)\n"
                "  defaults: 5000 steps x 9 repetitions, seed 1\n");
   return msg ? 2 : 0;
 }
@@ -157,6 +170,7 @@ int main(int argc, char** argv) {
   int reps = 9;
   std::uint64_t seed = 1;
   std::string only;
+  SolverChoice choice;
   for (int i = 1; i < argc; ++i) {
     std::string a = argv[i];
     auto value = [&](const char* name) -> long {
@@ -180,6 +194,13 @@ int main(int argc, char** argv) {
       only = argv[++i];
       if (only != "snake" && only != "centipede")
         return usage(("--only: expected snake or centipede, got \"" + only + "\"").c_str());
+    } else if (a == "--solver" && i + 1 < argc) {
+      std::string v = argv[++i];
+      if (v != "quickstep" && v != "exact")
+        return usage(("--solver: expected quickstep or exact, got \"" + v + "\"").c_str());
+      choice.solver = v == "exact" ? Solver::Exact : Solver::QuickStep;
+    } else if (a == "--iterations") {
+      choice.iterations = static_cast<int>(value("--iterations"));
     } else if (a == "-h" || a == "--help") {
       return usage(nullptr);
     } else {
@@ -207,7 +228,7 @@ int main(int argc, char** argv) {
   for (Case c : {Case{"snake (6 parts)", "snake.json", "snake"},
                  Case{"centipede (12 parts)", "centipede.json", "centipede"}}) {
     if (!only.empty() && only != c.name) continue;
-    Figures f = bench_creature(c.label, dir + c.file, steps, reps, seed);
+    Figures f = bench_creature(c.label, dir + c.file, steps, reps, seed, choice);
     double ratio = f.ours_sps / f.raw_sps;
     worst = std::min(worst, ratio);
     std::printf("%s: ours %.0f steps/s, raw ODE %.0f steps/s, ratio %.3f, contacts/step ours %.1f raw %.1f\n",

@@ -262,7 +262,10 @@ struct RawWorld {
   // one step, as World::step does it
   void step() {
     dSpaceCollide(space, this, &near_callback);
-    dWorldQuickStep(world, def.dt);
+    if (def.solver == Solver::Exact)
+      dWorldStep(world, def.dt);
+    else
+      dWorldQuickStep(world, def.dt);
     dJointGroupEmpty(contact_group);
   }
 };

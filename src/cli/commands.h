@@ -20,6 +20,9 @@ void add_evolve_commands(CLI::App& app);
 /// `show` and `render` (src/cli/watch.cpp).
 void add_watch_commands(CLI::App& app);
 
+/// `check` (src/cli/check.cpp).
+void add_check_command(CLI::App& app);
+
 /// Prints "bestiary: MESSAGE" on stderr and returns 2, the bad-input exit code.
 int fail(const std::string& message);
 

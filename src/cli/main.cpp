@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
   bx::add_simulate_commands(app);
   bx::add_evolve_commands(app);
   bx::add_watch_commands(app);
+  bx::add_check_command(app);
   CLI11_PARSE(app, argc, argv);
   return 0;
 }

@@ -1,5 +1,6 @@
 #include "eval/evaluate.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "brain/brain_model.h"
@@ -9,6 +10,9 @@
 namespace bx {
 
 namespace {
+
+// the stream of start poses (evolution.cpp's streams are 1-4, trials' 5, checks' 6)
+constexpr std::uint64_t kStartStream = 7;
 
 void record(const CreatureModel& m, const World& w, const BrainState& bs, Replay& r) {
   ReplayFrame f;
@@ -30,15 +34,21 @@ void record(const CreatureModel& m, const World& w, const BrainState& bs, Replay
 // test, and the replay frames.
 class Simulation {
  public:
-  Simulation(const CreatureModel& m, const SimConfig& cfg, double drop_height, Replay* replay)
+  Simulation(const CreatureModel& m, const SimConfig& cfg, double drop_height, double yaw, Replay* replay)
       : m_(m),
         cfg_(cfg),
         world_(cfg.physics),
         brain_(make_brain_state(m.brain)),
         replay_(replay),
-        motors_off_(m.effectors.size(), 0.0) {
+        motors_off_(m.effectors.size(), 0.0),
+        clamp_(cfg.effector_clamp.size() == 1
+                   ? std::vector<double>(m.effectors.size(), cfg.effector_clamp[0])
+                   : cfg.effector_clamp),
+        sum_(m.effectors.size(), 0.0),
+        sum_sq_(m.effectors.size(), 0.0) {
     // the creature resting drop_height above the ground
-    world_.add_creature(m, {{0, 0, drop_height - m.min_z()}, Mat3::identity()});
+    // (turned by `yaw` about the vertical, which keeps its height)
+    world_.add_creature(m, {{0, 0, drop_height - m.min_z()}, Mat3::rotation({0, 0, 1}, yaw)});
     if (replay_) record(m_, world_, brain_, *replay_);
   }
 
@@ -55,7 +65,17 @@ class Simulation {
   /// Act and step the physics (the motors follow the brain only when
   /// `controller_on`); false, with res.failed set, if the world blew up.
   bool act_and_step(bool controller_on, EvalResult& res) {
-    world_.apply_effectors(m_, cfg_.motor, controller_on ? brain_.effector_out : motors_off_);
+    const std::vector<double>& signals =
+        !controller_on ? motors_off_ : clamp_.empty() ? brain_.effector_out : clamp_;
+    if (controller_on) {
+      // the signals' activity, for diagnostics
+      for (std::size_t e = 0; e < signals.size(); ++e) {
+        sum_[e] += signals[e];
+        sum_sq_[e] += signals[e] * signals[e];
+      }
+      ++driven_steps_;
+    }
+    world_.apply_effectors(m_, cfg_.motor, signals);
     world_.step();
     ++res.steps;
     // a blown-up simulation ends the evaluation with a failing score
@@ -72,6 +92,25 @@ class Simulation {
     return true;
   }
 
+  /// What the world measured of its accuracy, and the effectors' activity.
+  EvalDiagnostics diagnostics() const {
+    EvalDiagnostics d;
+    const WorldStats& s = world_.stats();
+    d.max_joint_gap = s.max_joint_gap;
+    d.worst_joint = s.worst_joint;
+    d.max_stop_overshoot = s.max_stop_overshoot;
+    d.max_penetration = s.max_penetration;
+    if (driven_steps_ > 0) {
+      const double n = static_cast<double>(driven_steps_);
+      for (std::size_t e = 0; e < sum_.size(); ++e) {
+        double mean = sum_[e] / n;
+        d.effector_mean.push_back(mean);
+        d.effector_sd.push_back(std::sqrt(std::max(0.0, sum_sq_[e] / n - mean * mean)));
+      }
+    }
+    return d;
+  }
+
  private:
   const CreatureModel& m_;
   const SimConfig& cfg_;
@@ -80,12 +119,15 @@ class Simulation {
   Replay* replay_;
   long frames_ = 1;
   const std::vector<double> motors_off_;
+  const std::vector<double> clamp_;
+  std::vector<double> sum_, sum_sq_;
+  long driven_steps_ = 0;
 };
 
-EvalResult evaluate_locomotion(const CreatureModel& m, const SimConfig& cfg, EvalResult res,
+EvalResult evaluate_locomotion(const CreatureModel& m, const SimConfig& cfg, double yaw, EvalResult res,
                                Replay* replay) {
   const LocomotionDef& td = cfg.task;
-  Simulation sim(m, cfg, td.drop_height, replay);
+  Simulation sim(m, cfg, td.drop_height, yaw, replay);
   World& world = sim.world();
   const double dt = cfg.physics.dt;
   LocomotionTask task(td, dt, m.n_parts());
@@ -110,6 +152,7 @@ EvalResult evaluate_locomotion(const CreatureModel& m, const SimConfig& cfg, Eva
   }
   res.seconds = world.time();
   res.note = task.note();
+  res.diagnostics = sim.diagnostics();
   if (!res.failed) {
     res.distance = task.distance();
     res.fitness = task.fitness(m);
@@ -117,14 +160,14 @@ EvalResult evaluate_locomotion(const CreatureModel& m, const SimConfig& cfg, Eva
   return res;
 }
 
-EvalResult evaluate_throwing(const CreatureModel& m, const SimConfig& cfg, EvalResult res,
+EvalResult evaluate_throwing(const CreatureModel& m, const SimConfig& cfg, double yaw, EvalResult res,
                              Replay* replay) {
   const ThrowingDef& td = cfg.throwing;
   if (m.projectile < 0) {
     res.note = "not a catapult: the throwing task needs a genome with a catapult block";
     return res;
   }
-  Simulation sim(m, cfg, td.drop_height, replay);
+  Simulation sim(m, cfg, td.drop_height, yaw, replay);
   World& world = sim.world();
   const double dt = cfg.physics.dt;
   ThrowingTask task(td, dt);
@@ -148,6 +191,7 @@ EvalResult evaluate_throwing(const CreatureModel& m, const SimConfig& cfg, EvalR
   }
   res.seconds = world.time();
   res.note = task.note();
+  res.diagnostics = sim.diagnostics();
   res.release_time = task.release_time();
   if (replay) replay->release_time = task.release_time();
   if (!res.failed) {
@@ -163,9 +207,12 @@ EvalResult evaluate_once(const CreatureModel& m, const SimConfig& cfg, std::uint
   EvalResult res;
   res.warnings = m.warnings;
   reseed_physics(seed);
+  // the seed's start: a turn within +-start_yaw_jitter degrees
+  Rng start(stream_seed({seed, kStartStream}));
+  const double yaw = start.uniform(-1, 1) * cfg.start_yaw_jitter * kPi / 180;
   switch (cfg.task_kind) {
-    case TaskKind::Locomotion: return evaluate_locomotion(m, cfg, std::move(res), replay);
-    case TaskKind::Throwing: return evaluate_throwing(m, cfg, std::move(res), replay);
+    case TaskKind::Locomotion: return evaluate_locomotion(m, cfg, yaw, std::move(res), replay);
+    case TaskKind::Throwing: return evaluate_throwing(m, cfg, yaw, std::move(res), replay);
   }
   return res;
 }

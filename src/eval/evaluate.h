@@ -31,6 +31,18 @@ struct Replay {
   std::optional<Vec3> target;
 };
 
+/// How physically sound an evaluation was, and how its controller drove
+/// the motors (docs/physics.md): what `bestiary check` reports.
+struct EvalDiagnostics {
+  double max_joint_gap = 0;       ///< m: farthest any joint came apart (World::joint_gap)
+  int worst_joint = -1;           ///< the joint that did
+  double max_stop_overshoot = 0;  ///< rad or m: farthest past a joint stop
+  double max_penetration = 0;     ///< m: deepest contact, with the ground or between parts
+  /// Each effector's signal while the controller drove the motors: mean and
+  /// standard deviation over those steps (empty if it never did).
+  std::vector<double> effector_mean, effector_sd;
+};
+
 /// What an evaluation measured.
 struct EvalResult {
   bool failed = false;      ///< a numerical explosion ended it (fitness is 0)
@@ -46,6 +58,8 @@ struct EvalResult {
   /// SimConfig::trials > 1: each trial's fitness, the first being the one
   /// a replay shows (`fitness` is their mean); empty for a single trial.
   std::vector<double> trial_fitness;
+  /// The first trial's.
+  EvalDiagnostics diagnostics;
 };
 
 /// Simulates the creature on flat ground with its own brain, in the task

@@ -2,6 +2,8 @@
 // each dialect's paper constants as defaults.
 #pragma once
 
+#include <vector>
+
 #include "develop/develop.h"
 #include "genome/genome.h"
 #include "physics/physics_def.h"
@@ -30,7 +32,16 @@ struct SimConfig {
   /// their mean (QuickStep's randomised solver makes a chaotic motion, such
   /// as a throw, depend on the seed).
   int trials = 1;
+  /// Each physics seed turns the creature's starting pose about the vertical
+  /// by a uniform angle within +-this (degrees), so that seeds vary an
+  /// evaluation under the exact solver too, which, unlike QuickStep, draws
+  /// no random numbers (docs/physics.md). 0: every seed starts alike.
+  double start_yaw_jitter = 0.5;
   double replay_fps = 30;  ///< frames per simulated second in replays
+  /// Diagnostics (`bestiary check`, the rest tests), not a config key: when
+  /// non-empty the brain is bypassed and effector e holds effector_clamp[e]
+  /// (one value: every effector holds it) whenever the controller is on.
+  std::vector<double> effector_clamp;
 };
 
 /// The defaults of a dialect (its paper's constants; docs/config.md lists them).

@@ -45,6 +45,14 @@ const std::vector<Field>& fields() {
       {"physics", "max_speed", Field::Real, 1e-3, inf, {}, [](RunConfig& c) -> void* { return &c.sim.physics.max_speed; }, "explosion test: a part faster than this (m/s) ends the evaluation"},
       {"physics", "max_step_jump", Field::Real, 1e-6, inf, {}, [](RunConfig& c) -> void* { return &c.sim.physics.max_step_jump; }, "explosion test: a part moving farther than this in one step (m)"},
       {"physics", "max_joint_gap", Field::Real, 1e-6, inf, {}, [](RunConfig& c) -> void* { return &c.sim.physics.max_joint_gap; }, "explosion test: joint anchors drifting apart farther than this (m)"},
+      {"physics", "solver", Field::Choice, 0, 0, {"quickstep", "exact"}, [](RunConfig& c) -> void* { return &c.sim.physics.solver; }, "quickstep (iterative, solver_iterations) or exact (ODE's dWorldStep)"},
+      {"physics", "contact_erp", Field::Real, -1, 1, {}, [](RunConfig& c) -> void* { return &c.sim.physics.contact_erp; }, "ERP of contacts (negative: physics.erp)"},
+      {"physics", "contact_cfm", Field::Real, -1, 1, {}, [](RunConfig& c) -> void* { return &c.sim.physics.contact_cfm; }, "CFM of contacts (negative: physics.cfm)"},
+      {"physics", "stop_erp", Field::Real, -1, 1, {}, [](RunConfig& c) -> void* { return &c.sim.physics.stop_erp; }, "ERP of joint stops (negative: physics.erp)"},
+      {"physics", "stop_cfm", Field::Real, -1, 1, {}, [](RunConfig& c) -> void* { return &c.sim.physics.stop_cfm; }, "CFM of joint stops (negative: physics.cfm)"},
+      {"physics", "fudge_factor", Field::Real, 0, 1, {}, [](RunConfig& c) -> void* { return &c.sim.physics.fudge_factor; }, "share of a motor's force allowed at a joint stop (ODE's dParamFudgeFactor)"},
+      {"physics", "contact_max_correcting_vel", Field::Real, 0, 1e6, {}, [](RunConfig& c) -> void* { return &c.sim.physics.contact_max_correcting_vel; }, "fastest depenetration of contacts (m/s; 0: unbounded)"},
+      {"physics", "contact_surface_layer", Field::Real, 0, 1, {}, [](RunConfig& c) -> void* { return &c.sim.physics.contact_surface_layer; }, "depth contacts may sink before they push back (m)"},
       {"motor", "model", Field::Choice, 0, 0, {"servo", "saturation", "torque", "pd"}, [](RunConfig& c) -> void* { return &c.sim.motor.model; }, "servo (miconi2006), saturation (chaumont2007 5.3), torque (sims1994), pd (rivercrossing)"},
       {"motor", "max_speed", Field::Real, 0, inf, {}, [](RunConfig& c) -> void* { return &c.sim.motor.max_speed; }, "servo: target speed at signal 1; saturation: the fixed high target speed (rad/s or m/s)"},
       {"motor", "max_force", Field::Real, 0, inf, {}, [](RunConfig& c) -> void* { return &c.sim.motor.max_force; }, "servo: torque cap (N m or N)"},
@@ -68,6 +76,7 @@ const std::vector<Field>& fields() {
       {"task", "kappa", Field::Real, 0, 10, {}, [](RunConfig& c) -> void* { return &c.sim.task.kappa; }, "eq. 1's reward per block"},
       {"task", "kind", Field::Choice, 0, 0, {"locomotion", "throwing"}, [](RunConfig& c) -> void* { return &c.sim.task_kind; }, "locomotion (the [task] keys) or throwing (the [throwing] keys; needs catapults)"},
       {"task", "trials", Field::Int, 1, 1000, {}, [](RunConfig& c) -> void* { return &c.sim.trials; }, "evaluations per creature under different physics seeds; fitness is their mean"},
+      {"task", "start_yaw_jitter", Field::Real, 0, 180, {}, [](RunConfig& c) -> void* { return &c.sim.start_yaw_jitter; }, "each physics seed turns the start by up to this (degrees) about the vertical"},
       {"throwing", "fitness", Field::Choice, 0, 0, {"distance", "aim"}, [](RunConfig& c) -> void* { return &c.sim.throwing.fitness; }, "distance (chaumont2007 eq. 2: D_p) or aim (eq. 3: D_p - D_t)"},
       {"throwing", "seconds", Field::Real, 0, 1e6, {}, [](RunConfig& c) -> void* { return &c.sim.throwing.seconds; }, "longest evaluation (s); it ends earlier once the projectile rests"},
       {"throwing", "drop_height", Field::Real, 0, 1e3, {}, [](RunConfig& c) -> void* { return &c.sim.throwing.drop_height; }, "gap between the lowest part and the ground at the start (m)"},
@@ -100,6 +109,10 @@ const std::vector<Field>& fields() {
       {"catapult", "projectile_density", Field::Real, 1, 1e6, {}, [](RunConfig& c) -> void* { return &c.operators.catapult.projectile_density; }, "... and density (kg/m^3)"},
       {"catapult", "mutate_projectile", Field::Bool, 0, 0, {}, [](RunConfig& c) -> void* { return &c.operators.catapult.mutate_projectile; }, "mutation changes the projectile's size (4.2: \"in some experiments\")"},
       {"catapult", "release_delay_steps", Field::Int, 2, 1001, {}, [](RunConfig& c) -> void* { return &c.operators.catapult.release_delay_steps; }, "brain steps until the mechanism releases at the latest (4.1: 30)"},
+      {"check", "other_seeds", Field::Int, 0, 1000, {}, [](RunConfig& c) -> void* { return &c.check.other_seeds; }, "check: physics seeds tried besides the scored one"},
+      {"check", "min_other_seeds", Field::Real, 0, 1e6, {}, [](RunConfig& c) -> void* { return &c.check.min_other_seeds; }, "check: their median fitness must keep this share of the scored one"},
+      {"check", "min_converged", Field::Real, 0, 1e6, {}, [](RunConfig& c) -> void* { return &c.check.min_converged; }, "check: dt/2, dt/4 and twice the solver iterations each keep this share"},
+      {"check", "max_clamped", Field::Real, 0, 1e6, {}, [](RunConfig& c) -> void* { return &c.check.max_clamped; }, "check: with every effector held at its mean, at most this share"},
   };
   return f;
 }

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/result.h"
+#include "eval/check.h"
 #include "eval/sim_config.h"
 #include "evolve/evolution_def.h"
 #include "genome/operators.h"
@@ -22,6 +23,7 @@ struct RunConfig {
   SimConfig sim;
   EvolutionDef evolution;
   OperatorDef operators;
+  CheckDef check;  ///< the gates of `bestiary check`
 };
 
 /// The defaults of a dialect (its paper's constants).

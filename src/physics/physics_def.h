@@ -5,6 +5,12 @@
 
 namespace bx {
 
+/// How ODE solves the constraints of one step.
+enum class Solver {
+  QuickStep,  ///< dWorldQuickStep: iterative (solver_iterations), O(n) per step
+  Exact,      ///< dWorldStep: the exact LCP solve (Dantzig), O(n^3) per step
+};
+
 /// The physics world. Defaults are ODE's usual values; each dialect sets its
 /// paper's constants (see io/config.cpp).
 struct PhysicsDef {
@@ -13,13 +19,31 @@ struct PhysicsDef {
   double erp = 0.2;              ///< ODE error reduction parameter
   double cfm = 1e-5;             ///< ODE constraint force mixing
   double friction = 1.0;         ///< Coulomb coefficient, ground and part-part contacts
+  Solver solver = Solver::Exact;
   int solver_iterations = 20;    ///< QuickStep iterations
+  /// ERP and CFM of contacts and of joint stops (negative: the world's erp
+  /// and cfm, ODE's default behaviour).
+  double contact_erp = -1;
+  double contact_cfm = -1;
+  double stop_erp = -1;
+  double stop_cfm = -1;
+  /// dParamFudgeFactor of every joint stop: how much of a motor's force may
+  /// act at a stop (ODE: 1; smaller damps "jumping" at powered stops).
+  double fudge_factor = 1;
+  /// Fastest speed at which contacts push interpenetrating parts apart
+  /// (m/s; 0: no bound, ODE's default) and the depth they may sink before
+  /// that starts (m; ODE's surface layer, default 0).
+  double contact_max_correcting_vel = 0;
+  double contact_surface_layer = 0;
   int max_contacts = 4;          ///< contact points per colliding pair
   bool self_collision = true;    ///< non-adjacent parts collide with each other
   // numerical-explosion tests (chaumont2007 5.4): exceeding any ends the evaluation
   double max_speed = 50;         ///< a part's linear speed (m/s)
   double max_step_jump = 0.5;    ///< a part's displacement in one step (m)
-  double max_joint_gap = 0.5;    ///< distance between a joint's anchors on its two parts (m)
+  /// How far a joint may come apart (m): the distance between the points
+  /// that the joint holds together on its two parts (its anchor; a hinge's
+  /// axis; a slider's line and its stops; a fixed joint's whole pose).
+  double max_joint_gap = 0.5;
 };
 
 /// How effector signals in [-1,1] move joints.

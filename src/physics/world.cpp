@@ -63,6 +63,8 @@ void place_geom(dGeomID g, Shape shape, const Pose& pose) {
   dGeomSetRotation(g, m);
 }
 
+bool def_stop(double v) { return v >= 0; }
+
 bool is_linear_dof(JointType t, int dof) {
   return t == JointType::Slider || (t == JointType::Cylindrical && dof == 0);
 }
@@ -94,6 +96,14 @@ struct World::Impl {
     JointType type = JointType::Fixed;
     int parent = 0, child = 0;
     bool broken = false;
+    // points the joint holds together, in the parent's and the child's frame
+    // (joint_gap); for a linear joint only their offset across axis_local
+    // (parent frame) counts, and its position past [lo, hi]
+    int n_points = 0;
+    std::array<Vec3, 2> on_parent, on_child;
+    Vec3 axis_local;
+    bool linear = false;
+    std::vector<Limit> limits;  // per degree of freedom, as the model gives them
   };
 
   PhysicsDef def;
@@ -112,6 +122,59 @@ struct World::Impl {
   std::vector<dContact> contact_buf;
   double total_mass = 0;
   double t = 0;
+  WorldStats stats;
+
+  Vec3 world_point(int part, Vec3 local) const {
+    dVector3 out;
+    dBodyGetRelPointPos(bodies[part], local.x, local.y, local.z, out);
+    return vec(out);
+  }
+  Vec3 local_point(int part, Vec3 world) const {
+    dVector3 out;
+    dBodyGetPosRelPoint(bodies[part], world.x, world.y, world.z, out);
+    return vec(out);
+  }
+
+  // the world points of `j` that must coincide, from the current body poses
+  void hold_points(Joint& j, std::initializer_list<Vec3> points, bool linear, Vec3 axis) {
+    j.n_points = 0;
+    for (Vec3 p : points) {
+      j.on_parent[j.n_points] = local_point(j.parent, p);
+      j.on_child[j.n_points] = local_point(j.child, p);
+      ++j.n_points;
+    }
+    j.linear = linear;
+    if (linear) {
+      dVector3 a;
+      dBodyVectorFromWorld(bodies[j.parent], axis.x, axis.y, axis.z, a);
+      j.axis_local = vec(a);
+    }
+  }
+
+  // how far degree of freedom `dof` is past its stops (0 within them)
+  double overshoot(const Joint& j, int dof) const {
+    double x = position(j, dof);
+    const Limit& l = j.limits[dof];
+    return std::max({0.0, x - l.hi, l.lo - x});
+  }
+
+  double gap(const Joint& j) const {
+    if (j.broken) return 0;
+    double g = 0;
+    Vec3 axis;
+    if (j.linear) {
+      dVector3 a;
+      dBodyVectorToWorld(bodies[j.parent], j.axis_local.x, j.axis_local.y, j.axis_local.z, a);
+      axis = vec(a);
+    }
+    for (int k = 0; k < j.n_points; ++k) {
+      Vec3 d = world_point(j.child, j.on_child[k]) - world_point(j.parent, j.on_parent[k]);
+      if (j.linear) d = d - dot(d, axis) * axis;  // free along the axis
+      g = std::max(g, norm(d));
+    }
+    if (j.linear && !j.limits.empty()) g = std::max(g, overshoot(j, 0));
+    return g;
+  }
 
   // joint parameter of one degree of freedom
   void set_param(const Joint& j, int dof, int param, double v) const {
@@ -202,6 +265,15 @@ struct World::Impl {
       dContact& c = contact_buf[i];
       c.surface.mode = dContactApprox1;
       c.surface.mu = def.friction;
+      if (def.contact_erp >= 0) {
+        c.surface.mode |= dContactSoftERP;
+        c.surface.soft_erp = def.contact_erp;
+      }
+      if (def.contact_cfm >= 0) {
+        c.surface.mode |= dContactSoftCFM;
+        c.surface.soft_cfm = def.contact_cfm;
+      }
+      stats.max_penetration = std::max(stats.max_penetration, static_cast<double>(c.geom.depth));
       dJointID cj = dJointCreateContact(world, contact_group, &c);
       dJointAttach(cj, ba, bb);
       // ODE's normal points into geom a: a is touched on the face facing -n, b on +n
@@ -240,6 +312,9 @@ World::World(const PhysicsDef& def) : impl_(std::make_unique<Impl>()) {
   dWorldSetERP(w.world, def.erp);
   dWorldSetCFM(w.world, def.cfm);
   dWorldSetQuickStepNumIterations(w.world, def.solver_iterations);
+  if (def.contact_max_correcting_vel > 0)
+    dWorldSetContactMaxCorrectingVel(w.world, def.contact_max_correcting_vel);
+  dWorldSetContactSurfaceLayer(w.world, def.contact_surface_layer);
   dWorldSetAutoDisableFlag(w.world, 0);
   // each world its own threading implementation (DESIGN.md)
   w.threading = dThreadingAllocateSelfThreadedImplementation();
@@ -315,6 +390,19 @@ void World::add_creature(const CreatureModel& m, const Pose& placement) {
     Vec3 an = placement.apply(jm.anchor);
     Vec3 a1 = placement.R * jm.axis1, a2 = placement.R * jm.axis2;
     dBodyID b1 = w.bodies[jm.parent], b2 = w.bodies[jm.child];
+    // what joint_gap watches: a second point along the axis at the child's
+    // size, so a hinge bent off its axis shows as a gap too
+    Vec3 child_centre = vec(dBodyGetPosition(b2));
+    const Vec3& cs = m.parts[jm.child].size;
+    Vec3 along = an + std::max(0.5 * std::max({cs.x, cs.y, cs.z}), 0.01) * a1;
+    switch (jm.type) {
+      case JointType::Fixed: w.hold_points(j, {an, child_centre}, false, a1); break;
+      case JointType::Hinge: w.hold_points(j, {an, along}, false, a1); break;
+      case JointType::Universal:
+      case JointType::Spherical: w.hold_points(j, {an}, false, a1); break;
+      case JointType::Slider: w.hold_points(j, {an, child_centre}, true, a1); break;
+      case JointType::Cylindrical: w.hold_points(j, {an, along}, true, a1); break;
+    }
     switch (jm.type) {
       case JointType::Fixed:
         j.id = dJointCreateFixed(w.world, nullptr);
@@ -357,11 +445,16 @@ void World::add_creature(const CreatureModel& m, const Pose& placement) {
         dJointSetAMotorAxis(j.amotor, 2, 2, a2.x, a2.y, a2.z);
         break;
     }
-    // limits per degree of freedom
+    // limits per degree of freedom, with the stops' own ERP, CFM and fudge
     for (std::size_t d = 0; d < jm.limits.size(); ++d) {
-      w.set_param(j, static_cast<int>(d), dParamLoStop, jm.limits[d].lo);
-      w.set_param(j, static_cast<int>(d), dParamHiStop, jm.limits[d].hi);
+      int dof = static_cast<int>(d);
+      w.set_param(j, dof, dParamLoStop, jm.limits[d].lo);
+      w.set_param(j, dof, dParamHiStop, jm.limits[d].hi);
+      if (def_stop(w.def.stop_erp)) w.set_param(j, dof, dParamStopERP, w.def.stop_erp);
+      if (def_stop(w.def.stop_cfm)) w.set_param(j, dof, dParamStopCFM, w.def.stop_cfm);
+      w.set_param(j, dof, dParamFudgeFactor, w.def.fudge_factor);
     }
+    j.limits = jm.limits;
   }
 }
 
@@ -416,7 +509,10 @@ void World::step() {
   auto& w = *impl_;
   std::fill(w.contact_mask.begin(), w.contact_mask.end(), 0);
   dSpaceCollide(w.space, &w, &Impl::near_callback);
-  dWorldQuickStep(w.world, w.def.dt);
+  if (w.def.solver == Solver::Exact)
+    dWorldStep(w.world, w.def.dt);
+  else
+    dWorldQuickStep(w.world, w.def.dt);
   dJointGroupEmpty(w.contact_group);
   w.t += w.def.dt;
 }
@@ -473,26 +569,16 @@ std::string World::check_explosion() {
   for (std::size_t k = 0; k < w.joints.size(); ++k) {
     const Impl::Joint& j = w.joints[k];
     if (j.broken) continue;
-    dVector3 a, b;
-    switch (j.type) {
-      case JointType::Hinge:
-        dJointGetHingeAnchor(j.id, a);
-        dJointGetHingeAnchor2(j.id, b);
-        break;
-      case JointType::Universal:
-        dJointGetUniversalAnchor(j.id, a);
-        dJointGetUniversalAnchor2(j.id, b);
-        break;
-      case JointType::Spherical:
-        dJointGetBallAnchor(j.id, a);
-        dJointGetBallAnchor2(j.id, b);
-        break;
-      default: continue;  // fixed, slider, cylindrical: caught by speed and jump tests
+    for (std::size_t d = 0; d < j.limits.size(); ++d)
+      w.stats.max_stop_overshoot = std::max(w.stats.max_stop_overshoot, w.overshoot(j, static_cast<int>(d)));
+    double gap = w.gap(j);
+    if (gap > w.stats.max_joint_gap) {
+      w.stats.max_joint_gap = gap;
+      w.stats.worst_joint = static_cast<int>(k);
     }
-    double gap = norm(vec(a) - vec(b));
     if (gap > w.def.max_joint_gap) {
-      std::snprintf(buf, sizeof buf, "joint %zu: anchors %.3g m apart, above max_joint_gap %.3g",
-                    k, gap, w.def.max_joint_gap);
+      std::snprintf(buf, sizeof buf, "joint %zu (%s): %.3g m apart, above max_joint_gap %.3g", k,
+                    std::string(to_string(j.type)).c_str(), gap, w.def.max_joint_gap);
       return buf;
     }
   }
@@ -533,6 +619,8 @@ double World::joint_position(int j, int dof) const {
   return impl_->position(impl_->joints[j], dof);
 }
 double World::joint_rate(int j, int dof) const { return impl_->rate(impl_->joints[j], dof); }
+double World::joint_gap(int j) const { return impl_->gap(impl_->joints[j]); }
+const WorldStats& World::stats() const { return impl_->stats; }
 std::uint8_t World::contact_mask(int i) const { return impl_->contact_mask[i]; }
 double World::time() const { return impl_->t; }
 const PhysicsDef& World::def() const { return impl_->def; }

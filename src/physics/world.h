@@ -22,6 +22,15 @@ void ensure_ode_initialized();
 /// order). Call before every evaluation for reproducible results.
 void reseed_physics(std::uint64_t seed);
 
+/// What a world has measured of its own accuracy since it was made: maxima
+/// over every check_explosion() (joints) and every step (contacts).
+struct WorldStats {
+  double max_joint_gap = 0;       ///< m: the largest joint_gap() seen
+  int worst_joint = -1;           ///< the joint that had it
+  double max_stop_overshoot = 0;  ///< rad or m: farthest a degree of freedom went past its stop
+  double max_penetration = 0;     ///< m: the deepest contact, with the ground or between parts
+};
+
 /// A simulated world holding one creature. Not copyable; one per evaluation.
 class World {
  public:
@@ -58,6 +67,14 @@ class World {
   /// Empty if the world is sane, else why it exploded (NaN, too fast, a jump
   /// or a torn joint), naming the part or joint and the value.
   std::string check_explosion();
+
+  /// How far joint j has come apart now (m): the largest distance between
+  /// the points it holds together on its two parts (PhysicsDef::max_joint_gap);
+  /// for a slider or cylindrical joint, off its line or past its stops.
+  /// 0 for a broken joint.
+  double joint_gap(int j) const;
+  /// Accuracy measured so far.
+  const WorldStats& stats() const;
 
   /// Current pose of part i.
   Pose part_pose(int i) const;

@@ -67,7 +67,7 @@ TEST_F(Simulate, SameGenomeAndSeedGiveByteIdenticalReplaysInSeparateProcesses) {
   EXPECT_EQ(j["frames"].size(), 121u);
   EXPECT_EQ(j["frames"][120]["poses"].size(), 6u);
   // and a different physics configuration gives a different one
-  fs::path cfg = write("c.toml", "[physics]\nsolver_iterations = 5\n");
+  fs::path cfg = write("c.toml", "[physics]\nerp = 0.5\n");
   ASSERT_EQ(bestiary(base + c.string() + " --config " + cfg.string()).code, 0);
   EXPECT_NE(slurp(c), ra);
 }

@@ -1,0 +1,195 @@
+// `bestiary check`: re-evaluates a creature as it was scored, then under
+// other physics seeds, smaller steps, more solver iterations and with its
+// effectors held at their means, and says whether its fitness is physics or
+// artefact (src/eval/check.h, docs/physics.md).
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <sstream>
+
+#include "cli/commands.h"
+#include "develop/develop.h"
+#include "eval/check.h"
+#include "evolve/run.h"
+#include "genome/genome_json.h"
+#include "io/config.h"
+#include "io/run_store.h"
+
+namespace bx {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+/// Arguments of `bestiary check`.
+struct CheckArgs {
+  std::string target;  ///< a genome file or a run directory
+  std::optional<std::int64_t> id;
+  std::string config;
+  std::optional<std::uint64_t> seed;
+  std::vector<std::string> set;
+  bool json = false;
+};
+
+/// What is checked: the genome, the config and seed that scored it, and
+/// where they came from.
+struct Subject {
+  Genome genome;
+  RunConfig cfg;
+  std::uint64_t seed = 1;
+  std::string label;
+  std::optional<double> stored_fitness;  ///< a run's individual: the fitness the run recorded
+};
+
+Result<std::string> read_text(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) return Error{path + ": cannot read"};
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+// a run's individual (the best by default), with the run's config and its evaluation seed
+Result<Subject> from_run(const CheckArgs& a) {
+  if (!a.config.empty()) return Error{"--config: a run is checked with its own config (use --set to vary it)"};
+  if (a.seed) return Error{"--seed: a run's individual is checked with its own evaluation seed"};
+  auto store = RunStore::open(run_db_path(a.target));
+  if (!store) return Error{store.error()};
+  std::optional<Individual> ind;
+  if (a.id) {
+    ind = (*store)->individual(*a.id);
+    if (!ind) return Error{"--id: " + a.target + " has no individual " + std::to_string(*a.id)};
+  } else {
+    for (const auto& g : (*store)->generations()) {
+      auto best = (*store)->individual(g.best_id);
+      if (best && (!ind || best->fitness > ind->fitness)) ind = best;
+    }
+    if (!ind) return Error{a.target + ": no generation finished yet"};
+  }
+  auto cfg = read_run_config((*store)->meta("config"), run_config_path(a.target), a.set);
+  if (!cfg) return Error{cfg.error()};
+  std::uint64_t master = std::stoull((*store)->meta("seed"));
+  Subject s{ind->genome, *cfg, evaluation_seed(master, ind->id),
+            a.target + " individual " + std::to_string(ind->id) + " (generation " +
+                std::to_string(ind->generation) + ")",
+            ind->fitness};
+  return s;
+}
+
+// a genome file, with its dialect's defaults, --config and --set, as simulate takes it
+Result<Subject> from_genome(const CheckArgs& a) {
+  if (a.id) return Error{"--id: names an individual of a run; " + a.target + " is a genome file"};
+  auto g = load_genome(a.target);
+  if (!g) return Error{g.error()};
+  std::string text = "[genome]\ndialect = \"" + std::string(to_string(g->dialect)) + "\"\n";
+  std::string source = a.target;
+  if (!a.config.empty()) {
+    auto t = read_text(a.config);
+    if (!t) return Error{t.error()};
+    text = *t;
+    source = a.config;
+  }
+  std::vector<std::string> sets;
+  if (g->catapult) sets.push_back("task.kind=throwing");  // as simulate: a catapult throws
+  sets.insert(sets.end(), a.set.begin(), a.set.end());
+  auto cfg = read_run_config(text, source, sets);
+  if (!cfg) return Error{cfg.error()};
+  if (!a.config.empty() && cfg->dialect != g->dialect)
+    return Error{a.config + ": genome.dialect is " + std::string(to_string(cfg->dialect)) + ", the genome's is " +
+                 std::string(to_string(g->dialect))};
+  return Subject{std::move(*g), *cfg, a.seed.value_or(1), a.target, std::nullopt};
+}
+
+std::string ratio_text(double r) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3f", r);
+  return buf;
+}
+
+int cmd_check(const CheckArgs& a) {
+  auto subject = fs::is_directory(a.target) ? from_run(a) : from_genome(a);
+  if (!subject) return fail(subject.error());
+  const SimConfig& sim = subject->cfg.sim;
+  Development dev = develop(subject->genome, sim.develop);
+  if (!dev.viable()) return fail(subject->label + ": not viable: " + dev.reason);
+  const CreatureModel& m = *dev.model;
+  if (!a.json)
+    std::fprintf(stderr, "checking %s: %d parts, %zu effectors, seed %llu ...\n", subject->label.c_str(),
+                 m.n_parts(), m.effectors.size(), static_cast<unsigned long long>(subject->seed));
+  CheckReport rep = check_creature(m, sim, subject->seed, subject->cfg.check);
+  const EvalResult& s = rep.scored;
+  const EvalDiagnostics& d = s.diagnostics;
+
+  if (a.json) {
+    nlohmann::json out;
+    out["subject"] = subject->label;
+    out["seed"] = subject->seed;
+    out["fitness"] = s.fitness;
+    out["stored_fitness"] = subject->stored_fitness ? nlohmann::json(*subject->stored_fitness) : nlohmann::json(nullptr);
+    out["failed"] = s.failed;
+    out["failure"] = s.failure;
+    for (const auto& v : rep.variants)
+      out["variants"].push_back({{"name", v.name}, {"fitness", v.result.fitness}, {"ratio", v.ratio},
+                                 {"failed", v.result.failed}, {"failure", v.result.failure}});
+    out["median_other_seeds"] = rep.median_other_seeds;
+    out["effector_mean"] = d.effector_mean;
+    out["effector_sd"] = d.effector_sd;
+    out["max_joint_gap"] = d.max_joint_gap;
+    out["worst_joint"] = d.worst_joint;
+    out["max_stop_overshoot"] = d.max_stop_overshoot;
+    out["max_penetration"] = d.max_penetration;
+    out["passed"] = rep.passed();
+    out["failures"] = rep.failures;
+    std::printf("%s\n", out.dump().c_str());
+    return rep.passed() ? 0 : 1;
+  }
+
+  std::printf("%s: fitness %.6g", subject->label.c_str(), s.fitness);
+  if (subject->stored_fitness) std::printf(" (stored %.6g)", *subject->stored_fitness);
+  std::printf(", seed %llu\n", static_cast<unsigned long long>(subject->seed));
+  if (s.failed) std::printf("  failed: %s\n", s.failure.c_str());
+  for (const auto& v : rep.variants) {
+    std::printf("  %-14s fitness %-12.6g ratio %s", v.name.c_str(), v.result.fitness, ratio_text(v.ratio).c_str());
+    if (v.result.failed) std::printf("  (failed: %s)", v.result.failure.c_str());
+    std::printf("\n");
+  }
+  std::printf("  other seeds: median ratio %s\n", ratio_text(rep.median_other_seeds).c_str());
+  std::printf("  effector activity (s.d. of each signal while driven):");
+  for (double sd : d.effector_sd) std::printf(" %.3f", sd);
+  if (d.effector_sd.empty()) std::printf(" none");
+  std::printf("\n  largest joint separation %.2f mm", 1000 * d.max_joint_gap);
+  if (d.worst_joint >= 0) std::printf(" (joint %d)", d.worst_joint);
+  std::printf(", stop overshoot %.3f, deepest interpenetration %.2f mm\n", d.max_stop_overshoot,
+              1000 * d.max_penetration);
+  if (rep.passed()) {
+    std::printf("verdict: pass\n");
+    return 0;
+  }
+  std::printf("verdict: FAIL:");
+  for (std::size_t k = 0; k < rep.failures.size(); ++k)
+    std::printf("%s %s", k ? ";" : "", rep.failures[k].c_str());
+  std::printf("\n");
+  return 1;
+}
+
+}  // namespace
+
+void add_check_command(CLI::App& app) {
+  static CheckArgs a;
+  auto* c = app.add_subcommand(
+      "check", "Re-evaluate a creature under other seeds, smaller steps, more iterations and clamped effectors");
+  c->add_option("target", a.target, "Genome file, or run directory (its best by default)")->required();
+  c->add_option("--id", a.id, "A run's individual to check (default: the run's best)");
+  c->add_option("--config", a.config, "Config file for a genome file (default: its dialect's)");
+  c->add_option("--seed", a.seed, "Evaluation seed for a genome file (default 1)");
+  c->add_option("--set", a.set, "Override one config key: section.key=value (repeatable)");
+  c->add_flag("--json", a.json, "Print one JSON object");
+  c->footer("Exit code 0: passed the gates ([check] config keys); 1: failed them; 2: bad input.");
+  c->callback([] { std::exit(cmd_check(a)); });
+}
+
+}  // namespace bx

@@ -1,0 +1,50 @@
+// `bestiary check`: is a creature's fitness physics or artefact? Its scored
+// evaluation is repeated under other physics seeds, at smaller steps, with
+// more solver iterations and with its effectors held at their means; a
+// fitness that collapses under any of these was not earned by behaviour
+// (docs/physics.md).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "develop/creature_model.h"
+#include "eval/evaluate.h"
+
+namespace bx {
+
+/// The gates of a check, as fractions of the scored fitness (config section
+/// [check]). Defaults: issue 11's.
+struct CheckDef {
+  int other_seeds = 5;            ///< physics seeds besides the scored one
+  double min_other_seeds = 0.75;  ///< their median must keep this much
+  double min_converged = 0.75;    ///< dt/2, dt/4 and twice the iterations each keep this much
+  double max_clamped = 0.25;      ///< effectors held at their means keep at most this much
+};
+
+/// One re-evaluation of a check.
+struct CheckVariant {
+  std::string name;   ///< "seed 2", "dt/2", "dt/4", "2x iterations", "clamped"
+  EvalResult result;
+  double ratio = 0;   ///< its fitness over the scored fitness
+};
+
+/// What a check found.
+struct CheckReport {
+  EvalResult scored;
+  std::vector<CheckVariant> variants;
+  double median_other_seeds = 0;  ///< ratio
+  std::vector<std::string> failures;  ///< each gate that failed, with its figures; empty: passed
+  bool passed() const { return failures.empty(); }
+};
+
+/// Checks the creature's evaluation under `cfg` and `seed` (the one that
+/// scored it) against the gates.
+CheckReport check_creature(const CreatureModel& m, const SimConfig& cfg, std::uint64_t seed,
+                           const CheckDef& def);
+
+/// The physics seed of a check's k-th other seed (k from 1), unlike any trial's.
+std::uint64_t check_seed(std::uint64_t seed, int k);
+
+}  // namespace bx
