@@ -89,7 +89,7 @@ DialectRules chaumont2007_rules() {
       .max_parts = 100,        // our safety cap: the paper bounds genes, not blocks (sec. 5.5)
       .tree_only = false,      // Sims' graph genome (sec. 3.1)
       .shapes = {Shape::Box},  // sec. 3.1: cuboids
-      .joints = {JointType::Hinge, JointType::Slider},  // sec. 5.1: one degree of freedom per joint
+      .joints = {JointType::Hinge},  // sec. 5.1: "each (ball and socket) joint has only one degree of freedom": rotational
       .hinge_axis_y_or_z = false,
       .angle_step = 0,
       .max_neurons_per_part = 0,

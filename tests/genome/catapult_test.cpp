@@ -288,8 +288,8 @@ TEST_F(CatapultRules, FixedJointsElsewhereStayForbidden) {
   g.nodes[1].joint = JointGene{JointType::Fixed, {0, 0, 1}, {0, 1, 0}, {}};
   g.nodes[1].effectors.clear();
   EXPECT_EQ(error_of(g),
-            "nodes[1].joint.type: joint type not allowed in dialect chaumont2007 (expected one of "
-            "hinge, slider), got \"fixed\"");
+            "nodes[1].joint.type: joint type not allowed in dialect chaumont2007 (expected hinge), "
+            "got \"fixed\"");
 }
 
 TEST_F(CatapultRules, ProjectileHasNoNeurons) {

@@ -121,7 +121,8 @@ TEST(Dialect, Chaumont2007Rules) {
   EXPECT_EQ(r.max_parts, 100);
   EXPECT_FALSE(r.tree_only);
   EXPECT_EQ(r.shapes, std::vector<Shape>{Shape::Box});
-  EXPECT_EQ(r.joints, (std::vector<JointType>{JointType::Hinge, JointType::Slider}));
+  // 5.1: "each (ball and socket) joint has only one degree of freedom": no sliders
+  EXPECT_EQ(r.joints, (std::vector<JointType>{JointType::Hinge}));
   EXPECT_EQ(r.sensors, std::vector<SensorType>{SensorType::Contact});
   EXPECT_EQ(r.mass_rule, MassRule::Density);
   EXPECT_EQ(r.default_hinge_limits, std::nullopt);
@@ -172,7 +173,7 @@ TEST(Validate, MessagesHavePathsAndValues) {
 }
 
 TEST(Validate, SliderLimitsAreNotAngles) {
-  Genome g = pair(Dialect::Chaumont2007);
+  Genome g = pair(Dialect::Sims1994);
   g.nodes[1].joint = {JointType::Slider, {1, 0, 0}, {0, 1, 0}, {{-5, 5}}};
   EXPECT_TRUE(validate(g).ok()) << validate(g).error();
   g.nodes[1].joint.type = JointType::Hinge;

@@ -56,7 +56,7 @@ constexpr const char* kChaumont = R"({
                  {"fn": "mem", "params": {"n": 3}, "inputs": [{"from": "self", "neuron": 0}]}],
      "sensors": [{"type": "contact", "face": "-z"}],
      "edges": [{"to": 1}]},
-    {"size": [1, 0.5, 0.5], "joint": {"type": "slider", "axis1": [1, 0, 0]},
+    {"size": [1, 0.5, 0.5], "joint": {"type": "hinge", "axis1": [1, 0, 0]},
      "effectors": [{"inputs": [{"from": "parent", "neuron": 1}]}]}
   ]
 })";
@@ -611,10 +611,9 @@ TEST(GenomeJsonErrors, MiconiBrainRules) {
 }
 
 TEST(GenomeJsonErrors, ChaumontRules) {
-  EXPECT_EQ(err(edit(kChaumont, R"("type": "slider")", R"("type": "universal")")),
+  EXPECT_EQ(err(edit(kChaumont, R"("type": "hinge", "axis1": [1, 0, 0])", R"("type": "universal", "axis1": [1, 0, 0])")),
             "t.json: nodes[1].joint.type: joint type not allowed in dialect chaumont2007 (expected "
-            "one of hinge, "
-            "slider), got \"universal\"");
+            "hinge), got \"universal\"");
   EXPECT_EQ(
       err(edit(kChaumont, R"({"type": "contact", "face": "-z"})", R"({"type": "joint_angle"})")),
       "t.json: nodes[0].sensors[0].type: sensor type not allowed in dialect chaumont2007 (expected "
