@@ -51,7 +51,7 @@ const std::vector<Field>& fields() {
       {"motor", "strength", Field::Real, 0, inf, {}, [](RunConfig& c) -> void* { return &c.sim.motor.strength; }, "torque and saturation: N m per m^2 of the larger part's cross-section"},
       {"motor", "kp", Field::Real, 0, inf, {}, [](RunConfig& c) -> void* { return &c.sim.motor.kp; }, "pd: proportional gain"},
       {"motor", "kd", Field::Real, 0, inf, {}, [](RunConfig& c) -> void* { return &c.sim.motor.kd; }, "pd: damping gain"},
-      {"brain", "steps_per_physics_step", Field::Int, 1, 100, {}, [](RunConfig& c) -> void* { return &c.sim.brain_steps_per_physics_step; }, "brain updates per physics step"},
+      {"brain", "rate_hz", Field::Real, 0.1, 1e5, {}, [](RunConfig& c) -> void* { return &c.sim.brain_hz; }, "brain steps per simulated second, whatever physics.dt (genome delays count these steps)"},
       {"develop", "max_parts", Field::Int, 0, 100000, {}, [](RunConfig& c) -> void* { return &c.sim.develop.max_parts; }, "most parts after development (0: the dialect's limit)"},
       {"develop", "max_body_length", Field::Real, 0, 1e6, {}, [](RunConfig& c) -> void* { return &c.sim.develop.max_body_length; }, "largest extent of the starting pose (m): longer creatures are not viable (0: no limit)"},
       {"develop", "overlap_margin", Field::Real, 0, 1, {}, [](RunConfig& c) -> void* { return &c.sim.develop.overlap_margin; }, "self-intersection test shrinks parts by this much (m)"},
