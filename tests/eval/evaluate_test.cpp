@@ -97,7 +97,7 @@ TEST(Evaluate, ChaumontSequenceSettlesBurstsSettlesThenMeasures) {
   EXPECT_GT(r.seconds, 2 + 1.0 + 2 * 30 / 60.0 - 1e-9);
   EXPECT_LT(r.distance, 1e-3);
   // a creature that never stops moving is never measured and scores 0
-  cfg.task.settle_threshold = 0;
+  cfg.task.settle_speed = 0;
   r = evaluate(m, cfg, 1);
   EXPECT_EQ(r.fitness, 0);
   EXPECT_EQ(r.note, "never settled within settle_timeout");

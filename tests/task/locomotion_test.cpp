@@ -44,9 +44,9 @@ TEST(Locomotion, ChaumontSequenceGatesTheControllerAndMeasuresOnlyTheLastPhase) 
   def.activation = Activation::Chaumont2007;
   def.seconds = 2;
   def.burst_seconds = 1;
-  def.settle_steps = 3;
-  def.settle_threshold = 0.01;
   const double dt = 0.1;
+  def.settle_seconds = 3 * dt;  // three steps
+  def.settle_speed = 0.1;       // 0.01 m per step
   LocomotionTask t(def, dt, 1);
   double time = 0;
   Vec3 p{0, 0, 1};
