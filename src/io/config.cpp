@@ -72,7 +72,7 @@ const std::vector<Field>& fields() {
       {"throwing", "seconds", Field::Real, 0, 1e6, {}, [](RunConfig& c) -> void* { return &c.sim.throwing.seconds; }, "longest evaluation (s); it ends earlier once the projectile rests"},
       {"throwing", "drop_height", Field::Real, 0, 1e3, {}, [](RunConfig& c) -> void* { return &c.sim.throwing.drop_height; }, "gap between the lowest part and the ground at the start (m)"},
       {"throwing", "rest_speed", Field::Real, 0, 1e3, {}, [](RunConfig& c) -> void* { return &c.sim.throwing.rest_speed; }, "at rest: the projectile moves slower than this (m/s) ..."},
-      {"throwing", "rest_steps", Field::Int, 1, 1000000, {}, [](RunConfig& c) -> void* { return &c.sim.throwing.rest_steps; }, "... for this many consecutive steps"},
+      {"throwing", "rest_seconds", Field::Real, 0, 1e4, {}, [](RunConfig& c) -> void* { return &c.sim.throwing.rest_seconds; }, "... for this long without a break (s)"},
       {"throwing", "target", Field::Vec, -1e6, 1e6, {}, [](RunConfig& c) -> void* { return &c.sim.throwing.target; }, "aim: the target point [x, y, z] (m)"},
       {"replay", "fps", Field::Real, 1e-3, 1e4, {}, [](RunConfig& c) -> void* { return &c.sim.replay_fps; }, "replay frames per simulated second"},
       {"genome", "dialect", Field::Choice, 0, 0, {"sims1994", "miconi2006", "chaumont2007"}, [](RunConfig& c) -> void* { return &c.dialect; }, "sims1994, miconi2006 or chaumont2007: picks every default"},

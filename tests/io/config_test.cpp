@@ -107,12 +107,12 @@ TEST(Config, CatapultAndThrowingKeys) {
   auto c = read_run_config("[genome]\ndialect = \"chaumont2007\"\n[catapult]\nenabled = true\n"
                            "projectile_size = [0.3, 0.2, 0.05]\n[task]\nkind = \"throwing\"\n"
                            "[throwing]\nfitness = \"aim\"\ntarget = [4, -1, 0.1]\n",
-                           "c.toml", {"throwing.rest_steps=10", "catapult.mutate_projectile=true"});
+                           "c.toml", {"throwing.rest_seconds=0.25", "catapult.mutate_projectile=true"});
   ASSERT_TRUE(c.ok()) << c.error();
   EXPECT_EQ(c->sim.task_kind, TaskKind::Throwing);
   EXPECT_EQ(c->sim.throwing.fitness, ThrowFitness::Aim);
   EXPECT_EQ(c->sim.throwing.target, (Vec3{4, -1, 0.1}));
-  EXPECT_EQ(c->sim.throwing.rest_steps, 10);
+  EXPECT_EQ(c->sim.throwing.rest_seconds, 0.25);
   EXPECT_TRUE(c->operators.catapult.enabled);
   EXPECT_TRUE(c->operators.catapult.mutate_projectile);
   EXPECT_EQ(c->operators.catapult.projectile_size, (Vec3{0.3, 0.2, 0.05}));

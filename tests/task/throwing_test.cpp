@@ -24,7 +24,7 @@ void fly(ThrowingTask& t, const ThrowingDef& def, Vec3 p0, Vec3 v, double dt) {
     t.observe(s, p);
   }
   p.z = 0;
-  for (int k = 0; k <= def.rest_steps; ++k) t.observe(s += dt, p);
+  for (int k = 0; k * dt <= def.rest_seconds + dt; ++k) t.observe(s += dt, p);
 }
 
 TEST(Throwing, PointSegmentDistance) {
@@ -65,11 +65,11 @@ TEST(Throwing, DistanceIsHorizontalFromTheReleasePoint) {
   EXPECT_DOUBLE_EQ(t.release_time(), 0.5);
 }
 
-TEST(Throwing, ComesToRestAfterRestStepsOfStillness) {
+TEST(Throwing, ComesToRestAfterRestSecondsOfStillness) {
   ThrowingDef def;
-  def.rest_speed = 0.1;
-  def.rest_steps = 5;
   const double dt = 0.01;
+  def.rest_speed = 0.1;
+  def.rest_seconds = 5 * dt;  // five steps
   ThrowingTask t(def, dt);
   t.observe(0, {0, 0, 0});
   EXPECT_FALSE(t.done()) << "not released: nothing to wait for";
