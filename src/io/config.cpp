@@ -99,9 +99,25 @@ const std::vector<Field>& fields() {
       {"catapult", "projectile_size", Field::Vec, 1e-3, 100, {}, [](RunConfig& c) -> void* { return &c.operators.catapult.projectile_size; }, "the projectile of a random catapult: box extents [x, y, z] (m)"},
       {"catapult", "projectile_density", Field::Real, 1, 1e6, {}, [](RunConfig& c) -> void* { return &c.operators.catapult.projectile_density; }, "... and density (kg/m^3)"},
       {"catapult", "mutate_projectile", Field::Bool, 0, 0, {}, [](RunConfig& c) -> void* { return &c.operators.catapult.mutate_projectile; }, "mutation changes the projectile's size (4.2: \"in some experiments\")"},
-      {"catapult", "release_delay_steps", Field::Int, 2, 1001, {}, [](RunConfig& c) -> void* { return &c.operators.catapult.release_delay_steps; }, "brain steps until the mechanism releases at the latest (4.1: 30)"},
+      {"catapult", "release_delay_steps", Field::Int, 2, 1001, {}, [](RunConfig& c) -> void* { return &c.operators.catapult.release_delay_steps; }, "brain steps (at brain.rate_hz) until the mechanism releases at the latest (4.1: 30 = 0.5 s at 60 Hz)"},
   };
   return f;
+}
+
+// Keys of older configs that counted in physics steps, and the keys in seconds
+// (or per second) that replaced them: refused with a pointer to the new key.
+struct OldKey {
+  std::string_view section, key, use;
+};
+
+const std::vector<OldKey>& old_keys() {
+  static const std::vector<OldKey> k = {
+      {"brain", "steps_per_physics_step", "brain.rate_hz (brain steps per simulated second)"},
+      {"task", "settle_threshold", "task.settle_speed (m/s)"},
+      {"task", "settle_steps", "task.settle_seconds (s)"},
+      {"throwing", "rest_steps", "throwing.rest_seconds (s)"},
+  };
+  return k;
 }
 
 std::string num(double v);
@@ -234,7 +250,13 @@ Status apply_config_toml(RunConfig& cfg, std::string_view text, std::string_view
       const Field* field = nullptr;
       for (const auto& f : fields())
         if (f.section == sec && f.key == key.str()) field = &f;
-      if (!field) return Error{where + ": unknown key"};
+      if (!field) {
+        for (const auto& o : old_keys())
+          if (o.section == sec && o.key == key.str())
+            return Error{where + ": replaced by " + std::string(o.use) +
+                         ", got " + show(node)};
+        return Error{where + ": unknown key"};
+      }
       if (Status s = set_field(*field, out, node, where); !s) return s;
     }
   }
