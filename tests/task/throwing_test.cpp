@@ -85,6 +85,23 @@ TEST(Throwing, ComesToRestAfterRestSecondsOfStillness) {
   EXPECT_NEAR(t.distance(), x, 1e-12);
 }
 
+TEST(Throwing, RestIsASpeedHeldForRestSecondsWhateverTheStep) {
+  // rolling at 0.02 m/s, under rest_speed 0.05 m/s: at rest after
+  // rest_seconds, 0.5 s = 30 steps at 60 Hz, 60 at 120 Hz, 120 at 240 Hz
+  for (int hz : {60, 120, 240}) {
+    const double dt = 1.0 / hz;
+    ThrowingDef def;
+    ThrowingTask t(def, dt);
+    t.release(0, {0, 0, 0});
+    long steps = 0;
+    while (!t.done() && steps < 10 * hz) {
+      ++steps;
+      t.observe(static_cast<double>(steps) * dt, {0.02 * static_cast<double>(steps) * dt, 0, 0});
+    }
+    EXPECT_EQ(steps, hz / 2) << hz << " Hz";
+  }
+}
+
 TEST(Throwing, NeverReleasedScoresZeroWithANote) {
   ThrowingDef def;
   def.fitness = ThrowFitness::Aim;
