@@ -140,7 +140,7 @@ def early_releases(run_dir, gen):
     cfg = os.path.join(run_dir, "config.toml")
     text = open(cfg).read()
     dt = float(re.search(r"^dt = ([0-9.e+-]+)", text, re.M).group(1))
-    per = int(re.search(r"^steps_per_physics_step = (\d+)", text, re.M).group(1))
+    rate = float(re.search(r"^rate_hz = ([0-9.e+-]+)", text, re.M).group(1))
     early = n = 0
     with tempfile.TemporaryDirectory() as tmp:
         path = os.path.join(tmp, "genome.json")
@@ -151,7 +151,7 @@ def early_releases(run_dir, gen):
                 continue
             t = json.loads(r.stdout).get("release_time")
             steps = json.loads(genome)["catapult"].get("release", {}).get("delay_steps", 30)
-            delay = steps * dt / per
+            delay = steps / rate  # brain steps at brain.rate_hz
             n += 1
             early += t is not None and 0 <= t < delay - dt / 2
     return f"{100.0 * early / n:.0f}%" if n else "-"

@@ -55,12 +55,23 @@ class Simulation {
   World& world() { return world_; }
   const BrainState& brain() const { return brain_; }
 
-  /// Sense and think: sensor readings in, one physics step's worth of brain steps.
+  /// Sense and think before a physics step: every brain step due by the
+  /// step's end (brain_steps_due) runs, each brain.rate_hz's length, on the
+  /// sensor readings of now; when none is due the effectors hold.
   void think() {
+    const long due = brain_steps_due(physics_steps_ + 1, cfg_.physics.dt, cfg_.brain_hz);
+    if (brain_steps_ >= due) return;
     world_.read_sensors(m_, std::span<double>(brain_.values.data(), m_.brain.n_sensors));
-    const int substeps = cfg_.brain_steps_per_physics_step;
-    for (int k = 0; k < substeps; ++k) brain_step(m_.brain, brain_, cfg_.physics.dt / substeps);
+    for (; brain_steps_ < due; ++brain_steps_) {
+      brain_step(m_.brain, brain_, brain_dt_);
+      // the release fires at the first brain step whose signal reaches the threshold
+      if (m_.brain.has_release() && brain_.release_out >= ReleaseGene::kFiringThreshold)
+        release_fired_ = true;
+    }
   }
+
+  /// True once a brain step's release signal has reached the firing threshold.
+  bool release_fired() const { return release_fired_; }
 
   /// Act and step the physics (the motors follow the brain only when
   /// `controller_on`); false, with res.failed set, if the world blew up.
@@ -77,7 +88,9 @@ class Simulation {
     }
     world_.apply_effectors(m_, cfg_.motor, signals);
     world_.step();
+    ++physics_steps_;
     ++res.steps;
+    res.brain_steps = brain_steps_;
     // a blown-up simulation ends the evaluation with a failing score
     if (std::string why = world_.check_explosion(); !why.empty()) {
       res.failed = true;
@@ -122,6 +135,9 @@ class Simulation {
   const std::vector<double> clamp_;
   std::vector<double> sum_, sum_sq_;
   long driven_steps_ = 0;
+  const double brain_dt_ = 1.0 / cfg_.brain_hz;
+  long physics_steps_ = 0, brain_steps_ = 0;
+  bool release_fired_ = false;
 };
 
 EvalResult evaluate_locomotion(const CreatureModel& m, const SimConfig& cfg, double yaw, EvalResult res,
@@ -182,7 +198,7 @@ EvalResult evaluate_throwing(const CreatureModel& m, const SimConfig& cfg, doubl
   for (long step = 0; step < max_steps && !task.done(); ++step) {
     sim.think();
     // the release effector breaks the arm-projectile joint before this step
-    if (!task.released() && sim.brain().release_out >= ReleaseGene::kFiringThreshold) {
+    if (!task.released() && sim.release_fired()) {
       world.break_joint(m.release_joint);
       task.release(world.time(), world.part_pose(m.projectile).p);
     }
@@ -219,6 +235,11 @@ EvalResult evaluate_once(const CreatureModel& m, const SimConfig& cfg, std::uint
 
 }  // namespace
 
+long brain_steps_due(long physics_steps, double dt, double brain_hz) {
+  // the count of k >= 0 with k < physics_steps * dt * brain_hz, less a millionth
+  return static_cast<long>(std::ceil(static_cast<double>(physics_steps) * dt * brain_hz - 1e-6));
+}
+
 // the stream of trial seeds (evolution.cpp's streams are 1-4)
 constexpr std::uint64_t kTrialStream = 5;
 
@@ -239,6 +260,7 @@ EvalResult evaluate(const CreatureModel& m, const SimConfig& cfg, std::uint64_t 
     res.trial_fitness.push_back(t.fitness);
     fitness += t.fitness;
     res.steps += t.steps;
+    res.brain_steps += t.brain_steps;
     if (t.failed && !res.failed) {
       res.failed = true;
       res.failure = "trial " + std::to_string(k + 1) + " of " + std::to_string(cfg.trials) + ": " +

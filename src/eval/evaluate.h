@@ -53,7 +53,8 @@ struct EvalResult {
   double release_time = -1; ///< throwing: when the projectile was released (s), or -1
   double target_miss = -1;  ///< throwing, aim: D_t (m), or -1
   double seconds = 0;       ///< simulated time
-  long steps = 0;
+  long steps = 0;            ///< physics steps
+  long brain_steps = 0;      ///< brain steps (at SimConfig::brain_hz)
   std::vector<std::string> warnings;
   /// SimConfig::trials > 1: each trial's fitness, the first being the one
   /// a replay shows (`fitness` is their mean); empty for a single trial.
@@ -69,12 +70,20 @@ struct EvalResult {
 /// When `replay` is given, frames are appended to it.
 ///
 /// With cfg.trials = K > 1 it evaluates K times, under trial_seed(seed, 0..K-1):
-/// fitness is the trials' mean (each in trial_fitness), steps their sum, and
-/// a numerical explosion in any trial fails the whole evaluation; the rest
-/// (distance, release, target miss, seconds, the replay) is the first
-/// trial's, whose seed is `seed` itself.
+/// fitness is the trials' mean (each in trial_fitness), steps and
+/// brain_steps their sums, and a numerical explosion in any trial fails the
+/// whole evaluation; the rest (distance, release, target miss, seconds, the
+/// replay) is the first trial's, whose seed is `seed` itself.
 EvalResult evaluate(const CreatureModel& m, const SimConfig& cfg, std::uint64_t seed,
                     Replay* replay = nullptr);
+
+/// The brain's schedule: how many brain steps have run by the end of the
+/// first `physics_steps` physics steps of `dt`. Brain step k (from 0) runs
+/// just before the physics step whose span [n dt, (n+1) dt) holds its time
+/// k / brain_hz, so this counts the k with k / brain_hz < physics_steps * dt,
+/// to a millionth of a brain step (rounding never adds or drops one: at
+/// brain_hz = 1 / dt it is physics_steps, at 2 / dt twice that).
+long brain_steps_due(long physics_steps, double dt, double brain_hz);
 
 /// The physics seed of trial `trial` (0-based) of an evaluation under `seed`.
 std::uint64_t trial_seed(std::uint64_t seed, int trial);

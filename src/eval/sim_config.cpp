@@ -9,6 +9,7 @@ SimConfig default_sim_config(Dialect d) {
       // Table 1: step 0.01 s, ERP 0.015, CFM 0.01, motors 4 N and 4 rad/s;
       // 10,000 steps per evaluation; distance along x after the first 1/8 (5.2)
       c.physics.dt = 0.01;
+      c.brain_hz = 100;  // one brain step per physics step
       c.physics.erp = 0.015;
       c.physics.cfm = 0.01;
       c.motor.model = MotorModel::Servo;
@@ -23,6 +24,7 @@ SimConfig default_sim_config(Dialect d) {
       // 3.4: joint strength proportional to the larger block's cross-section;
       // 3.5: 20 s evaluations; 3.6: friction "set high" (our value: 2)
       c.physics.dt = 1.0 / 60;
+      c.brain_hz = 60;  // one brain step per physics step (4.1: 30 steps = 0.5 s)
       c.physics.friction = 2.0;
       c.motor.model = MotorModel::Saturation;
       // the paper gives neither strength nor target speed: ours let random
@@ -41,9 +43,9 @@ SimConfig default_sim_config(Dialect d) {
       // Sims (1994): effector torque scaled by cross-section; two brain steps per
       // physics step
       c.physics.dt = 0.01;
+      c.brain_hz = 200;
       c.motor.model = MotorModel::Torque;
       c.motor.strength = 1000;
-      c.brain_steps_per_physics_step = 2;
       c.task.seconds = 10;
       c.task.fitness = LocomotionFitness::Speed;  // speed of the centre of mass
       break;

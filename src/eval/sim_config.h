@@ -23,7 +23,9 @@ enum class TaskKind {
 struct SimConfig {
   PhysicsDef physics;
   MotorDef motor;
-  int brain_steps_per_physics_step = 1;
+  /// Brain steps per simulated second, independent of physics.dt: brain step
+  /// k runs at time k / brain_hz, each one brain step long (1 / brain_hz s).
+  double brain_hz = 100;
   DevelopDef develop;
   TaskKind task_kind = TaskKind::Locomotion;
   LocomotionDef task;

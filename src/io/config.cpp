@@ -59,7 +59,7 @@ const std::vector<Field>& fields() {
       {"motor", "strength", Field::Real, 0, inf, {}, [](RunConfig& c) -> void* { return &c.sim.motor.strength; }, "torque and saturation: N m per m^2 of the larger part's cross-section"},
       {"motor", "kp", Field::Real, 0, inf, {}, [](RunConfig& c) -> void* { return &c.sim.motor.kp; }, "pd: proportional gain"},
       {"motor", "kd", Field::Real, 0, inf, {}, [](RunConfig& c) -> void* { return &c.sim.motor.kd; }, "pd: damping gain"},
-      {"brain", "steps_per_physics_step", Field::Int, 1, 100, {}, [](RunConfig& c) -> void* { return &c.sim.brain_steps_per_physics_step; }, "brain updates per physics step"},
+      {"brain", "rate_hz", Field::Real, 0.1, 1e5, {}, [](RunConfig& c) -> void* { return &c.sim.brain_hz; }, "brain steps per simulated second, whatever physics.dt (genome delays count these steps)"},
       {"develop", "max_parts", Field::Int, 0, 100000, {}, [](RunConfig& c) -> void* { return &c.sim.develop.max_parts; }, "most parts after development (0: the dialect's limit)"},
       {"develop", "max_body_length", Field::Real, 0, 1e6, {}, [](RunConfig& c) -> void* { return &c.sim.develop.max_body_length; }, "largest extent of the starting pose (m): longer creatures are not viable (0: no limit)"},
       {"develop", "overlap_margin", Field::Real, 0, 1, {}, [](RunConfig& c) -> void* { return &c.sim.develop.overlap_margin; }, "self-intersection test shrinks parts by this much (m)"},
@@ -69,8 +69,8 @@ const std::vector<Field>& fields() {
       {"task", "skip_fraction", Field::Real, 0, 1, {}, [](RunConfig& c) -> void* { return &c.sim.task.skip_fraction; }, "distance counts from this fraction of the evaluation on"},
       {"task", "fitness", Field::Choice, 0, 0, {"distance", "speed", "chaumont2007"}, [](RunConfig& c) -> void* { return &c.sim.task.fitness; }, "distance, speed (distance / measured time) or chaumont2007 (eq. 1)"},
       {"task", "activation", Field::Choice, 0, 0, {"always", "chaumont2007"}, [](RunConfig& c) -> void* { return &c.sim.task.activation; }, "always, or chaumont2007 (settle, 1 s burst, settle, measure)"},
-      {"task", "settle_threshold", Field::Real, 0, 1e3, {}, [](RunConfig& c) -> void* { return &c.sim.task.settle_threshold; }, "settled: every part moves less than this per step (m)"},
-      {"task", "settle_steps", Field::Int, 1, 1000000, {}, [](RunConfig& c) -> void* { return &c.sim.task.settle_steps; }, "... for this many consecutive steps"},
+      {"task", "settle_speed", Field::Real, 0, 1e3, {}, [](RunConfig& c) -> void* { return &c.sim.task.settle_speed; }, "settled: every part moves less than this times the step length in each step (m/s) ..."},
+      {"task", "settle_seconds", Field::Real, 0, 1e4, {}, [](RunConfig& c) -> void* { return &c.sim.task.settle_seconds; }, "... for this long without a break (s)"},
       {"task", "settle_timeout", Field::Real, 0, 1e4, {}, [](RunConfig& c) -> void* { return &c.sim.task.settle_timeout; }, "never settled within this (s): fitness 0"},
       {"task", "burst_seconds", Field::Real, 0, 1e4, {}, [](RunConfig& c) -> void* { return &c.sim.task.burst_seconds; }, "the first controller activation (s)"},
       {"task", "kappa", Field::Real, 0, 10, {}, [](RunConfig& c) -> void* { return &c.sim.task.kappa; }, "eq. 1's reward per block"},
@@ -81,7 +81,7 @@ const std::vector<Field>& fields() {
       {"throwing", "seconds", Field::Real, 0, 1e6, {}, [](RunConfig& c) -> void* { return &c.sim.throwing.seconds; }, "longest evaluation (s); it ends earlier once the projectile rests"},
       {"throwing", "drop_height", Field::Real, 0, 1e3, {}, [](RunConfig& c) -> void* { return &c.sim.throwing.drop_height; }, "gap between the lowest part and the ground at the start (m)"},
       {"throwing", "rest_speed", Field::Real, 0, 1e3, {}, [](RunConfig& c) -> void* { return &c.sim.throwing.rest_speed; }, "at rest: the projectile moves slower than this (m/s) ..."},
-      {"throwing", "rest_steps", Field::Int, 1, 1000000, {}, [](RunConfig& c) -> void* { return &c.sim.throwing.rest_steps; }, "... for this many consecutive steps"},
+      {"throwing", "rest_seconds", Field::Real, 0, 1e4, {}, [](RunConfig& c) -> void* { return &c.sim.throwing.rest_seconds; }, "... for this long without a break (s)"},
       {"throwing", "target", Field::Vec, -1e6, 1e6, {}, [](RunConfig& c) -> void* { return &c.sim.throwing.target; }, "aim: the target point [x, y, z] (m)"},
       {"replay", "fps", Field::Real, 1e-3, 1e4, {}, [](RunConfig& c) -> void* { return &c.sim.replay_fps; }, "replay frames per simulated second"},
       {"genome", "dialect", Field::Choice, 0, 0, {"sims1994", "miconi2006", "chaumont2007"}, [](RunConfig& c) -> void* { return &c.dialect; }, "sims1994, miconi2006 or chaumont2007: picks every default"},
@@ -108,13 +108,29 @@ const std::vector<Field>& fields() {
       {"catapult", "projectile_size", Field::Vec, 1e-3, 100, {}, [](RunConfig& c) -> void* { return &c.operators.catapult.projectile_size; }, "the projectile of a random catapult: box extents [x, y, z] (m)"},
       {"catapult", "projectile_density", Field::Real, 1, 1e6, {}, [](RunConfig& c) -> void* { return &c.operators.catapult.projectile_density; }, "... and density (kg/m^3)"},
       {"catapult", "mutate_projectile", Field::Bool, 0, 0, {}, [](RunConfig& c) -> void* { return &c.operators.catapult.mutate_projectile; }, "mutation changes the projectile's size (4.2: \"in some experiments\")"},
-      {"catapult", "release_delay_steps", Field::Int, 2, 1001, {}, [](RunConfig& c) -> void* { return &c.operators.catapult.release_delay_steps; }, "brain steps until the mechanism releases at the latest (4.1: 30)"},
+      {"catapult", "release_delay_steps", Field::Int, 2, 1001, {}, [](RunConfig& c) -> void* { return &c.operators.catapult.release_delay_steps; }, "brain steps (at brain.rate_hz) until the mechanism releases at the latest (4.1: 30 = 0.5 s at 60 Hz)"},
       {"check", "other_seeds", Field::Int, 0, 1000, {}, [](RunConfig& c) -> void* { return &c.check.other_seeds; }, "check: physics seeds tried besides the scored one"},
       {"check", "min_other_seeds", Field::Real, 0, 1e6, {}, [](RunConfig& c) -> void* { return &c.check.min_other_seeds; }, "check: their median fitness must keep this share of the scored one"},
       {"check", "min_converged", Field::Real, 0, 1e6, {}, [](RunConfig& c) -> void* { return &c.check.min_converged; }, "check: dt/2, dt/4 and twice the solver iterations each keep this share"},
       {"check", "max_clamped", Field::Real, 0, 1e6, {}, [](RunConfig& c) -> void* { return &c.check.max_clamped; }, "check: with every effector held at its mean, at most this share"},
   };
   return f;
+}
+
+// Keys of older configs that counted in physics steps, and the keys in seconds
+// (or per second) that replaced them: refused with a pointer to the new key.
+struct OldKey {
+  std::string_view section, key, use;
+};
+
+const std::vector<OldKey>& old_keys() {
+  static const std::vector<OldKey> k = {
+      {"brain", "steps_per_physics_step", "brain.rate_hz (brain steps per simulated second)"},
+      {"task", "settle_threshold", "task.settle_speed (m/s)"},
+      {"task", "settle_steps", "task.settle_seconds (s)"},
+      {"throwing", "rest_steps", "throwing.rest_seconds (s)"},
+  };
+  return k;
 }
 
 std::string num(double v);
@@ -247,7 +263,13 @@ Status apply_config_toml(RunConfig& cfg, std::string_view text, std::string_view
       const Field* field = nullptr;
       for (const auto& f : fields())
         if (f.section == sec && f.key == key.str()) field = &f;
-      if (!field) return Error{where + ": unknown key"};
+      if (!field) {
+        for (const auto& o : old_keys())
+          if (o.section == sec && o.key == key.str())
+            return Error{where + ": replaced by " + std::string(o.use) +
+                         ", got " + show(node)};
+        return Error{where + ": unknown key"};
+      }
       if (Status s = set_field(*field, out, node, where); !s) return s;
     }
   }

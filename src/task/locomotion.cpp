@@ -25,13 +25,14 @@ void LocomotionTask::begin_measure(double t, Vec3 com) {
   t_start_ = t;
 }
 
-// counts consecutive still steps; moves on once settled, gives up after the timeout
+// counts consecutive still steps; moves on once they last settle_seconds,
+// gives up after the timeout
 void LocomotionTask::settle(double t, const std::vector<Vec3>& parts, Phase next) {
   double largest = 0;
   for (std::size_t i = 0; i < parts.size(); ++i)
     largest = std::max(largest, norm(parts[i] - prev_parts_[i]));
-  still_steps_ = largest < def_.settle_threshold ? still_steps_ + 1 : 0;
-  if (still_steps_ >= def_.settle_steps) {
+  still_steps_ = largest < def_.settle_speed * dt_ ? still_steps_ + 1 : 0;
+  if (still_steps_ > 0 && static_cast<double>(still_steps_) * dt_ >= def_.settle_seconds - 1e-9) {
     phase_ = next;
     phase_start_ = t;
     still_steps_ = 0;

@@ -26,10 +26,11 @@ void ThrowingTask::observe(double, Vec3 projectile) {
   if (!released_ || done_) return;
   // the path since the release, one segment per step
   miss_ = std::min(miss_, point_segment_distance(def_.target, last_, projectile));
-  // at rest: barely moving for rest_steps steps in a row
+  // at rest: barely moving, step after step, for rest_seconds
   double moved = norm(projectile - last_);
   still_steps_ = moved < def_.rest_speed * dt_ ? still_steps_ + 1 : 0;
-  if (still_steps_ >= def_.rest_steps) done_ = true;
+  if (still_steps_ > 0 && static_cast<double>(still_steps_) * dt_ >= def_.rest_seconds - 1e-9)
+    done_ = true;
   last_ = projectile;
 }
 

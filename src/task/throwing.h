@@ -24,10 +24,11 @@ struct ThrowingDef {
   double seconds = 20;
   /// Gap between the lowest part and the ground at the start (m).
   double drop_height = 0.1;
-  /// At rest: the projectile's centre moves less than rest_speed * dt per step
-  /// for rest_steps consecutive steps after the release. Our choice.
-  double rest_speed = 0.05;
-  int rest_steps = 30;
+  /// At rest: the projectile's centre moves less than rest_speed * dt over
+  /// each step of dt, for rest_seconds without a break after the release
+  /// (30 steps at 60 Hz). Our choice.
+  double rest_speed = 0.05;   ///< m/s
+  double rest_seconds = 0.5;  ///< s
   /// The aim task's target point (m). Our choice: 3 m ahead along +x, at the
   /// height of a 15 cm projectile's centre lying on the ground.
   Vec3 target{3, 0, 0.075};
@@ -68,7 +69,7 @@ class ThrowingTask {
   double t_release_ = 0;
   Vec3 start_, last_;
   double miss_ = 0;
-  int still_steps_ = 0;
+  long still_steps_ = 0;  ///< consecutive still steps of dt
 };
 
 /// Least distance from point p to the segment [a, b].

@@ -88,6 +88,7 @@ TEST_F(Simulate, BadInputGivesOneErrorLineAndNoFile) {
   fs::path bad_genome = write("bad.json", R"({"format":"bestiary-genome","version":1,"dialect":"sims1994",
     "nodes":[{"size":[0.5,-1,0.5]}]})");
   fs::path bad_cfg = write("bad.toml", "[physics]\nerp = 3\n");
+  fs::path old_cfg = write("old.toml", "[brain]\nsteps_per_physics_step = 2\n");
   struct Case {
     std::string args, error;
   };
@@ -97,6 +98,8 @@ TEST_F(Simulate, BadInputGivesOneErrorLineAndNoFile) {
       {bad_genome.string(), bad_genome.string() + ": nodes[0].size: each dimension must be > 0, got [0.5, -1.0, 0.5]"},
       {creature("box.json") + " --config " + bad_cfg.string(),
        bad_cfg.string() + ": physics.erp: out of range [0, 1], got 3"},
+      {creature("box.json") + " --config " + old_cfg.string(),
+       old_cfg.string() + ": brain.steps_per_physics_step: replaced by brain.rate_hz (brain steps per simulated second), got 2"},
       {creature("box.json") + " --seconds -2", "--seconds: expected a number in (0, 1e6], got -2"},
       {creature("box.json") + " --config " + (dir / "nope.toml").string(),
        (dir / "nope.toml").string() + ": cannot open"},

@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <numbers>
+
 #include "develop/develop.h"
 #include "genome/genome_json.h"
 #include "io/replay_file.h"
@@ -85,6 +88,112 @@ TEST(Evaluate, ExplosionEndsTheEvaluationWithAFailingScore) {
   EXPECT_NE(r.failure.find("above max_speed 0.05"), std::string::npos) << r.failure;
 }
 
+// A box whose brain counts its own steps: n0 is a constant 0.5 (sigmoid of
+// nothing), n1 adds 2 n0 to itself each step (n1 = brain steps - 1), n2
+// integrates 2 n0 over brain time, n3 oscillates at 1 Hz of brain time.
+CreatureModel counting_box() {
+  auto g = genome_from_string(R"({"format": "bestiary-genome", "version": 1, "dialect": "sims1994",
+    "nodes": [{"size": [0.4, 0.4, 0.4], "neurons": [
+      {"fn": "sigmoid"},
+      {"fn": "sum", "inputs": [{"from": "self", "neuron": 1}, {"from": "self", "neuron": 0, "weight": 2}]},
+      {"fn": "integrate", "inputs": [{"from": "self", "neuron": 0, "weight": 2}]},
+      {"fn": "oscillate-wave", "params": {"freq": 1}}]}]})",
+                              "counting_box");
+  EXPECT_TRUE(g.ok()) << g.error();
+  Development d = develop(*g);
+  EXPECT_TRUE(d.viable()) << d.reason;
+  return *d.model;
+}
+
+TEST(Evaluate, BrainStepsDueCountWholeBrainStepsWithoutRoundingSlips) {
+  for (long n = 0; n <= 100000; ++n) {
+    ASSERT_EQ(brain_steps_due(n, 0.01, 200), 2 * n) << n;       // sims1994: two per step
+    ASSERT_EQ(brain_steps_due(n, 1.0 / 60, 60), n) << n;        // chaumont2007: one per step
+    ASSERT_EQ(brain_steps_due(n, 0.01, 50), (n + 1) / 2) << n;  // one every other step
+    ASSERT_EQ(brain_steps_due(n, 1.0 / 240, 60), (n + 3) / 4) << n;
+  }
+}
+
+TEST(Evaluate, TheBrainRunsAtBrainHzWhateverThePhysicsStep) {
+  // sims1994's 200 Hz brain under physics steps of 0.01, 0.005 and 0.0025 s:
+  // the same 200 brain steps per second, and the same brain at every frame
+  CreatureModel m = counting_box();
+  SimConfig cfg = default_sim_config(Dialect::Sims1994);
+  ASSERT_EQ(cfg.brain_hz, 200);
+  cfg.task.seconds = 1;
+  cfg.replay_fps = 10;  // frames at multiples of 0.1 s, a whole number of steps at each dt
+  Replay first;
+  for (double dt : {0.01, 0.005, 0.0025}) {
+    cfg.physics.dt = dt;
+    Replay r;
+    EvalResult res = evaluate(m, cfg, 1, &r);
+    ASSERT_FALSE(res.failed) << res.failure;
+    EXPECT_EQ(res.steps, std::lround(1 / dt)) << dt;
+    EXPECT_EQ(res.brain_steps, 200) << dt;
+    ASSERT_EQ(r.frames.size(), 11u) << dt;
+    for (std::size_t j = 1; j < r.frames.size(); ++j) {
+      const std::vector<double>& n = r.frames[j].neurons;
+      const double steps = 20.0 * static_cast<double>(j);  // 200 Hz for 0.1 j s
+      EXPECT_EQ(n[1], steps - 1) << "dt " << dt << ", frame " << j;
+      EXPECT_NEAR(n[2], (steps - 1) / 200, 1e-12) << "dt " << dt << ", frame " << j;
+      if (!first.frames.empty()) {
+        EXPECT_EQ(n, first.frames[j].neurons) << "dt " << dt << ", frame " << j;
+      }
+    }
+    if (first.frames.empty()) first = r;
+  }
+}
+
+TEST(Evaluate, ABrainSlowerThanThePhysicsHoldsItsOutputsBetweenItsSteps) {
+  // 50 Hz under 0.01 s steps: a brain step before every other physics step
+  CreatureModel m = counting_box();
+  SimConfig cfg = default_sim_config(Dialect::Sims1994);
+  cfg.brain_hz = 50;
+  cfg.task.seconds = 1;
+  cfg.replay_fps = 100;  // a frame after every physics step
+  Replay r;
+  EvalResult res = evaluate(m, cfg, 1, &r);
+  EXPECT_EQ(res.steps, 100);
+  EXPECT_EQ(res.brain_steps, 50);
+  ASSERT_EQ(r.frames.size(), 101u);
+  // frames 2j - 1 and 2j follow brain step j - 1: held through two steps
+  for (std::size_t j = 1; j <= 50; ++j) {
+    EXPECT_EQ(r.frames[2 * j - 1].neurons, r.frames[2 * j].neurons) << j;
+    EXPECT_EQ(r.frames[2 * j].neurons[1], static_cast<double>(j) - 1) << j;
+    EXPECT_NEAR(r.frames[2 * j].neurons[3], std::sin(2 * std::numbers::pi * (j - 1) / 50.0), 1e-9) << j;
+  }
+}
+
+TEST(Evaluate, ChaumontSettlingOfARestingBoxLastsHalfASecondAtAnyStep) {
+  // a box resting on the ground from the start: each settle phase ends after
+  // 0.5 s of stillness (30 steps at 60 Hz, 60 at 120 Hz, 120 at 240 Hz), so
+  // the sequence is settle 0.5 s, burst 1 s, settle 0.5 s, measure 1 s
+  CreatureModel m = grow("box.json");
+  m.dialect = Dialect::Chaumont2007;
+  SimConfig cfg = default_sim_config(Dialect::Chaumont2007);
+  cfg.task.seconds = 1;
+  cfg.task.drop_height = 0;
+  for (int hz : {60, 120, 240}) {
+    cfg.physics.dt = 1.0 / hz;
+    EvalResult r = evaluate(m, cfg, 1);
+    ASSERT_FALSE(r.failed) << r.failure;
+    EXPECT_EQ(r.note, "") << hz;
+    EXPECT_NEAR(r.seconds, 0.5 + 1 + 0.5 + 1, cfg.physics.dt + 1e-9) << hz << " Hz";
+  }
+  // dropped 0.1 m (the default), it falls and bounces a few steps sooner or
+  // later at each step length (0.04 s here), then rests 0.5 s twice; windows
+  // counted in steps would end the sequence 0.5 s sooner at 120 Hz and
+  // 0.75 s sooner at 240 Hz
+  cfg.task.drop_height = 0.1;
+  std::vector<double> ends;
+  for (int hz : {60, 120, 240}) {
+    cfg.physics.dt = 1.0 / hz;
+    ends.push_back(evaluate(m, cfg, 1).seconds);
+  }
+  EXPECT_NEAR(ends[1], ends[0], 0.1);
+  EXPECT_NEAR(ends[2], ends[0], 0.1);
+}
+
 TEST(Evaluate, ChaumontSequenceSettlesBurstsSettlesThenMeasures) {
   SimConfig cfg = default_sim_config(Dialect::Chaumont2007);
   CreatureModel m = grow("box.json");
@@ -97,7 +206,7 @@ TEST(Evaluate, ChaumontSequenceSettlesBurstsSettlesThenMeasures) {
   EXPECT_GT(r.seconds, 2 + 1.0 + 2 * 30 / 60.0 - 1e-9);
   EXPECT_LT(r.distance, 1e-3);
   // a creature that never stops moving is never measured and scores 0
-  cfg.task.settle_threshold = 0;
+  cfg.task.settle_speed = 0;
   r = evaluate(m, cfg, 1);
   EXPECT_EQ(r.fitness, 0);
   EXPECT_EQ(r.note, "never settled within settle_timeout");

@@ -89,6 +89,56 @@ TEST(ThrowingEval, TheBodyFiresTheReleaseEarlierButCannotHoldIt) {
   EXPECT_NEAR(evaluate(grow(g), cfg, 1).release_time, 45 * cfg.physics.dt, 1e-9);
 }
 
+TEST(ThrowingEval, TheReleaseKeepsItsTimeWhenThePhysicsStepIsHalvedOrQuartered) {
+  // the 60 Hz brain's delays are fixed in time: the mechanism's 30 steps
+  // release at 0.5 s, the body's 14-step delay line at 14/60 s, at every dt
+  Genome g = catapult();
+  const double dt = default_sim_config(g).physics.dt;
+  for (int div : {1, 2, 4}) {
+    SimConfig cfg = default_sim_config(g);
+    cfg.physics.dt = dt / div;
+    g.catapult->release.inputs.clear();
+    EvalResult r = evaluate(grow(g), cfg, 1);
+    ASSERT_FALSE(r.failed) << r.failure;
+    EXPECT_NEAR(r.release_time, 0.5, cfg.physics.dt + 1e-9) << "dt/" << div;
+    EXPECT_NEAR(static_cast<double>(r.brain_steps) / r.seconds, 60, 60 * cfg.physics.dt / r.seconds + 1e-9)
+        << "dt/" << div;
+    EXPECT_GT(r.distance, 1.5) << "dt/" << div;
+    g.catapult->release.inputs = {from_body_delay(1.0)};
+    EXPECT_NEAR(evaluate(grow(g), cfg, 1).release_time, 14.0 / 60, cfg.physics.dt + 1e-9) << "dt/" << div;
+  }
+}
+
+TEST(ThrowingEval, TheProjectileRestsForRestSecondsAtAnyPhysicsStep) {
+  // the evaluation ends once the projectile has moved slower than rest_speed
+  // for rest_seconds: 0.5 s after its last faster step, at dt and dt/2
+  Genome g = catapult();
+  CreatureModel m = grow(g);
+  std::vector<double> ends;
+  for (int div : {1, 2}) {
+    SimConfig cfg = default_sim_config(g);
+    cfg.physics.dt /= div;
+    const double dt = cfg.physics.dt;
+    cfg.replay_fps = 1 / dt;  // a frame after every step
+    Replay replay;
+    EvalResult r = evaluate(m, cfg, 1, &replay);
+    ASSERT_FALSE(r.failed) << r.failure;
+    ASSERT_GT(r.release_time, 0);
+    double last_moving = -1;
+    for (std::size_t k = 1; k < replay.frames.size(); ++k) {
+      const std::vector<double>&a = replay.frames[k - 1].poses, &b = replay.frames[k].poses;
+      Vec3 pa{a[14], a[15], a[16]}, pb{b[14], b[15], b[16]};  // the projectile, part 2
+      if (norm(pb - pa) >= cfg.throwing.rest_speed * dt) last_moving = replay.frames[k].t;
+    }
+    ASSERT_GT(last_moving, r.release_time) << "dt/" << div;
+    EXPECT_NEAR(r.seconds - last_moving, cfg.throwing.rest_seconds, dt / 2) << "dt/" << div;
+    ends.push_back(r.seconds);
+  }
+  // the throw itself changes with the step (the rolling projectile: 1.7 s
+  // and 2.5 s on the exact solver); the rest rule above is what is exact
+  EXPECT_NEAR(ends[1], ends[0], 1.0);
+}
+
 TEST(ThrowingEval, AimScoresDistanceMinusTheMiss) {
   Genome g = catapult();
   CreatureModel m = grow(g);

@@ -50,6 +50,33 @@ TEST(Config, BadInputNamesTheKeyAndTheValue) {
             "run.toml: evolution.p_asexual + p_crossover + p_graft: must sum to 1, got 1.2");
 }
 
+// the keys that counted physics steps are gone: an old config fails on the
+// first of them, naming the key in seconds (or per second) to use
+TEST(Config, KeysCountedInPhysicsStepsAreRefusedNamingTheirReplacement) {
+  EXPECT_EQ(apply_error("[brain]\nsteps_per_physics_step = 2\n"),
+            "run.toml: brain.steps_per_physics_step: replaced by brain.rate_hz (brain steps per "
+            "simulated second), got 2");
+  EXPECT_EQ(apply_error("[task]\nsettle_threshold = 0.005\n"),
+            "run.toml: task.settle_threshold: replaced by task.settle_speed (m/s), got 0.005");
+  EXPECT_EQ(apply_error("[task]\nsettle_steps = 30\n"),
+            "run.toml: task.settle_steps: replaced by task.settle_seconds (s), got 30");
+  EXPECT_EQ(apply_error("[throwing]\nrest_steps = 30\n"),
+            "run.toml: throwing.rest_steps: replaced by throwing.rest_seconds (s), got 30");
+  EXPECT_EQ(read_run_config("", "r.toml", {"task.settle_steps=10"}).error(),
+            "--set task.settle_steps=10: task.settle_steps: replaced by task.settle_seconds (s), got 10");
+  // the new keys are read, in range
+  auto c = read_run_config("[genome]\ndialect = \"chaumont2007\"\n[brain]\nrate_hz = 120\n", "r.toml",
+                           {"task.settle_speed=0.1", "task.settle_seconds=0.25", "throwing.rest_seconds=1"});
+  ASSERT_TRUE(c.ok()) << c.error();
+  EXPECT_EQ(c->sim.brain_hz, 120.0);
+  EXPECT_EQ(c->sim.task.settle_speed, 0.1);
+  EXPECT_EQ(c->sim.task.settle_seconds, 0.25);
+  EXPECT_EQ(c->sim.throwing.rest_seconds, 1.0);
+  EXPECT_EQ(apply_error("[brain]\nrate_hz = 0\n"), "run.toml: brain.rate_hz: out of range [0.1, 100000], got 0");
+  EXPECT_EQ(apply_error("[task]\nsettle_seconds = -1\n"),
+            "run.toml: task.settle_seconds: out of range [0, 10000], got -1");
+}
+
 TEST(Config, RunConfigTakesTheDialectsDefaultsThenTheTextThenTheOverrides) {
   auto c = read_run_config("[genome]\ndialect = \"miconi2006\"\n[evolution]\npopulation = 50\n", "r.toml",
                            {"evolution.population=60", "motor.model=pd", "task.seconds=5"});
@@ -107,12 +134,12 @@ TEST(Config, CatapultAndThrowingKeys) {
   auto c = read_run_config("[genome]\ndialect = \"chaumont2007\"\n[catapult]\nenabled = true\n"
                            "projectile_size = [0.3, 0.2, 0.05]\n[task]\nkind = \"throwing\"\n"
                            "[throwing]\nfitness = \"aim\"\ntarget = [4, -1, 0.1]\n",
-                           "c.toml", {"throwing.rest_steps=10", "catapult.mutate_projectile=true"});
+                           "c.toml", {"throwing.rest_seconds=0.25", "catapult.mutate_projectile=true"});
   ASSERT_TRUE(c.ok()) << c.error();
   EXPECT_EQ(c->sim.task_kind, TaskKind::Throwing);
   EXPECT_EQ(c->sim.throwing.fitness, ThrowFitness::Aim);
   EXPECT_EQ(c->sim.throwing.target, (Vec3{4, -1, 0.1}));
-  EXPECT_EQ(c->sim.throwing.rest_steps, 10);
+  EXPECT_EQ(c->sim.throwing.rest_seconds, 0.25);
   EXPECT_TRUE(c->operators.catapult.enabled);
   EXPECT_TRUE(c->operators.catapult.mutate_projectile);
   EXPECT_EQ(c->operators.catapult.projectile_size, (Vec3{0.3, 0.2, 0.05}));

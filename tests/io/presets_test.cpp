@@ -49,7 +49,11 @@ TEST(Presets, PaperPresetsCarryThePapersConstants) {
   EXPECT_EQ(c.sim.task.kappa, 1.02);
   EXPECT_EQ(c.sim.task.seconds, 20);
   EXPECT_EQ(c.sim.task.activation, Activation::Chaumont2007);
-  // the catapults: the paper's GA, the 30-step release; our bounds on giants
+  // 3.3's 30 still steps of under 1/300 m at 60 Hz
+  EXPECT_EQ(c.sim.brain_hz, 60);
+  EXPECT_EQ(c.sim.task.settle_speed * c.sim.physics.dt, 1.0 / 300);
+  EXPECT_EQ(std::lround(c.sim.task.settle_seconds / c.sim.physics.dt), 30);
+  // the catapults: the paper's GA, the 30-step release at 60 Hz (0.5 s); our bounds on giants
   // and stretched joints (the presets' Deviations) in every one of them
   for (const char* name : {"chaumont2007-catapult", "chaumont2007-catapult-aim",
                            "chaumont2007-catapult-free-projectile", "chaumont2007-catapult-small",
@@ -61,6 +65,7 @@ TEST(Presets, PaperPresetsCarryThePapersConstants) {
     EXPECT_EQ(k.sim.develop.max_body_length, 3.0) << name;
     EXPECT_EQ(k.sim.physics.max_joint_gap, 0.05) << name;
     EXPECT_EQ(k.operators.catapult.release_delay_steps, 30) << name;
+    EXPECT_EQ(k.sim.brain_hz, 60) << name;
     if (std::string(name).find("-small") == std::string::npos) {
       EXPECT_EQ(k.evolution.population, 300) << name;
       EXPECT_EQ(k.evolution.generations, 100) << name;

@@ -44,9 +44,9 @@ TEST(Locomotion, ChaumontSequenceGatesTheControllerAndMeasuresOnlyTheLastPhase) 
   def.activation = Activation::Chaumont2007;
   def.seconds = 2;
   def.burst_seconds = 1;
-  def.settle_steps = 3;
-  def.settle_threshold = 0.01;
   const double dt = 0.1;
+  def.settle_seconds = 3 * dt;  // three steps
+  def.settle_speed = 0.1;       // 0.01 m per step
   LocomotionTask t(def, dt, 1);
   double time = 0;
   Vec3 p{0, 0, 1};
@@ -76,6 +76,34 @@ TEST(Locomotion, ChaumontSequenceGatesTheControllerAndMeasuresOnlyTheLastPhase) 
   EXPECT_TRUE(t.done());
   EXPECT_NEAR(t.distance(), norm(p - start), 1e-12);
   EXPECT_NEAR(t.distance(), 2.0, 1e-9);
+}
+
+TEST(Locomotion, SettlingIsASpeedHeldForSettleSecondsWhateverTheStep) {
+  // a part creeping at 0.1 m/s is still under settle_speed 0.2 m/s at any
+  // step length, and settles after settle_seconds: 0.5 s = 30 steps at
+  // 60 Hz, 60 steps at 120 Hz; at 0.3 m/s it never settles
+  for (int hz : {60, 120, 240}) {
+    const double dt = 1.0 / hz;
+    for (double speed : {0.1, 0.3}) {
+      LocomotionDef def;
+      def.activation = Activation::Chaumont2007;
+      LocomotionTask t(def, dt, 1);
+      Vec3 p{0, 0, 0};
+      t.start(p, {p});
+      long steps = 0;
+      while (t.phase() == Phase::Settle1 && steps < 10 * hz) {
+        p.x += speed * dt;
+        t.observe(static_cast<double>(++steps) * dt, p, {p});
+      }
+      if (speed < def.settle_speed) {
+        EXPECT_EQ(t.phase(), Phase::Burst) << hz << " Hz";
+        EXPECT_EQ(steps, hz / 2) << hz << " Hz";
+      } else {
+        EXPECT_TRUE(t.done()) << hz << " Hz";
+        EXPECT_EQ(t.note(), "never settled within settle_timeout");
+      }
+    }
+  }
 }
 
 TEST(Locomotion, ChaumontFitnessFollowsEquationOne) {

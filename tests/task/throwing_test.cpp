@@ -24,7 +24,7 @@ void fly(ThrowingTask& t, const ThrowingDef& def, Vec3 p0, Vec3 v, double dt) {
     t.observe(s, p);
   }
   p.z = 0;
-  for (int k = 0; k <= def.rest_steps; ++k) t.observe(s += dt, p);
+  for (int k = 0; k * dt <= def.rest_seconds + dt; ++k) t.observe(s += dt, p);
 }
 
 TEST(Throwing, PointSegmentDistance) {
@@ -65,11 +65,11 @@ TEST(Throwing, DistanceIsHorizontalFromTheReleasePoint) {
   EXPECT_DOUBLE_EQ(t.release_time(), 0.5);
 }
 
-TEST(Throwing, ComesToRestAfterRestStepsOfStillness) {
+TEST(Throwing, ComesToRestAfterRestSecondsOfStillness) {
   ThrowingDef def;
-  def.rest_speed = 0.1;
-  def.rest_steps = 5;
   const double dt = 0.01;
+  def.rest_speed = 0.1;
+  def.rest_seconds = 5 * dt;  // five steps
   ThrowingTask t(def, dt);
   t.observe(0, {0, 0, 0});
   EXPECT_FALSE(t.done()) << "not released: nothing to wait for";
@@ -83,6 +83,23 @@ TEST(Throwing, ComesToRestAfterRestStepsOfStillness) {
   EXPECT_NEAR(t.distance(), x, 1e-12);
   t.observe(0, {x + 5, 0, 0});  // nothing counts once at rest
   EXPECT_NEAR(t.distance(), x, 1e-12);
+}
+
+TEST(Throwing, RestIsASpeedHeldForRestSecondsWhateverTheStep) {
+  // rolling at 0.02 m/s, under rest_speed 0.05 m/s: at rest after
+  // rest_seconds, 0.5 s = 30 steps at 60 Hz, 60 at 120 Hz, 120 at 240 Hz
+  for (int hz : {60, 120, 240}) {
+    const double dt = 1.0 / hz;
+    ThrowingDef def;
+    ThrowingTask t(def, dt);
+    t.release(0, {0, 0, 0});
+    long steps = 0;
+    while (!t.done() && steps < 10 * hz) {
+      ++steps;
+      t.observe(static_cast<double>(steps) * dt, {0.02 * static_cast<double>(steps) * dt, 0, 0});
+    }
+    EXPECT_EQ(steps, hz / 2) << hz << " Hz";
+  }
 }
 
 TEST(Throwing, NeverReleasedScoresZeroWithANote) {
