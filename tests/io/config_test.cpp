@@ -16,14 +16,14 @@ std::string apply_error(const std::string& toml) {
 
 TEST(Config, OverlaysValuesOntoTheDialectDefaults) {
   RunConfig cfg = default_run_config(Dialect::Miconi2006);
-  EXPECT_EQ(cfg.sim.physics.erp, 0.015);
+  EXPECT_EQ(cfg.sim.physics.erp, 0.2);  // not Table 1's 0.015 (docs/physics.md)
   EXPECT_EQ(cfg.sim.motor.model, MotorModel::Servo);
-  ASSERT_TRUE(apply_config_toml(cfg, "[physics]\nerp = 0.2\nsolver_iterations = 40\n"
+  ASSERT_TRUE(apply_config_toml(cfg, "[physics]\nerp = 0.5\nsolver_iterations = 40\n"
                                      "[motor]\nmodel = \"pd\"\n[task]\nmetric = \"planar\"\nseconds = 3\n",
                                 "x.toml"));
-  EXPECT_EQ(cfg.sim.physics.erp, 0.2);
+  EXPECT_EQ(cfg.sim.physics.erp, 0.5);
   EXPECT_EQ(cfg.sim.physics.solver_iterations, 40);
-  EXPECT_EQ(cfg.sim.physics.cfm, 0.01);  // untouched keys keep the dialect's value
+  EXPECT_EQ(cfg.sim.physics.cfm, 1e-5);  // untouched keys keep the dialect's value
   EXPECT_EQ(cfg.sim.motor.model, MotorModel::PD);
   EXPECT_EQ(cfg.sim.task.metric, DistanceMetric::Planar);
   EXPECT_EQ(cfg.sim.task.seconds, 3.0);
@@ -82,7 +82,7 @@ TEST(Config, RunConfigTakesTheDialectsDefaultsThenTheTextThenTheOverrides) {
                            {"evolution.population=60", "motor.model=pd", "task.seconds=5"});
   ASSERT_TRUE(c.ok()) << c.error();
   EXPECT_EQ(c->dialect, Dialect::Miconi2006);
-  EXPECT_EQ(c->sim.physics.erp, 0.015);  // miconi2006's default
+  EXPECT_EQ(c->sim.motor.max_force, 4);  // miconi2006's default
   EXPECT_EQ(c->evolution.population, 60);
   EXPECT_EQ(c->sim.motor.model, MotorModel::PD);
   EXPECT_EQ(c->sim.task.seconds, 5.0);
