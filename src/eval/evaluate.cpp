@@ -25,6 +25,10 @@ void record(const CreatureModel& m, const World& w, const BrainState& bs, Replay
   }
   f.neurons.assign(bs.values.begin() + m.brain.n_sensors, bs.values.end());
   f.effectors = bs.effector_out;
+  // the readings the brain took before its last step (0 before its first)
+  f.sensors.assign(bs.values.begin(), bs.values.begin() + m.brain.n_sensors);
+  for (int j = 0; j < static_cast<int>(m.joints.size()); ++j)
+    for (int d = 0; d < joint_dofs(m.joints[j].type); ++d) f.joint_angles.push_back(w.joint_position(j, d));
   f.com = w.centre_of_mass();
   r.frames.push_back(std::move(f));
 }

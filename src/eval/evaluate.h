@@ -17,6 +17,9 @@ struct ReplayFrame {
   std::vector<double> poses;    ///< 7 per part: x y z qw qx qy qz
   std::vector<double> neurons;  ///< every neuron's output
   std::vector<double> effectors;  ///< every effector's signal
+  std::vector<double> sensors;    ///< every sensor's reading, as the brain read it
+  /// every joint's degrees of freedom in turn (rad or m): joint 0's dofs, joint 1's, ...
+  std::vector<double> joint_angles;
   Vec3 com;
 };
 

@@ -15,8 +15,8 @@ namespace {
 
 using nlohmann::json;
 
-// Rounding keeps files small: 10 micrometres, 1e-5 of a quaternion, 1e-4 of a
-// signal. Going through decimal text gives the double nearest the rounded
+// Rounding keeps files small: 10 micrometres, 1e-5 of a quaternion or a joint
+// angle (rad), 1e-4 of a signal. Going through decimal text gives the double nearest the rounded
 // decimal, which prints short.
 double round_to(double v, double q) {
   int digits = static_cast<int>(std::lround(-std::log10(q)));
@@ -27,6 +27,25 @@ double round_to(double v, double q) {
 }
 
 json vec_json(Vec3 v, double q) { return json::array({round_to(v.x, q), round_to(v.y, q), round_to(v.z, q)}); }
+
+// a joint's stops per degree of freedom, [lo, hi] each; [] when unlimited
+json limits_json(const std::vector<Limit>& limits) {
+  json out = json::array();
+  for (const Limit& l : limits) out.push_back({round_to(l.lo, 1e-6), round_to(l.hi, 1e-6)});
+  return out;
+}
+
+// a sensor as the model has it: a joint angle's joint and dof, a contact's face
+json sensor_json(const SensorModel& s) {
+  json o = {{"type", std::string(to_string(s.type))}, {"part", s.part}};
+  if (s.type == SensorType::JointAngle) {
+    o["joint"] = s.joint;
+    o["dof"] = s.dof;
+  } else {
+    o["face"] = std::string(to_string(s.face));
+  }
+  return o;
+}
 
 }  // namespace
 
@@ -83,7 +102,8 @@ std::string replay_to_string(const CreatureModel& m, const Replay& r, const Eval
                       {"child", jm.child},
                       {"anchor", vec_json(Rt * (jm.anchor - c.p), 1e-6)},
                       {"axis1", vec_json(Rt * jm.axis1, 1e-6)},
-                      {"axis2", vec_json(Rt * jm.axis2, 1e-6)}});
+                      {"axis2", vec_json(Rt * jm.axis2, 1e-6)},
+                      {"limits", limits_json(jm.limits)}});
   }
   j["joints"] = joints;
   json neurons = json::array();
@@ -94,6 +114,9 @@ std::string replay_to_string(const CreatureModel& m, const Replay& r, const Eval
   json effectors = json::array();
   for (const auto& e : m.effectors) effectors.push_back({{"joint", e.joint}, {"dof", e.dof}});
   j["effectors"] = effectors;
+  json sensors = json::array();
+  for (const auto& s : m.sensors) sensors.push_back(sensor_json(s));
+  j["sensors"] = sensors;
   // frames
   json frames = json::array();
   for (const auto& f : r.frames) {
@@ -103,14 +126,25 @@ std::string replay_to_string(const CreatureModel& m, const Replay& r, const Eval
                        round_to(f.poses[i + 2], 1e-5), round_to(f.poses[i + 3], 1e-5),
                        round_to(f.poses[i + 4], 1e-5), round_to(f.poses[i + 5], 1e-5),
                        round_to(f.poses[i + 6], 1e-5)});
-    json nv = json::array(), ev = json::array();
+    json nv = json::array(), ev = json::array(), sv = json::array(), av = json::array();
     for (double v : f.neurons) nv.push_back(round_to(v, 1e-4));
     for (double v : f.effectors) ev.push_back(round_to(v, 1e-4));
+    for (double v : f.sensors) sv.push_back(round_to(v, 1e-4));
+    // joint angles: one list per joint, one value per degree of freedom
+    std::size_t k = 0;
+    for (const auto& jm : m.joints) {
+      json dofs = json::array();
+      for (int d = 0; d < joint_dofs(jm.type) && k < f.joint_angles.size(); ++d)
+        dofs.push_back(round_to(f.joint_angles[k++], 1e-5));
+      av.push_back(dofs);
+    }
     frames.push_back({{"t", round_to(f.t, 1e-6)},
                       {"poses", poses},
                       {"com", vec_json(f.com, 1e-5)},
                       {"neurons", nv},
-                      {"effectors", ev}});
+                      {"effectors", ev},
+                      {"sensors", sv},
+                      {"joint_angles", av}});
   }
   j["frames"] = frames;
   j["result"] = {{"fitness", res.fitness},   {"distance", res.distance},

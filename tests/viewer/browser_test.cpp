@@ -1,11 +1,14 @@
 // The viewer page in headless Chromium (Debian's chromium; viewer/tools/
 // inspect.mjs drives it): it draws the creature, the creature moves, the
-// panels are there, nothing is fetched from outside, and a run's page lets
-// the user pick a generation's best. Screenshots go to BUILD/viewer-test/.
+// panels are there (the signals panel: a trace per effector, sensor and joint
+// dof with its range, "constant" on a constant signal), nothing sticks out
+// of its panel, nothing is fetched from outside, and a run's page lets the
+// user pick a generation's best. Screenshots go to BUILD/viewer-test/.
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <regex>
 #include <string>
 
 #include "io/html_view.h"
@@ -28,6 +31,35 @@ json inspect(const fs::path& page, const std::string& name, const std::string& e
 }
 
 class ViewerInBrowser : public InTempDir {};
+
+// the signals panel's group `key` as inspect.mjs read it
+const json& group(const json& seen, const std::string& key) {
+  for (const auto& g : seen["signals"]["groups"])
+    if (g["key"] == key) return g;
+  static const json none;
+  ADD_FAILURE() << "no group " << key;
+  return none;
+}
+
+// the badges of the traces of a group, all together
+std::vector<std::string> badges(const json& g) {
+  std::vector<std::string> out;
+  for (const auto& t : g["traces"])
+    for (const auto& b : t["badges"]) out.push_back(b.get<std::string>());
+  return out;
+}
+
+// the panels hold their content, groups close and open, plots follow a resize
+void expect_tidy_panels(const json& seen) {
+  EXPECT_TRUE(seen["overflow"].empty()) << seen["overflow"];
+  const json& c = seen["signals"]["collapse"];
+  EXPECT_TRUE(c["closed"].get<bool>()) << c;
+  EXPECT_TRUE(c["reopened"].get<bool>()) << c;
+  const json& r = seen["signals"]["resize"];
+  EXPECT_TRUE(r["fits"].get<bool>()) << r;
+  EXPECT_TRUE(r["fitsAfter"].get<bool>()) << r;
+  EXPECT_GT(r["width"].get<int>(), 200) << r;  // wider than the old fixed 200 px
+}
 
 TEST_F(ViewerInBrowser, DrawsTheWalkerAndItMoves) {
   fs::path page = dir / "walker.html";
@@ -52,6 +84,63 @@ TEST_F(ViewerInBrowser, DrawsTheWalkerAndItMoves) {
   // the panels: one plot per neuron (the walker has 4), the player's controls
   EXPECT_EQ(seen["sparklines"], 4);
   EXPECT_GE(seen["player"].get<int>(), 5);
+  // the signals: 8 effectors (two per universal joint), 8 sensors (an angle
+  // and a contact per leg), 8 joint dofs (4 universal joints), each with its
+  // range as text; the oscillating effectors are not constant
+  const std::regex range(R"(^-?[0-9.]+(°| m)? \.\. -?[0-9.]+(°| m)?$)");
+  for (const char* key : {"effectors", "sensors", "joints"}) {
+    const json& g = group(seen, key);
+    ASSERT_EQ(g["traces"].size(), 8u) << key;
+    EXPECT_NE(g["title"].get<std::string>().find("(8)"), std::string::npos) << g["title"];
+    for (const auto& t : g["traces"]) {
+      EXPECT_TRUE(std::regex_match(t["range"].get<std::string>(), range)) << t;
+      EXPECT_EQ(t["cursor"], "50%") << t;  // the last moment drawn: 5 s of 10
+    }
+  }
+  EXPECT_TRUE(badges(group(seen, "effectors")).empty()) << group(seen, "effectors");
+  EXPECT_TRUE(group(seen, "effectors")["badge"].is_null());
+  EXPECT_EQ(group(seen, "effectors")["traces"][3]["label"], "3: joint 1 · dof 1");
+  EXPECT_EQ(group(seen, "joints")["traces"][0]["stops"], "stops -45.8° .. 45.8°");
+  expect_tidy_panels(seen);
+}
+
+TEST_F(ViewerInBrowser, AConstantEffectorAndAJointHeldAtItsStopAreMarkedAt800x600) {
+  // tests/creatures/pinned.json: an effector fixed at -1 holds its hinge at
+  // the stop (-0.5 rad); the contact sensor on the top face never touches
+  fs::path page = dir / "pinned.html";
+  ASSERT_EQ(bestiary("show " + creature("pinned.json") + " --out " + page.string()).code, 0);
+  json seen = inspect(page, "pinned", "--times 2 --width 800 --height 600");
+  ASSERT_FALSE(seen.is_null());
+  EXPECT_TRUE(seen["errors"].empty()) << seen["errors"];
+  const json& e = group(seen, "effectors");
+  ASSERT_EQ(e["traces"].size(), 1u);
+  EXPECT_EQ(e["traces"][0]["range"], "-1.000 .. -1.000");
+  EXPECT_EQ(badges(e), std::vector<std::string>{"constant"});
+  EXPECT_EQ(e["badge"], "1 constant");
+  const json& s = group(seen, "sensors");
+  ASSERT_EQ(s["traces"].size(), 2u);
+  EXPECT_EQ(s["traces"][0]["label"], "0: contact · part 0 +z");
+  EXPECT_EQ(s["traces"][0]["badges"], json::array({"constant"}));
+  const json& j = group(seen, "joints");
+  ASSERT_EQ(j["traces"].size(), 1u);
+  EXPECT_EQ(j["traces"][0]["stops"], "stops -28.6° .. 28.6°");
+  ASSERT_EQ(j["traces"][0]["badges"].size(), 1u);
+  EXPECT_EQ(j["traces"][0]["badges"][0].get<std::string>().rfind("at stop", 0), 0u) << j;
+  expect_tidy_panels(seen);
+}
+
+TEST_F(ViewerInBrowser, ACentipedesManySignalsFitAt1920x1080) {
+  // 12 parts: 11 hinges and effectors, 24 sensors (the root's angle reads 0)
+  fs::path page = dir / "centipede.html";
+  ASSERT_EQ(bestiary("show " + creature("centipede.json") + " --seconds 3 --out " + page.string()).code, 0);
+  json seen = inspect(page, "centipede", "--times 1 --width 1920 --height 1080");
+  ASSERT_FALSE(seen.is_null());
+  EXPECT_TRUE(seen["errors"].empty()) << seen["errors"];
+  EXPECT_EQ(group(seen, "effectors")["traces"].size(), 11u);
+  EXPECT_EQ(group(seen, "sensors")["traces"].size(), 24u);
+  EXPECT_EQ(group(seen, "joints")["traces"].size(), 11u);
+  EXPECT_EQ(group(seen, "sensors")["traces"][0]["label"], "0: angle · part 0 (root)");
+  expect_tidy_panels(seen);
 }
 
 TEST_F(ViewerInBrowser, ARunPageShowsCurvesAndSwitchesToTheChosenGeneration) {

@@ -10,6 +10,7 @@ import { createFlight } from './flight_view.js';
 import { centreAt, throwOf, throwStatus } from './flight.js';
 import { createCameraRig } from './camera_rig.js';
 import { createSparklines } from './sparklines.js';
+import { createSignalsPanel } from './signals_panel.js';
 import { createRunPanel } from './run_panel.js';
 import { createPicker } from './picker.js';
 import { showInfo } from './info_panel.js';
@@ -20,13 +21,13 @@ import { fitness, metres, seconds } from './format.js';
 
 /**
  * A viewer of the checked page data `data` ({replays, run}) in the page's
- * elements `ui` ({canvas, stage, hud, info, picker, run, neurons, player}).
+ * elements `ui` ({canvas, stage, hud, info, picker, run, signals, neurons, player}).
  */
 export function createViewer(ui, data) {
   const stage = createStage(ui.canvas);
   const rig = createCameraRig(ui.canvas);
   const s = { index: -1, entry: null, t: 0, T: 0, playing: false, speed: 1, joints: false, trail: true, flight: true, radius: 1, throw: null };
-  let bodies = null, trail = null, flight = null, sparks = null, renderMode = false;
+  let bodies = null, trail = null, flight = null, sparks = null, signals = null, renderMode = false;
   // the scene is drawn only when something changed: software GL is slow, and
   // a paused page should cost nothing
   let dirty = true;
@@ -84,6 +85,9 @@ export function createViewer(ui, data) {
     player.setThrow(s.throw !== null, s.throw?.release ?? null, s.T);
     rig.reset(entry.replay.frames, s.radius, s.throw ? s.throw.projectile : -1);
     showInfo(ui.info, entry);
+    sparks?.dispose();
+    signals?.dispose();
+    signals = createSignalsPanel(ui.signals, entry.replay);
     sparks = createSparklines(ui.neurons, entry.replay);
     picker.setCurrent(i);
     runPanel?.setCurrent(i);
@@ -100,6 +104,7 @@ export function createViewer(ui, data) {
     rig.track(s.t);
     stage.focus(rig.targetAt(s.t), s.radius);
     sparks.setTime(s.t);
+    signals.setTime(s.t);
     const res = s.entry.replay.result ?? {};
     // how far: the centre of mass's, or a catapult's projectile's since its release
     const far = s.throw ? throwStatus(frames, s.throw, s.t) : `distance ${metres(distanceAt(frames, s.t))}`;
@@ -180,7 +185,7 @@ export function createViewer(ui, data) {
     const frames = s.entry.replay.frames;
     return {
       t: s.t, replayIndex: s.index, playing: s.playing, camera: rig.mode,
-      root: [p.x, p.y, p.z], com: comAt(frames, s.t), sparklines: sparks.rows,
+      root: [p.x, p.y, p.z], com: comAt(frames, s.t), sparklines: sparks.rows, signals: signals.rows,
       projectile: s.throw ? centreAt(frames, s.throw.projectile, s.t) : null,
       flight: flight ? flight.drawn && s.flight : false,
     };

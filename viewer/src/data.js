@@ -4,6 +4,11 @@
 
 const SHAPES = ['box', 'sphere', 'capsule', 'cylinder'];
 
+/** Degrees of freedom of each joint type, in the order `dof` indices count them. */
+export const JOINT_DOFS = { fixed: 0, hinge: 1, universal: 2, spherical: 3, slider: 1, cylindrical: 2 };
+
+const SENSOR_TYPES = ['joint_angle', 'contact'];
+
 /** An error in the page's data; `message` names the field. */
 export class DataError extends Error {}
 
@@ -56,7 +61,9 @@ export function partShape(v, path) {
 
 /**
  * Checks a replay object (docs/replay-format.md, version 1) and returns it.
- * Frames must have one pose per part and one output per neuron, in time order.
+ * Frames must have one pose per part, one output per neuron and one signal
+ * per effector, in time order; when the replay records them (newer files
+ * do), one reading per sensor and one position per joint degree of freedom.
  */
 export function parseReplay(r, path = 'replay') {
   obj(r, path);
@@ -80,6 +87,25 @@ export function parseReplay(r, path = 'replay') {
     numbers(j.anchor, 3, `${at}.anchor`);
     numbers(j.axis1, 3, `${at}.axis1`);
     numbers(j.axis2, 3, `${at}.axis2`);
+    if (j.limits !== undefined) {
+      arr(j.limits, `${at}.limits`).forEach((l, d) => numbers(l, 2, `${at}.limits[${d}]`));
+    }
+  });
+  const joints = r.joints;
+  // effectors and sensors: what drives which joint, what reads what
+  const effectors = arr(r.effectors ?? [], `${path}.effectors`);
+  effectors.forEach((e, i) => {
+    const at = `${path}.effectors[${i}]`;
+    obj(e, at);
+    if (int(e.joint, `${at}.joint`, 0) >= joints.length) fail(`${at}.joint`, 'no such joint', e.joint);
+    int(e.dof, `${at}.dof`, 0);
+  });
+  const sensors = r.sensors === undefined ? null : arr(r.sensors, `${path}.sensors`);
+  sensors?.forEach((s, i) => {
+    const at = `${path}.sensors[${i}]`;
+    obj(s, at);
+    if (!SENSOR_TYPES.includes(s.type)) fail(`${at}.type`, `expected one of ${SENSOR_TYPES.join(', ')}`, s.type);
+    int(s.part, `${at}.part`, 0);
   });
   const neurons = arr(r.neurons, `${path}.neurons`);
   neurons.forEach((n, i) => {
@@ -89,9 +115,16 @@ export function parseReplay(r, path = 'replay') {
   // the scene: props are checked by props.js when drawn; here only the list
   obj(r.scene, `${path}.scene`);
   const props = arr(r.scene.props ?? [], `${path}.scene.props`);
-  // frames: times ascending, poses and neuron outputs complete
+  // frames: times ascending, poses, neuron outputs and signals complete
   const frames = arr(r.frames, `${path}.frames`);
   if (frames.length === 0) fail(`${path}.frames`, 'expected at least one frame', frames);
+  // joint angles: in every frame or in none
+  const angles = obj(frames[0], `${path}.frames[0]`).joint_angles !== undefined;
+  if (angles) {
+    joints.forEach((j, i) => {
+      if (!(j.type in JOINT_DOFS)) fail(`${path}.joints[${i}].type`, `expected one of ${Object.keys(JOINT_DOFS).join(', ')}`, j.type);
+    });
+  }
   let last = -Infinity;
   frames.forEach((f, k) => {
     const at = `${path}.frames[${k}]`;
@@ -103,6 +136,15 @@ export function parseReplay(r, path = 'replay') {
     poses.forEach((p, i) => numbers(p, 7, `${at}.poses[${i}]`));
     numbers(f.com, 3, `${at}.com`);
     numbers(f.neurons, neurons.length, `${at}.neurons`);
+    numbers(f.effectors, effectors.length, `${at}.effectors`);
+    if (sensors) numbers(f.sensors, sensors.length, `${at}.sensors`);
+    if (angles) {
+      const ja = arr(f.joint_angles, `${at}.joint_angles`);
+      if (ja.length !== joints.length) fail(`${at}.joint_angles`, `expected ${joints.length} joints`, ja.length);
+      ja.forEach((a, i) => numbers(a, JOINT_DOFS[joints[i].type], `${at}.joint_angles[${i}]`));
+    } else if (f.joint_angles !== undefined) {
+      fail(`${at}.joint_angles`, 'expected none, as frame 0 has none', f.joint_angles);
+    }
     if (f.props !== undefined) {
       arr(f.props, `${at}.props`);
       if (f.props.length !== props.length) fail(`${at}.props`, `expected ${props.length} poses`, f.props.length);

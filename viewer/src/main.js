@@ -13,7 +13,7 @@ function start() {
     document.title = `${data.replays[0].label} · Bestiary`;
     const viewer = createViewer({
       canvas: $('view'), stage: $('stage'), hud: $('hud'), info: $('info'), picker: $('picker'),
-      run: $('run'), neurons: $('neurons'), player: $('player'),
+      run: $('run'), signals: $('signals'), neurons: $('neurons'), player: $('player'),
     }, data);
     window.bestiary = Object.assign(viewer, { ready: true, error: null });
   } catch (e) {

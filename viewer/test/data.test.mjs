@@ -22,12 +22,33 @@ test('errors name the field, what was expected and what was found', () => {
     [(r) => (r.joints[0].child = 7), /^replay\.joints\[0\]\.child: no such part, got 7$/],
     [(r) => (r.frames = []), /^replay\.frames: expected at least one frame/],
     [(r) => delete r.result, /^replay\.result: expected an object, got nothing$/],
+    [(r) => r.frames[4].effectors.push(0), /^replay\.frames\[4\]\.effectors: expected 1 numbers, got \[/],
+    [(r) => (r.effectors[0].joint = 3), /^replay\.effectors\[0\]\.joint: no such joint, got 3$/],
+    [(r) => (r.sensors[1].type = 'smell'), /^replay\.sensors\[1\]\.type: expected one of joint_angle, contact, got "smell"$/],
+    [(r) => r.frames[6].sensors.pop(), /^replay\.frames\[6\]\.sensors: expected 2 numbers, got \[/],
+    [(r) => (r.frames[2].joint_angles = [[0.1, 0.2]]), /^replay\.frames\[2\]\.joint_angles\[0\]: expected 1 numbers, got \[0\.1,0\.2\]$/],
+    [(r) => (r.frames[2].joint_angles = []), /^replay\.frames\[2\]\.joint_angles: expected 1 joints, got 0$/],
+    [(r) => delete r.frames[3].joint_angles, /^replay\.frames\[3\]\.joint_angles: expected an array, got nothing$/],
+    [(r) => delete r.frames[0].joint_angles, /^replay\.frames\[1\]\.joint_angles: expected none, as frame 0 has none/],
+    [(r) => (r.joints[0].type = 'weld'), /^replay\.joints\[0\]\.type: expected one of fixed, hinge/],
+    [(r) => (r.joints[0].limits = [[1]]), /^replay\.joints\[0\]\.limits\[0\]: expected 2 numbers, got \[1\]$/],
   ];
   for (const [spoil, message] of cases) {
     const r = makeReplay();
     spoil(r);
     assert.throws(() => parseReplay(r), { message });
   }
+});
+
+test('a replay written before sensors and joint angles were recorded passes', () => {
+  const r = makeReplay();
+  delete r.sensors;
+  delete r.joints[0].limits;
+  r.frames.forEach((f) => {
+    delete f.sensors;
+    delete f.joint_angles;
+  });
+  assert.equal(parseReplay(r), r);
 });
 
 test('page data holds labelled replays and an optional run', () => {

@@ -1,7 +1,10 @@
 // Small synthetic replays for the tests: two boxes joined by a hinge, moving
 // along +x at 1 m/s for 2 s at 10 frames per second, the second part turning
-// about z at 45 degrees per second, one neuron following sin(t); and a
-// catapult throwing its projectile (makeCatapult).
+// about z at 45 degrees per second (its hinge's angle, stops at +-2 rad), one
+// neuron and the effector following sin(t), a joint-angle sensor reading the
+// angle over 2 and a contact sensor always touching; and a catapult throwing
+// its projectile (makeCatapult), written as before replays held sensors and
+// joint angles.
 
 /** Quaternion [w, x, y, z] for `angle` radians about z. */
 export function aboutZ(angle) {
@@ -22,6 +25,8 @@ export function makeReplay({ frames = 21, dt = 0.1 } = {}) {
       com: [t + 0.15, 0, 0.1],
       neurons: [Math.sin(t)],
       effectors: [Math.sin(t)],
+      sensors: [(Math.PI / 4) * t / 2, 1],
+      joint_angles: [[(Math.PI / 4) * t]],
     });
   }
   return {
@@ -37,9 +42,10 @@ export function makeReplay({ frames = 21, dt = 0.1 } = {}) {
       { shape: 'box', size: [0.4, 0.2, 0.2], mass: 1, gene: 0, parent: -1, mirrored: false },
       { shape: 'capsule', size: [0.3, 0.1, 0.1], mass: 0.5, gene: 1, parent: 0, mirrored: true },
     ],
-    joints: [{ type: 'hinge', parent: 0, child: 1, anchor: [-0.15, 0, 0], axis1: [0, 0, 1], axis2: [0, 1, 0] }],
+    joints: [{ type: 'hinge', parent: 0, child: 1, anchor: [-0.15, 0, 0], axis1: [0, 0, 1], axis2: [0, 1, 0], limits: [[-2, 2]] }],
     neurons: [{ part: 0, fn: 'sin' }],
     effectors: [{ joint: 0, dof: 0 }],
+    sensors: [{ type: 'joint_angle', part: 1, joint: 0, dof: 0 }, { type: 'contact', part: 0, face: '-z' }],
     frames: out,
     result: { fitness: 2, distance: 2, failed: false, failure: '', seconds: 2, steps: 200, warnings: [] },
   };

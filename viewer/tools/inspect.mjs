@@ -8,9 +8,11 @@
 // It reports every URL the page requested, page errors, per moment the root
 // part's and centre of mass's positions and the canvas's colours, the share
 // of pixels that change between the first and last moment under a still
-// (orbit) camera, and with
-// --run what the run panel shows and whether choosing a generation switches
-// the creature.
+// (orbit) camera, what the signals panel shows (each group's traces with
+// their range text and badges, whether a group closes and opens, whether the
+// plots follow a resize), the elements that stick out of their panel, and
+// with --run what the run panel shows and whether choosing a generation
+// switches the creature.
 import { mkdirSync } from 'node:fs';
 import { join } from 'node:path';
 import { openViewer } from './browser.mjs';
@@ -76,11 +78,83 @@ async function main() {
     // the panels
     out.sparklines = await page.locator('#neurons .spark').count();
     out.player = await page.locator('#player button, #player input, #player select').count();
+    out.overflow = await page.evaluate(overflowing);
+    out.signals = await inspectSignals(page, a);
     if (a.run) out.run = await inspectRun(page, a);
     console.log(JSON.stringify(out));
   } finally {
     await browser.close();
   }
+}
+
+// Elements drawn (partly) outside their panel (side panel, player bar, the
+// scene's line of text): side-ways for the side panel, which scrolls, either
+// way for the others. Each as "panel: tag.class 'text'".
+function overflowing() {
+  const out = [];
+  for (const id of ['side', 'player', 'hud']) {
+    const panel = document.getElementById(id);
+    if (!panel || panel.offsetParent === null) continue;
+    const p = panel.getBoundingClientRect();
+    if (id !== 'side' && (p.right > window.innerWidth + 0.5 || p.bottom > window.innerHeight + 0.5))
+      out.push(`${id}: outside the window`);
+    for (const e of panel.querySelectorAll('*')) {
+      if (e.getClientRects().length === 0) continue; // not drawn (a closed group's)
+      const r = e.getBoundingClientRect();
+      if (r.width === 0 && r.height === 0) continue;
+      const out_x = r.left < p.left - 0.5 || r.right > p.right + 0.5;
+      const out_y = id !== 'side' && (r.top < p.top - 0.5 || r.bottom > p.bottom + 0.5);
+      if (out_x || out_y) out.push(`${id}: ${e.tagName.toLowerCase()}.${e.className} '${(e.textContent || '').slice(0, 30)}'`);
+    }
+  }
+  return out.slice(0, 20);
+}
+
+// the signals panel: per group its traces (label, range text, badges), the
+// summary's badge; closing a group hides its traces and opening shows them;
+// after a resize every plot is as wide as its box
+async function inspectSignals(page, a) {
+  const read = () => page.evaluate(() => [...document.querySelectorAll('#signals details.group')].map((g) => ({
+    key: g.dataset.group,
+    title: g.querySelector('summary .group-title').textContent,
+    badge: g.querySelector('summary .badge')?.textContent ?? null,
+    traces: [...g.querySelectorAll('.spark')].map((s) => ({
+      label: s.querySelector('.spark-label').textContent,
+      range: s.querySelector('.spark-range').textContent,
+      badges: [...s.querySelectorAll('.spark-foot .badge')].map((b) => b.textContent),
+      stops: s.querySelector('.spark-stops')?.textContent ?? null,
+      cursor: s.querySelector('.spark-cursor').style.left,
+    })),
+    note: g.querySelector(':scope > .muted')?.textContent ?? null,
+  })));
+  const groups = await read();
+  // close and open the first group with traces
+  const first = groups.find((g) => g.traces.length > 0);
+  let collapse = null;
+  if (first) {
+    const summary = page.locator(`#signals details[data-group="${first.key}"] > summary`);
+    const visible = () => page.locator(`#signals details[data-group="${first.key}"] .spark`).first().isVisible();
+    await summary.click();
+    const closed = !(await visible());
+    await summary.click();
+    collapse = { group: first.key, closed, reopened: await visible() };
+  }
+  // plots as wide as their boxes, before and after the window narrows
+  const widths = () => page.evaluate(() => {
+    const cs = [...document.querySelectorAll('#side canvas.spark-plot')].filter((c) => c.getClientRects().length);
+    return { boxes: cs.map((c) => c.clientWidth), drawn: cs.map((c) => c.width / (window.devicePixelRatio || 1)) };
+  });
+  const before = await widths();
+  await page.setViewportSize({ width: Math.round(Number(a.width) * 0.8), height: Number(a.height) });
+  await page.waitForTimeout(300);
+  const after = await widths();
+  await page.setViewportSize({ width: Number(a.width), height: Number(a.height) });
+  await page.waitForTimeout(300);
+  const same = (w) => w.boxes.length > 0 && w.boxes.every((b, i) => Math.abs(b - w.drawn[i]) <= 1);
+  return {
+    groups, collapse,
+    resize: { width: before.boxes[0] ?? 0, narrowed: after.boxes[0] ?? 0, fits: same(before), fitsAfter: same(after) },
+  };
 }
 
 // the run panel: curves drawn, generations offered, choosing one switches the creature

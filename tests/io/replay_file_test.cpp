@@ -1,0 +1,170 @@
+// The replay writer's sensors and joint angles: one reading per sensor and one
+// position per joint degree of freedom in every frame, the header describing
+// each sensor and each joint's stops, and recording them changes nothing of
+// the evaluation.
+#include "io/replay_file.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+#include "develop/develop.h"
+#include "genome/genome_json.h"
+
+namespace bx {
+namespace {
+
+using nlohmann::json;
+
+// the creature and the config `simulate` gives it (a catapult's: the throwing task)
+CreatureModel grow(const std::string& name, SimConfig& cfg, double seconds) {
+  auto g = load_genome(std::string(BESTIARY_SOURCE_DIR) + "/tests/creatures/" + name);
+  EXPECT_TRUE(g.ok()) << g.error();
+  cfg = default_sim_config(*g);
+  task_seconds(cfg) = seconds;
+  Development d = develop(*g);
+  EXPECT_TRUE(d.viable()) << d.reason;
+  return *d.model;
+}
+
+struct Written {
+  CreatureModel m;
+  EvalResult res;
+  json j;
+};
+
+// the creature simulated for `seconds` with a replay, and the replay as JSON
+Written simulate(const std::string& name, double seconds) {
+  SimConfig cfg;
+  Written w{grow(name, cfg, seconds), {}, {}};
+  Replay r;
+  w.res = evaluate(w.m, cfg, 1, &r);
+  w.j = json::parse(replay_to_string(w.m, r, w.res, {name, 1, cfg.physics.dt, cfg.physics.friction}));
+  return w;
+}
+
+// the least and greatest value of frames[*][field][a][b] (b < 0: [field][a])
+std::pair<double, double> extent(const json& frames, const char* field, int a, int b = -1) {
+  double lo = INFINITY, hi = -INFINITY;
+  for (const auto& f : frames) {
+    double v = b < 0 ? f[field][a].get<double>() : f[field][a][b].get<double>();
+    lo = std::min(lo, v);
+    hi = std::max(hi, v);
+  }
+  return {lo, hi};
+}
+
+TEST(ReplayFile, EveryFrameHoldsEachSensorsReadingAndEachJointDofsPosition) {
+  for (const char* name : {"walker.json", "snake.json", "centipede.json", "catapult.json", "pinned.json"}) {
+    SCOPED_TRACE(name);
+    Written w = simulate(name, 2);
+    const json& j = w.j;
+    // the header: each sensor as the model has it, each joint's stops
+    ASSERT_EQ(j["sensors"].size(), w.m.sensors.size());
+    for (std::size_t k = 0; k < w.m.sensors.size(); ++k) {
+      const SensorModel& s = w.m.sensors[k];
+      const json& h = j["sensors"][k];
+      EXPECT_EQ(h["type"], std::string(to_string(s.type)));
+      EXPECT_EQ(h["part"], s.part);
+      if (s.type == SensorType::JointAngle) {
+        EXPECT_EQ(h["joint"], s.joint);
+        EXPECT_EQ(h["dof"], s.dof);
+        EXPECT_FALSE(h.contains("face"));
+      } else {
+        EXPECT_EQ(h["face"], std::string(to_string(s.face)));
+        EXPECT_FALSE(h.contains("joint"));
+      }
+    }
+    ASSERT_EQ(j["joints"].size(), w.m.joints.size());
+    for (std::size_t k = 0; k < w.m.joints.size(); ++k) {
+      const json& lim = j["joints"][k]["limits"];
+      ASSERT_EQ(lim.size(), w.m.joints[k].limits.size());
+      for (std::size_t d = 0; d < lim.size(); ++d) {
+        EXPECT_NEAR(lim[d][0].get<double>(), w.m.joints[k].limits[d].lo, 1e-6);
+        EXPECT_NEAR(lim[d][1].get<double>(), w.m.joints[k].limits[d].hi, 1e-6);
+      }
+    }
+    // the frames: counts match, sensors read within [-1, 1], values rounded
+    for (const auto& f : j["frames"]) {
+      ASSERT_EQ(f["sensors"].size(), w.m.sensors.size());
+      for (const auto& v : f["sensors"]) {
+        double x = v.get<double>();
+        EXPECT_GE(x, -1.0);
+        EXPECT_LE(x, 1.0);
+        EXPECT_NEAR(x * 1e4, std::round(x * 1e4), 1e-6) << "signals to 1e-4";
+      }
+      ASSERT_EQ(f["joint_angles"].size(), w.m.joints.size());
+      for (std::size_t k = 0; k < w.m.joints.size(); ++k) {
+        ASSERT_EQ(f["joint_angles"][k].size(), static_cast<std::size_t>(joint_dofs(w.m.joints[k].type)));
+        for (const auto& v : f["joint_angles"][k]) {
+          double x = v.get<double>();
+          EXPECT_TRUE(std::isfinite(x));
+          EXPECT_NEAR(x * 1e5, std::round(x * 1e5), 1e-6) << "angles to 1e-5";
+        }
+      }
+    }
+    // frame 0 comes before the brain's first step: nothing read yet
+    for (const auto& v : j["frames"][0]["sensors"]) EXPECT_EQ(v.get<double>(), 0.0);
+  }
+}
+
+TEST(ReplayFile, TheWalkersJointsSwingAndItsSensorsFollowThem) {
+  Written w = simulate("walker.json", 4);
+  const json& frames = w.j["frames"];
+  ASSERT_EQ(w.m.joints.size(), 4u);
+  // every degree of freedom of its four universal joints moves (rad)
+  for (int k = 0; k < 4; ++k)
+    for (int d = 0; d < 2; ++d) {
+      auto [lo, hi] = extent(frames, "joint_angles", k, d);
+      EXPECT_GT(hi - lo, 0.3) << "joint " << k << " dof " << d;
+    }
+  // its joint-angle sensors move too, and its contact sensors read +-1
+  for (std::size_t k = 0; k < w.m.sensors.size(); ++k) {
+    auto [lo, hi] = extent(frames, "sensors", static_cast<int>(k));
+    if (w.m.sensors[k].type == SensorType::JointAngle) {
+      EXPECT_GT(hi - lo, 0.3) << "sensor " << k;
+    } else {
+      for (std::size_t i = 1; i < frames.size(); ++i)
+        EXPECT_EQ(std::abs(frames[i]["sensors"][k].get<double>()), 1.0) << "sensor " << k;
+    }
+  }
+}
+
+TEST(ReplayFile, ASnakesHingesSwing) {
+  Written w = simulate("snake.json", 4);
+  for (int k = 0; k < static_cast<int>(w.m.joints.size()); ++k) {
+    ASSERT_EQ(w.m.joints[k].type, JointType::Hinge);
+    auto [lo, hi] = extent(w.j["frames"], "joint_angles", k, 0);
+    EXPECT_GT(hi - lo, 0.1) << "joint " << k;
+  }
+}
+
+TEST(ReplayFile, APinnedHingeRestsAtItsStopUnderAConstantSignal) {
+  // tests/creatures/pinned.json: an effector with bias -1 and no inputs
+  // holds its hinge against the stop at -0.5 rad
+  Written w = simulate("pinned.json", 3);
+  const json& frames = w.j["frames"];
+  for (std::size_t i = 1; i < frames.size(); ++i) EXPECT_EQ(frames[i]["effectors"][0], -1.0);
+  // from 0.3 s on it stays at the stop, overshooting it a little when jolted
+  auto [lo, hi] = extent(json(std::vector<json>(frames.begin() + 10, frames.end())), "joint_angles", 0, 0);
+  EXPECT_GT(lo, -0.7);
+  EXPECT_LT(hi, -0.45);
+  EXPECT_EQ(w.j["joints"][0]["limits"], json::parse("[[-0.5, 0.5]]"));
+}
+
+TEST(ReplayFile, RecordingAReplayChangesNothingOfTheEvaluation) {
+  for (const char* name : {"walker.json", "catapult.json"}) {
+    SimConfig cfg;
+    CreatureModel m = grow(name, cfg, 3);
+    Replay r;
+    EvalResult with = evaluate(m, cfg, 5, &r), without = evaluate(m, cfg, 5);
+    EXPECT_EQ(with.fitness, without.fitness) << name;  // bit-identical
+    EXPECT_EQ(with.distance, without.distance) << name;
+    EXPECT_EQ(with.steps, without.steps) << name;
+  }
+}
+
+}  // namespace
+}  // namespace bx
