@@ -14,7 +14,10 @@ namespace {
 // the stream of start poses (evolution.cpp's streams are 1-4, trials' 5, checks' 6)
 constexpr std::uint64_t kStartStream = 7;
 
-void record(const CreatureModel& m, const World& w, const BrainState& bs, Replay& r) {
+// `signals`: what the motors were given (the brain's outputs, or 0 while the
+// task holds the motors off, or the diagnostic clamp)
+void record(const CreatureModel& m, const World& w, const BrainState& bs,
+            const std::vector<double>& signals, Replay& r) {
   ReplayFrame f;
   f.t = w.time();
   f.poses.reserve(7 * m.parts.size());
@@ -24,7 +27,7 @@ void record(const CreatureModel& m, const World& w, const BrainState& bs, Replay
     f.poses.insert(f.poses.end(), {p.p.x, p.p.y, p.p.z, q.w, q.x, q.y, q.z});
   }
   f.neurons.assign(bs.values.begin() + m.brain.n_sensors, bs.values.end());
-  f.effectors = bs.effector_out;
+  f.effectors = signals;
   // the readings the brain took before its last step (0 before its first)
   f.sensors.assign(bs.values.begin(), bs.values.begin() + m.brain.n_sensors);
   for (int j = 0; j < static_cast<int>(m.joints.size()); ++j)
@@ -53,7 +56,7 @@ class Simulation {
     // the creature resting drop_height above the ground
     // (turned by `yaw` about the vertical, which keeps its height)
     world_.add_creature(m, {{0, 0, drop_height - m.min_z()}, Mat3::rotation({0, 0, 1}, yaw)});
-    if (replay_) record(m_, world_, brain_, *replay_);
+    if (replay_) record(m_, world_, brain_, motors_off_, *replay_);
   }
 
   World& world() { return world_; }
@@ -103,7 +106,7 @@ class Simulation {
     }
     // replay frame k is the first step at or after k / fps
     if (replay_ && world_.time() >= frames_ / cfg_.replay_fps - 1e-9) {
-      record(m_, world_, brain_, *replay_);
+      record(m_, world_, brain_, signals, *replay_);
       ++frames_;
     }
     return true;
