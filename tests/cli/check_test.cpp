@@ -1,0 +1,84 @@
+// `bestiary check`: a creature's fitness under other seeds, smaller steps,
+// more iterations and clamped effectors, with a verdict in the exit code.
+#include <gtest/gtest.h>
+
+#include "support/run_command.h"
+#include <nlohmann/json.hpp>
+#include <unistd.h>
+
+#include <filesystem>
+#include <string>
+
+namespace bx {
+namespace {
+
+namespace fs = std::filesystem;
+using bxtest::Outcome;
+using bxtest::bestiary;
+using bxtest::creature;
+
+double ratio(const nlohmann::json& j, const std::string& name) {
+  for (const auto& v : j["variants"])
+    if (v["name"] == name) return v["ratio"].get<double>();
+  ADD_FAILURE() << "no variant " << name;
+  return -1;
+}
+
+TEST(Check, AnOscillatingSnakePassesEveryGate) {
+  Outcome r = bestiary("check " + creature("snake.json") + " --json");
+  ASSERT_EQ(r.code, 0) << r.out << r.err;
+  auto j = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(j["passed"].get<bool>());
+  EXPECT_EQ(j["variants"].size(), 9u);  // 5 seeds, dt/2, dt/4, 2x iterations, clamped
+  EXPECT_GT(ratio(j, "dt/2"), 0.75);
+  EXPECT_GT(ratio(j, "dt/4"), 0.75);
+  EXPECT_LT(ratio(j, "clamped"), 0.05);  // its motion comes from its oscillating effectors
+  for (double sd : j["effector_sd"]) EXPECT_GT(sd, 0.5);
+  // its torque motors slam joints into their stops: 1.8 cm at worst (sims1994's
+  // torque against light parts, docs/physics.md), not the decimetres of QuickStep
+  EXPECT_LT(j["max_joint_gap"].get<double>(), 0.03);
+}
+
+TEST(Check, ACreatureWithAConstantEffectorFailsTheClampedGate) {
+  // pinned.json holds its one effector at -1: clamping changes nothing
+  Outcome r = bestiary("check " + creature("pinned.json"));
+  EXPECT_EQ(r.code, 1) << r.out << r.err;
+  EXPECT_NE(r.out.find("verdict: FAIL"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("clamped effectors keep 1 > 0.25"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("effector activity (s.d. of each signal while driven): 0.000"), std::string::npos)
+      << r.out;
+}
+
+TEST(Check, GatesAreConfigValues) {
+  Outcome r = bestiary("check " + creature("pinned.json") + " --set check.max_clamped=2 --json");
+  EXPECT_EQ(r.code, 0) << r.out << r.err;
+}
+
+TEST(Check, ARunsBestIsCheckedWithItsOwnConfigAndSeed) {
+  fs::path dir = fs::temp_directory_path() / ("bx_check_run_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  Outcome run = bestiary("run quick --out " + dir.string() +
+                         " --set evolution.population=12 --set evolution.generations=2 --quiet");
+  ASSERT_EQ(run.code, 0) << run.err;
+  Outcome r = bestiary("check " + dir.string() + " --json");
+  ASSERT_TRUE(r.code == 0 || r.code == 1) << r.err;
+  auto j = nlohmann::json::parse(r.out);
+  // the scored evaluation, exactly
+  EXPECT_EQ(j["fitness"].get<double>(), j["stored_fitness"].get<double>());
+  Outcome bad = bestiary("check " + dir.string() + " --id 999999");
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.err.find("--id: "), std::string::npos) << bad.err;
+  fs::remove_all(dir);
+}
+
+TEST(Check, BadInputIsOneLineAndExitCodeTwo) {
+  Outcome r = bestiary("check /nonexistent/genome.json");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  Outcome s = bestiary("check " + creature("snake.json") + " --set check.min_converged=-1");
+  EXPECT_EQ(s.code, 2);
+  EXPECT_NE(s.err.find("check.min_converged"), std::string::npos) << s.err;
+}
+
+}  // namespace
+}  // namespace bx
