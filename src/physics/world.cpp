@@ -6,7 +6,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdarg>
 #include <cstdio>
+#include <string>
 #include <mutex>
 
 namespace bx {
@@ -14,6 +16,18 @@ namespace bx {
 namespace {
 
 std::once_flag g_ode_once;
+
+// ODE's error and debug handlers must not return (ODE aborts if they do)
+// set by a fault: ODE's threading implementation of the faulted step is left
+// mid-job and asserts if freed, so the world that faulted leaks it (rare)
+thread_local bool g_faulted = false;
+
+[[noreturn]] void ode_fault(int num, const char* msg, va_list ap) {
+  g_faulted = true;
+  char buf[256];
+  std::vsnprintf(buf, sizeof buf, msg, ap);
+  throw PhysicsFault("ODE internal error " + std::to_string(num) + ": " + buf);
+}
 
 // ODE matrices are 3x4 row-major
 void to_ode(const Mat3& R, dMatrix3 out) {
@@ -76,6 +90,8 @@ void ensure_ode_initialized() {
     dInitODE2(0);
     // ODE prints and aborts on internal errors; keep messages on stderr short
     dSetMessageHandler([](int, const char*, va_list) {});
+    dSetErrorHandler(ode_fault);
+    dSetDebugHandler(ode_fault);
   });
   static thread_local bool thread_ready = false;
   if (!thread_ready) {
@@ -332,7 +348,10 @@ World::~World() {
   dJointGroupDestroy(w.contact_group);
   dSpaceDestroy(w.space);  // destroys its geoms
   dWorldDestroy(w.world);  // destroys bodies and joints
-  dThreadingFreeImplementation(w.threading);
+  if (g_faulted)
+    g_faulted = false;  // after a PhysicsFault: leak the threading implementation
+  else
+    dThreadingFreeImplementation(w.threading);
 }
 
 void World::add_creature(const CreatureModel& m, const Pose& placement) {

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <memory>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -15,7 +16,16 @@
 
 namespace bx {
 
-/// Initialises ODE for this process (once) and this thread.
+/// An internal error of ODE (a failed assertion, e.g. a singular matrix in
+/// the exact solver's factorisation): thrown out of the ODE call instead of
+/// ODE's abort, so that one evaluation fails, not the process. The world it
+/// came from must be destroyed, not stepped again.
+struct PhysicsFault : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+/// Initialises ODE for this process (once) and this thread; ODE's internal
+/// errors throw PhysicsFault.
 void ensure_ode_initialized();
 
 /// Reseeds ODE's process-wide random generator (QuickStep's constraint

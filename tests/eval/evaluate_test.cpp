@@ -215,3 +215,31 @@ TEST(Evaluate, ChaumontSequenceSettlesBurstsSettlesThenMeasures) {
 
 }  // namespace
 }  // namespace bx
+
+namespace bx {
+namespace {
+
+TEST(Evaluate, AnOdeInternalErrorFailsTheEvaluationNotTheProcess) {
+  // ode_fault.json (17 blocks, from a quick run at dt 1/120) makes the exact
+  // solver's factorisation meet a zero pivot: ODE's assertion, which aborted
+  // the process, now fails this one evaluation
+  SimConfig snake_cfg;
+  CreatureModel snake = grow("snake.json", &snake_cfg);
+  EvalResult before = evaluate(snake, snake_cfg, 3);
+  SimConfig cfg;
+  CreatureModel m = grow("ode_fault.json", &cfg);
+  ASSERT_EQ(cfg.physics.solver, Solver::Exact);
+  Replay replay;
+  EvalResult r = evaluate(m, cfg, 1, &replay);
+  EXPECT_TRUE(r.failed);
+  EXPECT_NE(r.failure.find("ODE internal error"), std::string::npos) << r.failure;
+  EXPECT_EQ(r.fitness, 0.0);
+  EXPECT_FALSE(replay.frames.empty());
+  // and ODE is sound after it: the same evaluation as before the fault
+  EvalResult after = evaluate(snake, snake_cfg, 3);
+  EXPECT_EQ(after.fitness, before.fitness);
+  EXPECT_EQ(after.steps, before.steps);
+}
+
+}  // namespace
+}  // namespace bx
