@@ -62,6 +62,8 @@ using namespace bx::bench;
 struct Figures {
   double ours_sps = 0, raw_sps = 0;
   double ours_contacts = 0, raw_contacts = 0;
+  // ours / raw of each paired repetition (the machine is shared: the spread)
+  double ratio_min = 0, ratio_max = 0;
 };
 
 /// The solver to time (--solver, --iterations); default: the dialect's.
@@ -147,6 +149,10 @@ Figures bench_creature(const char* label, const std::string& path, long steps, i
   }
   f.ours_sps = static_cast<double>(n) / median(ours_t);
   f.raw_sps = static_cast<double>(n) / median(raw_t);
+  std::vector<double> ratios;
+  for (std::size_t r = 0; r < ours_t.size(); ++r) ratios.push_back(raw_t[r] / ours_t[r]);
+  f.ratio_min = *std::min_element(ratios.begin(), ratios.end());
+  f.ratio_max = *std::max_element(ratios.begin(), ratios.end());
   return f;
 }
 
@@ -231,8 +237,10 @@ int main(int argc, char** argv) {
     Figures f = bench_creature(c.label, dir + c.file, steps, reps, seed, choice);
     double ratio = f.ours_sps / f.raw_sps;
     worst = std::min(worst, ratio);
-    std::printf("%s: ours %.0f steps/s, raw ODE %.0f steps/s, ratio %.3f, contacts/step ours %.1f raw %.1f\n",
-                c.label, f.ours_sps, f.raw_sps, ratio, f.ours_contacts, f.raw_contacts);
+    std::printf("%s: ours %.0f steps/s, raw ODE %.0f steps/s, ratio %.3f (per run min %.3f, max %.3f), "
+                "contacts/step ours %.1f raw %.1f\n",
+                c.label, f.ours_sps, f.raw_sps, ratio, f.ratio_min, f.ratio_max, f.ours_contacts,
+                f.raw_contacts);
     std::fflush(stdout);
   }
   std::printf("ratio_vs_raw_ode: %.3f\n", worst);
