@@ -7,11 +7,10 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <optional>
-#include <sstream>
 
 #include "cli/commands.h"
+#include "core/files.h"
 #include "develop/develop.h"
 #include "eval/check.h"
 #include "evolve/run.h"
@@ -45,14 +44,6 @@ struct Subject {
   std::optional<double> stored_fitness;  ///< a run's individual: the fitness the run recorded
 };
 
-Result<std::string> read_text(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) return Error{path + ": cannot read"};
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 // a run's individual (the best by default), with the run's config and its evaluation seed
 Result<Subject> from_run(const CheckArgs& a) {
   if (!a.config.empty()) return Error{"--config: a run is checked with its own config (use --set to vary it)"};
@@ -64,10 +55,7 @@ Result<Subject> from_run(const CheckArgs& a) {
     ind = (*store)->individual(*a.id);
     if (!ind) return Error{"--id: " + a.target + " has no individual " + std::to_string(*a.id)};
   } else {
-    for (const auto& g : (*store)->generations()) {
-      auto best = (*store)->individual(g.best_id);
-      if (best && (!ind || best->fitness > ind->fitness)) ind = best;
-    }
+    ind = (*store)->best_individual();
     if (!ind) return Error{a.target + ": no generation finished yet"};
   }
   auto cfg = read_run_config((*store)->meta("config"), run_config_path(a.target), a.set);
@@ -88,7 +76,7 @@ Result<Subject> from_genome(const CheckArgs& a) {
   std::string text = "[genome]\ndialect = \"" + std::string(to_string(g->dialect)) + "\"\n";
   std::string source = a.target;
   if (!a.config.empty()) {
-    auto t = read_text(a.config);
+    auto t = read_file(a.config);
     if (!t) return Error{t.error()};
     text = *t;
     source = a.config;

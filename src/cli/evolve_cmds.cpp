@@ -109,11 +109,7 @@ int cmd_resume(const std::string& dir, int workers, bool quiet) {
 int cmd_best(const std::string& dir, const std::string& out) {
   auto store = RunStore::open(run_db_path(dir));
   if (!store) return fail(store.error());
-  std::optional<Individual> best;
-  for (const auto& g : (*store)->generations()) {
-    auto ind = (*store)->individual(g.best_id);
-    if (ind && (!best || ind->fitness > best->fitness)) best = ind;
-  }
+  std::optional<Individual> best = (*store)->best_individual();
   if (!best) return fail(dir + ": no generation finished yet");
   std::fprintf(stderr, "best so far: individual %lld of generation %d, fitness %.6g (%s)\n",
                static_cast<long long>(best->id), best->generation, best->fitness, best->op.c_str());

@@ -233,7 +233,6 @@ EvalResult evaluate_once(const CreatureModel& m, const SimConfig& cfg, std::uint
   // the seed's start: a turn within +-start_yaw_jitter degrees
   Rng start(stream_seed({seed, kStartStream}));
   const double yaw = start.uniform(-1, 1) * cfg.start_yaw_jitter * kPi / 180;
-  const std::size_t frames = replay ? replay->frames.size() : 0;
   try {
     switch (cfg.task_kind) {
       case TaskKind::Locomotion: return evaluate_locomotion(m, cfg, yaw, res, replay);
@@ -241,10 +240,9 @@ EvalResult evaluate_once(const CreatureModel& m, const SimConfig& cfg, std::uint
     }
   } catch (const PhysicsFault& e) {
     // ODE gave up inside a step (its world is gone with the Simulation):
-    // a failed evaluation, as an explosion is; the replay keeps what it had
+    // a failed evaluation, as an explosion is; the replay keeps its frames
     res.failed = true;
     res.failure = e.what();
-    if (replay) replay->frames.resize(std::max(frames, replay->frames.size()));
   }
   return res;
 }

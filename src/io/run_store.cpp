@@ -206,4 +206,13 @@ std::optional<Individual> RunStore::individual(std::int64_t id) const {
   return ind;
 }
 
+std::optional<Individual> RunStore::best_individual() const {
+  std::optional<Individual> best;
+  for (const auto& g : generations()) {
+    auto ind = individual(g.best_id);
+    if (ind && (!best || ind->fitness > best->fitness)) best = ind;
+  }
+  return best;
+}
+
 }  // namespace bx

@@ -46,6 +46,8 @@ class RunStore {
   std::vector<GenerationStats> generations() const;
   /// One individual by id.
   std::optional<Individual> individual(std::int64_t id) const;
+  /// The fittest of the generations' bests so far (nullopt before any generation).
+  std::optional<Individual> best_individual() const;
   /// A metadata value ("" if absent).
   std::string meta(const std::string& key) const;
   /// Sets a metadata value.
