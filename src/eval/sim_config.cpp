@@ -51,11 +51,12 @@ SimConfig default_sim_config(Dialect d) {
       c.brain_hz = 200;
       c.motor.model = MotorModel::Torque;
       c.motor.strength = 1000;
-      // full torque from rest slams a light part past its stop before the stop
-      // engages, parting the hand-designed walker's joints by 9.4 cm for a few
-      // steps (docs/physics.md, "what is left"): 0.15 m until motor force is
-      // bounded by part inertia; the other dialects keep the 5 cm default
-      c.physics.max_joint_gap = 0.15;
+      // a pure torque from rest slammed light parts through their stops in one
+      // step (a leg 1 rad past its stop, joints parted by 9.4 cm): the motors
+      // push only up to 10 rad/s (1 m/s along sliders), as a real motor's
+      // torque falls off towards its no-load speed (docs/physics.md)
+      c.motor.torque_max_speed = 10;
+      c.motor.torque_max_linear_speed = 1;
       c.task.seconds = 10;
       c.task.fitness = LocomotionFitness::Speed;  // speed of the centre of mass
       break;

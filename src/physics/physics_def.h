@@ -11,6 +11,19 @@ enum class Solver {
   Exact,      ///< dWorldStep: the exact LCP solve (Dantzig), O(n^3) per step
 };
 
+/// How the friction of a contact is bounded by its normal force.
+enum class FrictionBound {
+  /// A contact that persists with a steady normal force (changed by at most
+  /// 30% between the last two steps) is bounded by mu times the lesser of
+  /// those two forces; others by ODE's pyramid. On the exact solver ODE's
+  /// pyramid alone left resting creatures gliding over frictionless ground
+  /// (docs/physics.md).
+  Lagged,
+  /// ODE's friction pyramid (dContactApprox1): mu times the normal force as
+  /// the solver has it when it reaches the friction row
+  Ode,
+};
+
 /// The physics world. Defaults are ODE's usual values; each dialect sets its
 /// paper's constants (see io/config.cpp).
 struct PhysicsDef {
@@ -19,6 +32,7 @@ struct PhysicsDef {
   double erp = 0.2;              ///< ODE error reduction parameter
   double cfm = 1e-5;             ///< ODE constraint force mixing
   double friction = 1.0;         ///< Coulomb coefficient, ground and part-part contacts
+  FrictionBound friction_bound = FrictionBound::Lagged;
   Solver solver = Solver::Exact;
   int solver_iterations = 20;    ///< QuickStep iterations
   /// ERP and CFM of contacts and of joint stops (negative: the world's erp
@@ -35,6 +49,12 @@ struct PhysicsDef {
   /// that starts (m; ODE's surface layer, default 0).
   double contact_max_correcting_vel = 0;
   double contact_surface_layer = 0;
+  /// Rolling resistance of round parts (spheres, capsules, cylinders) on
+  /// whatever they touch: the lever arm (m) of the torque that resists
+  /// rolling, as a share of the contact's normal force (ODE's rho). Without
+  /// it a cylinder carrying an offset weight rocks for ever, as nothing
+  /// rigid dissipates rolling energy (docs/physics.md). 0: none.
+  double rolling_friction = 0.005;
   int max_contacts = 4;          ///< contact points per colliding pair
   bool self_collision = true;    ///< non-adjacent parts collide with each other
   // numerical-explosion tests (chaumont2007 5.4): exceeding any ends the evaluation
@@ -64,6 +84,13 @@ struct MotorDef {
   double max_speed = 4;   ///< Servo, Saturation: rad/s (or m/s for sliders)
   double max_force = 4;   ///< Servo: N m (or N)
   double strength = 50;   ///< Torque, Saturation: N m per m^2 of cross-section
+  /// Torque: the joint speed at which a motor stops pushing (its no-load
+  /// speed; rad/s, and m/s for a linear degree of freedom): the motor gives
+  /// its torque up to that speed and none beyond, so a light part is not
+  /// slammed through its stop in one step (docs/physics.md). 0: no limit, a
+  /// pure torque.
+  double torque_max_speed = 0;
+  double torque_max_linear_speed = 0;
   double kp = 0.25;       ///< PD gain
   double kd = 0.175;      ///< PD damping
 };

@@ -22,6 +22,23 @@ std::once_flag g_ode_once;
 // mid-job and asserts if freed, so the world that faulted leaks it (rare)
 thread_local bool g_faulted = false;
 
+// ODE's messages (dMessage) report a step it could not solve: the exact
+// solver's "LCP internal error", after which it leaves the rows it did not
+// reach at zero force. Counted here, reported by the world that stepped.
+thread_local long g_messages = 0;
+thread_local char g_last_message[200] = "";
+
+void ode_message(int num, const char* msg, va_list ap) {
+  ++g_messages;
+  std::vsnprintf(g_last_message, sizeof g_last_message, msg, ap);
+}
+
+// FrictionBound::Lagged: a contact of this step between the same bodies
+// within this distance (m) of one of the last step is the same contact, and
+// its normal force is steady if it changed by at most this share between the
+// last two steps
+constexpr double kSameContact = 0.02, kSteadyNormal = 0.3;
+
 [[noreturn]] void ode_fault(int num, const char* msg, va_list ap) {
   g_faulted = true;
   char buf[256];
@@ -79,6 +96,12 @@ void place_geom(dGeomID g, Shape shape, const Pose& pose) {
 
 bool def_stop(double v) { return v >= 0; }
 
+// spheres, capsules and cylinders: the shapes that roll
+bool round_geom(dGeomID g) {
+  int c = dGeomGetClass(g);
+  return c == dSphereClass || c == dCapsuleClass || c == dCylinderClass;
+}
+
 bool is_linear_dof(JointType t, int dof) {
   return t == JointType::Slider || (t == JointType::Cylindrical && dof == 0);
 }
@@ -88,8 +111,9 @@ bool is_linear_dof(JointType t, int dof) {
 void ensure_ode_initialized() {
   std::call_once(g_ode_once, [] {
     dInitODE2(0);
-    // ODE prints and aborts on internal errors; keep messages on stderr short
-    dSetMessageHandler([](int, const char*, va_list) {});
+    // ODE prints and aborts on internal errors: failed steps are counted,
+    // internal errors throw
+    dSetMessageHandler(ode_message);
     dSetErrorHandler(ode_fault);
     dSetDebugHandler(ode_fault);
   });
@@ -136,6 +160,25 @@ struct World::Impl {
   std::vector<Vec3> prev_pos;
   std::vector<std::array<double, 3>> joint_torque;  // Torque/PD accumulation per joint
   std::vector<dContact> contact_buf;
+  // the contacts of the step being taken (made by collide(), attached
+  // after it) and the forces they carry
+  struct Contact {
+    dContact c;
+    dBodyID a, b;     // a is never the ground's (the feedback's f1 is a's force)
+    bool rolls;       // has rolling friction rows: left to ODE's pyramid
+    double was = -1;  // its normal force in the last step (-1: a new contact)
+  };
+  std::vector<Contact> contacts;
+  std::vector<dJointFeedback> feedback;
+  // FrictionBound::Lagged: each contact of the last step, with its normal
+  // force then and the step before
+  struct Carried {
+    dBodyID a, b;
+    Vec3 p;
+    double now, before;
+  };
+  std::vector<Carried> carried;
+  std::string solver_failure;  // the message of a step ODE could not solve
   double total_mass = 0;
   double t = 0;
   WorldStats stats;
@@ -281,6 +324,12 @@ struct World::Impl {
       dContact& c = contact_buf[i];
       c.surface.mode = dContactApprox1;
       c.surface.mu = def.friction;
+      if (def.rolling_friction > 0 && (round_geom(a) || round_geom(b))) {
+        // rolling resistance, bounded by rho times the normal force (Approx1_N)
+        c.surface.mode |= dContactRolling;
+        c.surface.rho = c.surface.rho2 = def.rolling_friction;
+        c.surface.rhoN = 0;
+      }
       if (def.contact_erp >= 0) {
         c.surface.mode |= dContactSoftERP;
         c.surface.soft_erp = def.contact_erp;
@@ -290,11 +339,68 @@ struct World::Impl {
         c.surface.soft_cfm = def.contact_cfm;
       }
       stats.max_penetration = std::max(stats.max_penetration, static_cast<double>(c.geom.depth));
-      dJointID cj = dJointCreateContact(world, contact_group, &c);
-      dJointAttach(cj, ba, bb);
+      // the first body never the ground's
+      Contact ct{c, ba, bb, (c.surface.mode & dContactRolling) != 0};
+      if (!ct.a) {
+        std::swap(ct.a, ct.b);
+        std::swap(ct.c.geom.g1, ct.c.geom.g2);
+        for (int i = 0; i < 3; ++i) ct.c.geom.normal[i] = -ct.c.geom.normal[i];
+      }
+      contacts.push_back(ct);
       // ODE's normal points into geom a: a is touched on the face facing -n, b on +n
       mark_face(a, c.geom.normal, -1);
       mark_face(b, c.geom.normal, +1);
+    }
+  }
+
+  // makes the contact joints of this step. FrictionBound::Lagged: a contact
+  // that persists from the last step with a steady normal force gets mu times
+  // the lesser of its last two normal forces as a fixed friction bound (ODE's
+  // Approx0: a bound in newtons); new, changing and rolling contacts keep
+  // ODE's pyramid. ODE's exact solver sets a pyramid's bound from the normal
+  // force as it stands when the solver reaches the friction row, and could
+  // leave a resting creature gliding on frictionless ground (docs/physics.md)
+  void attach_contacts() {
+    const bool lagged = def.friction_bound == FrictionBound::Lagged;
+    feedback.resize(contacts.size());
+    for (Contact& ct : contacts) {
+      dContact& c = ct.c;
+      if (lagged) {
+        Vec3 p = vec(c.geom.pos);
+        double nearest = kSameContact;
+        const Carried* same = nullptr;
+        for (const Carried& was : carried) {
+          if (was.a != ct.a || was.b != ct.b) continue;
+          double d = norm(was.p - p);
+          if (d < nearest) {
+            nearest = d;
+            same = &was;
+          }
+        }
+        if (same) {
+          ct.was = same->now;
+          bool steady = same->before >= 0 &&
+                        std::abs(same->now - same->before) <= kSteadyNormal * std::max(same->now, same->before);
+          if (steady && !ct.rolls) {
+            c.surface.mode &= ~dContactApprox1;
+            c.surface.mu = def.friction * std::min(same->now, same->before);
+          }
+        }
+      }
+      dJointID cj = dJointCreateContact(world, contact_group, &c);
+      dJointAttach(cj, ct.a, ct.b);
+      if (lagged) dJointSetFeedback(cj, &feedback[&ct - contacts.data()]);
+    }
+  }
+
+  // after the step: the normal force each contact carried
+  void remember_contacts() {
+    carried.clear();
+    if (def.friction_bound != FrictionBound::Lagged) return;
+    for (std::size_t k = 0; k < contacts.size(); ++k) {
+      const Contact& ct = contacts[k];
+      double normal = std::abs(dot(vec(feedback[k].f1), vec(ct.c.geom.normal)));
+      carried.push_back({ct.a, ct.b, vec(ct.c.geom.pos), normal, ct.was});
     }
   }
 
@@ -501,10 +607,20 @@ void World::apply_effectors(const CreatureModel& m, const MotorDef& motor,
         w.set_param(j, em.dof, dParamVel, s >= 0 ? motor.max_speed : -motor.max_speed);
         w.set_param(j, em.dof, dParamFMax, std::abs(s) * motor.strength * em.cross_section);
         break;
-      case MotorModel::Torque:
-        w.joint_torque[em.joint][em.dof] += s * motor.strength * em.cross_section;
+      case MotorModel::Torque: {
+        double torque = s * motor.strength * em.cross_section;
+        double limit = is_linear_dof(j.type, em.dof) ? motor.torque_max_linear_speed
+                                                     : motor.torque_max_speed;
+        if (limit > 0) {
+          // the torque up to the no-load speed: ODE's motor row, capped at |torque|
+          w.set_param(j, em.dof, dParamVel, torque >= 0 ? limit : -limit);
+          w.set_param(j, em.dof, dParamFMax, std::abs(torque));
+          break;
+        }
+        w.joint_torque[em.joint][em.dof] += torque;
         torques = true;
         break;
+      }
       case MotorModel::PD: {
         const JointModel& jm = m.joints[em.joint];
         double target;
@@ -527,11 +643,20 @@ void World::apply_effectors(const CreatureModel& m, const MotorDef& motor,
 void World::step() {
   auto& w = *impl_;
   std::fill(w.contact_mask.begin(), w.contact_mask.end(), 0);
+  w.contacts.clear();
   dSpaceCollide(w.space, &w, &Impl::near_callback);
+  w.attach_contacts();
+  long messages = g_messages;
   if (w.def.solver == Solver::Exact)
     dWorldStep(w.world, w.def.dt);
   else
     dWorldQuickStep(w.world, w.def.dt);
+  if (g_messages != messages && w.solver_failure.empty()) {
+    char buf[300];
+    std::snprintf(buf, sizeof buf, "ODE could not solve the step at t=%.4g s (%s)", w.t, g_last_message);
+    w.solver_failure = buf;
+  }
+  w.remember_contacts();
   dJointGroupEmpty(w.contact_group);
   w.t += w.def.dt;
 }
@@ -563,6 +688,8 @@ void World::read_sensors(const CreatureModel& m, std::span<double> out) const {
 
 std::string World::check_explosion() {
   auto& w = *impl_;
+  // a step the solver gave up on left constraint rows at zero force
+  if (!w.solver_failure.empty()) return w.solver_failure;
   char buf[160];
   for (std::size_t i = 0; i < w.bodies.size(); ++i) {
     Vec3 p = vec(dBodyGetPosition(w.bodies[i]));

@@ -50,7 +50,10 @@ TEST(Check, ACreatureWithAConstantEffectorFailsTheClampedGate) {
 }
 
 TEST(Check, GatesAreConfigValues) {
-  Outcome r = bestiary("check " + creature("pinned.json") + " --set check.max_clamped=2 --json");
+  // pinned.json rests: its tiny distance is noise under other steps, so the
+  // convergence gate goes too
+  Outcome r = bestiary("check " + creature("pinned.json") +
+                       " --set check.max_clamped=2 --set check.min_converged=0 --json");
   EXPECT_EQ(r.code, 0) << r.out << r.err;
 }
 
