@@ -81,6 +81,27 @@ struct RawWorld {
   std::vector<dJointID> joints;
   std::vector<dJointID> amotors;
   std::vector<dContact> contact_buf;
+  // the contacts of a step, attached after collision detection, and (the
+  // lagged friction bound) what each carried in the last two steps
+  struct Contact {
+    dContact c;
+    dBodyID a, b;
+    bool rolls;
+    double was = -1;
+  };
+  struct Carried {
+    dBodyID a, b;
+    Vec3 p;
+    double now, before;
+  };
+  std::vector<Contact> contacts;
+  std::vector<dJointFeedback> feedback;
+  std::vector<Carried> carried;
+
+  static bool round_geom(dGeomID g) {
+    int c = dGeomGetClass(g);
+    return c == dSphereClass || c == dCapsuleClass || c == dCylinderClass;
+  }
 
   static void near_callback(void* data, dGeomID a, dGeomID b) {
     auto& w = *static_cast<RawWorld*>(data);
@@ -92,7 +113,64 @@ struct RawWorld {
       dContact& c = w.contact_buf[i];
       c.surface.mode = dContactApprox1;
       c.surface.mu = w.def.friction;
-      dJointAttach(dJointCreateContact(w.world, w.contact_group, &c), ba, bb);
+      if (w.def.rolling_friction > 0 && (round_geom(a) || round_geom(b))) {
+        c.surface.mode |= dContactRolling;
+        c.surface.rho = c.surface.rho2 = w.def.rolling_friction;
+        c.surface.rhoN = 0;
+      }
+      Contact ct{c, ba, bb, (c.surface.mode & dContactRolling) != 0};
+      if (!ct.a) {
+        std::swap(ct.a, ct.b);
+        std::swap(ct.c.geom.g1, ct.c.geom.g2);
+        for (int k = 0; k < 3; ++k) ct.c.geom.normal[k] = -ct.c.geom.normal[k];
+      }
+      w.contacts.push_back(ct);
+    }
+  }
+
+  // the contacts of this step, each steady one bounded by mu times the
+  // lesser of its last two normal forces (FrictionBound::Lagged)
+  void attach_contacts() {
+    const bool lagged = def.friction_bound == FrictionBound::Lagged;
+    feedback.resize(contacts.size());
+    for (std::size_t k = 0; k < contacts.size(); ++k) {
+      Contact& ct = contacts[k];
+      if (lagged) {
+        Vec3 p{ct.c.geom.pos[0], ct.c.geom.pos[1], ct.c.geom.pos[2]};
+        double nearest = 0.02;
+        const Carried* same = nullptr;
+        for (const Carried& was : carried) {
+          if (was.a != ct.a || was.b != ct.b) continue;
+          double d = norm(was.p - p);
+          if (d < nearest) {
+            nearest = d;
+            same = &was;
+          }
+        }
+        if (same) {
+          ct.was = same->now;
+          if (same->before >= 0 && !ct.rolls &&
+              std::abs(same->now - same->before) <= 0.3 * std::max(same->now, same->before)) {
+            ct.c.surface.mode &= ~dContactApprox1;
+            ct.c.surface.mu = def.friction * std::min(same->now, same->before);
+          }
+        }
+      }
+      dJointID cj = dJointCreateContact(world, contact_group, &ct.c);
+      dJointAttach(cj, ct.a, ct.b);
+      if (lagged) dJointSetFeedback(cj, &feedback[k]);
+    }
+  }
+
+  void remember_contacts() {
+    carried.clear();
+    if (def.friction_bound != FrictionBound::Lagged) return;
+    for (std::size_t k = 0; k < contacts.size(); ++k) {
+      const Contact& ct = contacts[k];
+      const dReal* f = feedback[k].f1;
+      const dReal* n = ct.c.geom.normal;
+      double normal = std::abs(f[0] * n[0] + f[1] * n[1] + f[2] * n[2]);
+      carried.push_back({ct.a, ct.b, {ct.c.geom.pos[0], ct.c.geom.pos[1], ct.c.geom.pos[2]}, normal, ct.was});
     }
   }
 
@@ -261,11 +339,14 @@ struct RawWorld {
 
   // one step, as World::step does it
   void step() {
+    contacts.clear();
     dSpaceCollide(space, this, &near_callback);
+    attach_contacts();
     if (def.solver == Solver::Exact)
       dWorldStep(world, def.dt);
     else
       dWorldQuickStep(world, def.dt);
+    remember_contacts();
     dJointGroupEmpty(contact_group);
   }
 };
@@ -302,7 +383,9 @@ inline MotorTape record_motor_tape(const CreatureModel& m, const SimConfig& cfg,
   MotorTape tape;
   tape.steps = steps;
   const MotorDef& motor = cfg.motor;
-  tape.torques = motor.model == MotorModel::Torque;
+  // torque motors with a speed limit are ODE velocity motors, as Saturation
+  const bool limited = motor.torque_max_speed > 0 || motor.torque_max_linear_speed > 0;
+  tape.torques = motor.model == MotorModel::Torque && !limited;
   // drives: torque motors per joint, in joint order (as World adds torques);
   // velocity motors per degree of freedom, the last effector's command winning
   std::vector<int> drive_of(m.joints.size() * 3, -1);
@@ -334,6 +417,13 @@ inline MotorTape record_motor_tape(const CreatureModel& m, const SimConfig& cfg,
       if (motor.model == MotorModel::Servo) {
         cmd[0] = motor.max_speed * sv;
         cmd[1] = motor.max_force;
+      } else if (motor.model == MotorModel::Torque) {  // with its speed limit
+        const JointType t = m.joints[em.joint].type;
+        bool linear = t == JointType::Slider || (t == JointType::Cylindrical && em.dof == 0);
+        double torque = sv * motor.strength * em.cross_section;
+        double limit = linear ? motor.torque_max_linear_speed : motor.torque_max_speed;
+        cmd[0] = torque >= 0 ? limit : -limit;
+        cmd[1] = std::abs(torque);
       } else {  // Saturation
         cmd[0] = sv >= 0 ? motor.max_speed : -motor.max_speed;
         cmd[1] = std::abs(sv) * motor.strength * em.cross_section;
