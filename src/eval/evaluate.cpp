@@ -268,11 +268,12 @@ EvalResult evaluate(const CreatureModel& m, const SimConfig& cfg, std::uint64_t 
   // the first trial is the one a replay shows and the one distance, release
   // and target miss describe; the others only score
   res.trial_fitness = {res.fitness};
-  double fitness = res.fitness;
+  double fitness = res.fitness, least = res.fitness;
   for (int k = 1; k < cfg.trials; ++k) {
     EvalResult t = evaluate_once(m, cfg, trial_seed(seed, k), nullptr);
     res.trial_fitness.push_back(t.fitness);
     fitness += t.fitness;
+    least = std::min(least, t.fitness);
     res.steps += t.steps;
     res.brain_steps += t.brain_steps;
     if (t.failed && !res.failed) {
@@ -282,7 +283,7 @@ EvalResult evaluate(const CreatureModel& m, const SimConfig& cfg, std::uint64_t 
     }
   }
   // a creature that blows up in any trial is discarded (5.4), as in one
-  res.fitness = res.failed ? 0 : fitness / cfg.trials;
+  res.fitness = res.failed ? 0 : cfg.trial_score == TrialScore::Min ? least : fitness / cfg.trials;
   return res;
 }
 

@@ -18,6 +18,9 @@ enum class TaskKind {
   Throwing,    ///< SimConfig::throwing (catapults, chaumont2007 section 4)
 };
 
+/// How several trials' fitnesses combine (SimConfig::trial_score).
+enum class TrialScore { Mean, Min };
+
 /// The settings of one simulation. Config files (io/config.h) map onto these
 /// fields one to one, section by section.
 struct SimConfig {
@@ -34,6 +37,10 @@ struct SimConfig {
   /// their mean (QuickStep's randomised solver makes a chaotic motion, such
   /// as a throw, depend on the seed).
   int trials = 1;
+  /// How the trials' fitnesses make the creature's: their mean, or the
+  /// least of them (a creature is scored by its worst trial, so a lucky
+  /// chaotic event under one physics seed earns nothing; docs/physics.md).
+  TrialScore trial_score = TrialScore::Mean;
   /// Each physics seed turns the creature's starting pose about the vertical
   /// by a uniform angle within +-this (degrees), so that seeds vary an
   /// evaluation under the exact solver too, which, unlike QuickStep, draws

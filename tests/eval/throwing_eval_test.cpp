@@ -259,14 +259,20 @@ TEST(ThrowingEval, TrialsAverageTheThrowsOfSeveralSeeds) {
   ASSERT_FALSE(r.failed) << r.failure;
   ASSERT_EQ(r.trial_fitness.size(), 3u);
   EXPECT_EQ(trial_seed(7, 0), 7u);
-  double sum = 0;
+  double sum = 0, least = 1e300;
   for (int k = 0; k < 3; ++k) {
     EvalResult single = evaluate(m, one, trial_seed(7, k));
     EXPECT_EQ(r.trial_fitness[k], single.fitness) << k;
     EXPECT_GT(single.fitness, 1.5) << k;
     sum += single.fitness;
+    least = std::min(least, single.fitness);
   }
   EXPECT_DOUBLE_EQ(r.fitness, sum / 3);
+  // task.trial_score = "min": the worst throw is the score
+  SimConfig worst = three;
+  worst.trial_score = TrialScore::Min;
+  EXPECT_EQ(evaluate(m, worst, 7).fitness, least);
+  EXPECT_LT(least, r.fitness);
   EvalResult first = evaluate(m, one, 7);
   EXPECT_EQ(r.distance, first.distance);
   EXPECT_EQ(r.release_time, first.release_time);
