@@ -594,27 +594,30 @@ void World::apply_effectors(const CreatureModel& m, const MotorDef& motor,
                             std::span<const double> signals) {
   auto& w = *impl_;
   bool torques = false;
+  // ODE's velocity motor: pushes with up to `force` towards `speed`
+  auto drive = [&w](const Impl::Joint& j, int dof, double speed, double force) {
+    w.set_param(j, dof, dParamVel, speed);
+    w.set_param(j, dof, dParamFMax, force);
+  };
   for (std::size_t e = 0; e < m.effectors.size(); ++e) {
     const EffectorModel& em = m.effectors[e];
     const Impl::Joint& j = w.joints[em.joint];
     double s = signals[e];
     switch (motor.model) {
       case MotorModel::Servo:
-        w.set_param(j, em.dof, dParamVel, motor.max_speed * s);
-        w.set_param(j, em.dof, dParamFMax, motor.max_force);
+        drive(j, em.dof, motor.max_speed * s, motor.max_force);
         break;
       case MotorModel::Saturation:
-        w.set_param(j, em.dof, dParamVel, s >= 0 ? motor.max_speed : -motor.max_speed);
-        w.set_param(j, em.dof, dParamFMax, std::abs(s) * motor.strength * em.cross_section);
+        drive(j, em.dof, s >= 0 ? motor.max_speed : -motor.max_speed,
+              std::abs(s) * motor.strength * em.cross_section);
         break;
       case MotorModel::Torque: {
         double torque = s * motor.strength * em.cross_section;
         double limit = is_linear_dof(j.type, em.dof) ? motor.torque_max_linear_speed
                                                      : motor.torque_max_speed;
         if (limit > 0) {
-          // the torque up to the no-load speed: ODE's motor row, capped at |torque|
-          w.set_param(j, em.dof, dParamVel, torque >= 0 ? limit : -limit);
-          w.set_param(j, em.dof, dParamFMax, std::abs(torque));
+          // the torque up to the no-load speed (as Saturation, with its own speed)
+          drive(j, em.dof, torque >= 0 ? limit : -limit, std::abs(torque));
           break;
         }
         w.joint_torque[em.joint][em.dof] += torque;

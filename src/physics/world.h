@@ -74,8 +74,9 @@ class World {
   /// Writes every sensor's reading into `out` (size = m.sensors.size()).
   void read_sensors(const CreatureModel& m, std::span<double> out) const;
 
-  /// Empty if the world is sane, else why it exploded (NaN, too fast, a jump
-  /// or a torn joint), naming the part or joint and the value.
+  /// Empty if the world is sane, else why it exploded (NaN, too fast, a jump,
+  /// a torn joint, or a step ODE's solver gave up on), naming the part or
+  /// joint and the value, or ODE's message.
   std::string check_explosion();
 
   /// How far joint j has come apart now (m): the largest distance between

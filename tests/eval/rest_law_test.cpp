@@ -59,10 +59,15 @@ struct Outcome {
   std::string failure;
 };
 
-Outcome rest(const CreatureModel& m, Dialect d, double signal, std::uint64_t seed) {
-  EvalResult r = evaluate(m, clamped(d, signal), seed);
+// the creature evaluated under `c` (the rest law's clamped config, or a variant)
+Outcome rest(const CreatureModel& m, const SimConfig& c, std::uint64_t seed) {
+  EvalResult r = evaluate(m, c, seed);
   return {std::abs(r.distance) / m.body_length(), r.diagnostics.max_joint_gap,
           r.diagnostics.max_penetration, r.failed ? r.failure : ""};
+}
+
+Outcome rest(const CreatureModel& m, Dialect d, double signal, std::uint64_t seed) {
+  return rest(m, clamped(d, signal), seed);
 }
 
 const double kSignals[] = {-1, -0.3, 0.3, 1};
@@ -92,12 +97,6 @@ CreatureModel canonical(const std::string& name, Dialect* dialect = nullptr) {
   EXPECT_TRUE(dev.viable()) << name;
   if (dialect) *dialect = g->dialect;
   return *dev.model;
-}
-
-Outcome rest(const CreatureModel& m, SimConfig c, std::uint64_t seed) {
-  EvalResult r = evaluate(m, c, seed);
-  return {std::abs(r.distance) / m.body_length(), r.diagnostics.max_joint_gap,
-          r.diagnostics.max_penetration, r.failed ? r.failure : ""};
 }
 
 TEST(FrictionBound, ACreatureThatGlidedOnOdesFrictionPyramidRests) {
@@ -205,8 +204,9 @@ TEST_P(RestLawRandom, TwoHundredRandomCreaturesWithConstantSignalsComeToRestBarT
     ++tested;
     if (o.travel >= kMostTravel) {
       ++seen.travel;
-      travellers += " " + std::to_string(tested) + "@" + std::to_string(s).substr(0, 4) + ":" +
-                    std::to_string(o.travel).substr(0, 5);
+      char buf[64];
+      std::snprintf(buf, sizeof buf, " %d@%.1f:%.3f", tested, s, o.travel);
+      travellers += buf;
     }
     seen.gap += o.gap >= kMostGap;
     seen.depth += o.depth >= kMostDepth;
