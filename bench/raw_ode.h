@@ -80,6 +80,7 @@ struct RawWorld {
   std::vector<dBodyID> bodies;
   std::vector<dJointID> joints;
   std::vector<dJointID> amotors;
+  std::vector<dJointID> motors;  ///< PoweredStops::Separate: hinges' and universals' own motors
   std::vector<dContact> contact_buf;
   // the contacts of a step, attached after collision detection, and (the
   // lagged friction bound) what each carried in the last two steps
@@ -234,7 +235,19 @@ struct RawWorld {
       Vec3 an = placement.apply(jm.anchor);
       Vec3 a1 = placement.R * jm.axis1, a2 = placement.R * jm.axis2;
       dBodyID b1 = bodies[jm.parent], b2 = bodies[jm.child];
-      dJointID j = nullptr, am = nullptr;
+      dJointID j = nullptr, am = nullptr, mo = nullptr;
+      const bool separate = def.powered_stops == PoweredStops::Separate;
+      // as World::Impl::make_motor: an angular motor of the joint's own axes
+      auto motor_of = [&](std::initializer_list<Vec3> axes, std::initializer_list<int> rel) {
+        dJointID mj = dJointCreateAMotor(world, nullptr);
+        dJointAttach(mj, b1, b2);
+        dJointSetAMotorMode(mj, dAMotorUser);
+        dJointSetAMotorNumAxes(mj, static_cast<int>(axes.size()));
+        auto r = rel.begin();
+        int k = 0;
+        for (const Vec3& a : axes) dJointSetAMotorAxis(mj, k++, *r++, a.x, a.y, a.z);
+        return mj;
+      };
       switch (jm.type) {
         case JointType::Fixed:
           j = dJointCreateFixed(world, nullptr);
@@ -246,6 +259,7 @@ struct RawWorld {
           dJointAttach(j, b1, b2);
           dJointSetHingeAnchor(j, an.x, an.y, an.z);
           dJointSetHingeAxis(j, a1.x, a1.y, a1.z);
+          if (separate) mo = motor_of({a1}, {1});
           break;
         case JointType::Universal:
           j = dJointCreateUniversal(world, nullptr);
@@ -253,6 +267,7 @@ struct RawWorld {
           dJointSetUniversalAnchor(j, an.x, an.y, an.z);
           dJointSetUniversalAxis1(j, a1.x, a1.y, a1.z);
           dJointSetUniversalAxis2(j, a2.x, a2.y, a2.z);
+          if (separate) mo = motor_of({a1, a2}, {1, 2});
           break;
         case JointType::Slider:
           j = dJointCreateSlider(world, nullptr);
@@ -292,6 +307,7 @@ struct RawWorld {
       }
       joints.push_back(j);
       amotors.push_back(am);
+      motors.push_back(mo);
     }
   }
 
@@ -307,6 +323,10 @@ struct RawWorld {
   void set_param(const Drive& d, int param, double v) {
     dJointID j = joints[d.joint];
     int p = param + dParamGroup * d.dof;
+    if (motors[d.joint]) {
+      dJointSetAMotorParam(motors[d.joint], p, v);
+      return;
+    }
     switch (d.type) {
       case JointType::Hinge: dJointSetHingeParam(j, param, v); break;
       case JointType::Universal: dJointSetUniversalParam(j, p, v); break;
@@ -402,6 +422,9 @@ inline MotorTape record_motor_tape(const CreatureModel& m, const SimConfig& cfg,
     drive_of[tape.drives[k].joint * 3 + tape.drives[k].dof] = static_cast<int>(k);
   const std::size_t nd = tape.drives.size(), w = tape.width();
   tape.v.assign(static_cast<std::size_t>(steps) * nd * w, 0.0);
+  // the motors' first-order lag (MotorDef::response_time), as World applies it
+  const double lag = motor.response_time > 0 ? -std::expm1(-cfg.physics.dt / motor.response_time) : 0;
+  std::vector<double> lagged(m.effectors.size(), 0.0);
   // frame 0 is the initial state; frame k+1 holds the signals of step k
   for (long s = 0; s < steps; ++s) {
     const std::vector<double>& sig = replay.frames[s + 1].effectors;
@@ -409,6 +432,7 @@ inline MotorTape record_motor_tape(const CreatureModel& m, const SimConfig& cfg,
     for (std::size_t e = 0; e < m.effectors.size(); ++e) {
       const EffectorModel& em = m.effectors[e];
       double sv = sig[e];
+      if (lag > 0) sv = lagged[e] += lag * (sv - lagged[e]);
       if (tape.torques) {
         row[drive_of[em.joint * 3] * 3 + em.dof] += sv * motor.strength * em.cross_section;
         continue;

@@ -25,6 +25,14 @@ SimConfig default_sim_config(Dialect d) {
       // with constant motors glide 30-85 m in 100 s (24 of 24 artefact bests
       // of three runs travel; without: all 24 rest). docs/physics.md cause 11
       c.physics.self_collision = false;
+      // ODE's joint motor at a stop becomes a plain torque of its full force
+      // (a light limb kicked off at many times the motor's speed): each hinge
+      // gets a motor of its own beside its stops (docs/physics.md cause 12)
+      c.physics.powered_stops = PoweredStops::Separate;
+      // a brain's command flipping every 10 ms step hammered limbs into their
+      // stops at the step's own rate; a servo lags its command (cause 13; the
+      // paper's servo follows at once)
+      c.motor.response_time = 0.05;
       c.motor.model = MotorModel::Servo;
       c.motor.max_speed = 4;
       c.motor.max_force = 4;

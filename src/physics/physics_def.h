@@ -24,6 +24,23 @@ enum class FrictionBound {
   Ode,
 };
 
+/// How a velocity motor (servo, saturation, speed-limited torque) meets its
+/// joint's stops.
+enum class PoweredStops {
+  /// ODE's joint motor: at a stop it gives up its constraint row and pushes
+  /// with a plain torque of its full force into the stop, or fudge_factor
+  /// times it away from the stop, whatever the target speed: a light limb
+  /// kicked off its stop leaves it far faster than the motor's speed, and a
+  /// signal flipping every brain step hammers the stop (docs/physics.md
+  /// cause 12)
+  Ode,
+  /// hinges and universal joints: the motor is its own constraint (an ODE
+  /// angular motor on the joint's axes) beside the stops, so a motor at a
+  /// stop is solved with it: no more than its force, no faster than its
+  /// speed. Sliders, pistons and ball joints keep ODE's joint motor.
+  Separate,
+};
+
 /// The physics world. Defaults are ODE's usual values; each dialect sets its
 /// paper's constants (see io/config.cpp).
 struct PhysicsDef {
@@ -44,6 +61,7 @@ struct PhysicsDef {
   /// dParamFudgeFactor of every joint stop: how much of a motor's force may
   /// act at a stop (ODE: 1; smaller damps "jumping" at powered stops).
   double fudge_factor = 1;
+  PoweredStops powered_stops = PoweredStops::Ode;
   /// Fastest speed at which contacts push interpenetrating parts apart
   /// (m/s; 0: no bound, ODE's default) and the depth they may sink before
   /// that starts (m; ODE's surface layer, default 0).
@@ -91,6 +109,11 @@ struct MotorDef {
   /// pure torque.
   double torque_max_speed = 0;
   double torque_max_linear_speed = 0;
+  /// Every model: the time constant (s) of a first-order lag between the
+  /// effector signal and the motor, which follows it from 0 (a motor's
+  /// inductance and rotor cannot follow a command that flips every brain
+  /// step; docs/physics.md cause 12). 0: the motor takes each signal at once.
+  double response_time = 0;
   double kp = 0.25;       ///< PD gain
   double kd = 0.175;      ///< PD damping
 };

@@ -133,6 +133,7 @@ struct World::Impl {
   struct Joint {
     dJointID id = nullptr;
     dJointID amotor = nullptr;  // spherical joints: Euler angular motor for angles/limits/motors
+    dJointID motor = nullptr;   // PoweredStops::Separate: the hinge's or universal's own motor
     JointType type = JointType::Fixed;
     int parent = 0, child = 0;
     bool broken = false;
@@ -159,6 +160,7 @@ struct World::Impl {
   std::vector<bool> free_part;  // freed by a broken joint: collides with every part
   std::vector<Vec3> prev_pos;
   std::vector<std::array<double, 3>> joint_torque;  // Torque/PD accumulation per joint
+  std::vector<double> motor_signal;  // each effector's signal after the motor's lag
   std::vector<dContact> contact_buf;
   // the contacts of the step being taken (made by collide(), attached
   // after it) and the forces they carry
@@ -233,6 +235,20 @@ struct World::Impl {
     }
     if (j.linear && !j.limits.empty()) g = std::max(g, overshoot(j, 0));
     return g;
+  }
+
+  // an angular motor of its own for a joint's axes (world frame now, each
+  // fixed to body `rel`: 1 the parent, 2 the child), unpowered until driven
+  dJointID make_motor(dBodyID b1, dBodyID b2, std::initializer_list<Vec3> axes,
+                      std::initializer_list<int> rel) {
+    dJointID m = dJointCreateAMotor(world, nullptr);
+    dJointAttach(m, b1, b2);
+    dJointSetAMotorMode(m, dAMotorUser);
+    dJointSetAMotorNumAxes(m, static_cast<int>(axes.size()));
+    auto r = rel.begin();
+    int k = 0;
+    for (const Vec3& a : axes) dJointSetAMotorAxis(m, k++, *r++, a.x, a.y, a.z);
+    return m;
   }
 
   // joint parameter of one degree of freedom
@@ -539,6 +555,7 @@ void World::add_creature(const CreatureModel& m, const Pose& placement) {
         dJointAttach(j.id, b1, b2);
         dJointSetHingeAnchor(j.id, an.x, an.y, an.z);
         dJointSetHingeAxis(j.id, a1.x, a1.y, a1.z);
+        if (w.def.powered_stops == PoweredStops::Separate) j.motor = w.make_motor(b1, b2, {a1}, {1});
         break;
       case JointType::Universal:
         j.id = dJointCreateUniversal(w.world, nullptr);
@@ -546,6 +563,8 @@ void World::add_creature(const CreatureModel& m, const Pose& placement) {
         dJointSetUniversalAnchor(j.id, an.x, an.y, an.z);
         dJointSetUniversalAxis1(j.id, a1.x, a1.y, a1.z);
         dJointSetUniversalAxis2(j.id, a2.x, a2.y, a2.z);
+        // axis 1 turns with the parent, axis 2 with the child
+        if (w.def.powered_stops == PoweredStops::Separate) j.motor = w.make_motor(b1, b2, {a1, a2}, {1, 2});
         break;
       case JointType::Slider:
         j.id = dJointCreateSlider(w.world, nullptr);
@@ -596,13 +615,23 @@ void World::apply_effectors(const CreatureModel& m, const MotorDef& motor,
   bool torques = false;
   // ODE's velocity motor: pushes with up to `force` towards `speed`
   auto drive = [&w](const Impl::Joint& j, int dof, double speed, double force) {
+    if (j.motor) {
+      if (j.broken) return;
+      dJointSetAMotorParam(j.motor, dParamVel + dParamGroup * dof, speed);
+      dJointSetAMotorParam(j.motor, dParamFMax + dParamGroup * dof, force);
+      return;
+    }
     w.set_param(j, dof, dParamVel, speed);
     w.set_param(j, dof, dParamFMax, force);
   };
+  // the motors' first-order lag: the share of the gap closed in one step
+  const double lag = motor.response_time > 0 ? -std::expm1(-w.def.dt / motor.response_time) : 0;
+  if (lag > 0 && w.motor_signal.size() != m.effectors.size()) w.motor_signal.assign(m.effectors.size(), 0);
   for (std::size_t e = 0; e < m.effectors.size(); ++e) {
     const EffectorModel& em = m.effectors[e];
     const Impl::Joint& j = w.joints[em.joint];
     double s = signals[e];
+    if (lag > 0) s = w.motor_signal[e] += lag * (s - w.motor_signal[e]);
     switch (motor.model) {
       case MotorModel::Servo:
         drive(j, em.dof, motor.max_speed * s, motor.max_force);
@@ -741,8 +770,10 @@ void World::break_joint(int j) {
   // destroy the joint and its motor; the rest of the code skips broken joints
   dJointDestroy(jt.id);
   if (jt.amotor) dJointDestroy(jt.amotor);
+  if (jt.motor) dJointDestroy(jt.motor);
   jt.id = nullptr;
   jt.amotor = nullptr;
+  jt.motor = nullptr;
   jt.broken = true;
   w.free_part[jt.child] = true;
 }

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+
 #include <algorithm>
 #include <cmath>
 
@@ -164,6 +166,49 @@ TEST(World, ServoReachesItsTargetVelocityWithinTheLimits) {
   EXPECT_NEAR(out[0], 1.0, 0.1);
 }
 
+TEST(World, AMotorsResponseTimeSmoothsASignalThatFlipsEveryStep) {
+  // a motor cannot follow a command that flips sign every brain step (a
+  // period-2 oscillation of the brain): with motor.response_time the signal
+  // reaches the motor through a first-order lag from 0
+  PhysicsDef def;
+  def.gravity = 0;
+  def.dt = 0.01;
+  CreatureModel m = pendulum(0.5, 0);
+  m.joints[0].limits = {{-2, 2}};
+  EffectorModel e;
+  e.joint = 0;
+  m.effectors.push_back(e);
+  MotorDef motor;
+  motor.model = MotorModel::Servo;
+  motor.max_speed = 4;
+  motor.max_force = 1000;  // strong enough to follow any target in one step
+  motor.response_time = 0.05;
+  // the joint's speed after the last step, and its fastest |speed|
+  auto run = [&](auto signal, int steps) {
+    World w(def);
+    w.add_creature(m, {{0, 0, 0}, Mat3::identity()});
+    w.fix_part_to_world(0);
+    double fastest = 0;
+    for (int i = 0; i < steps; ++i) {
+      double s[1] = {signal(i)};
+      w.apply_effectors(m, motor, s);
+      w.step();
+      fastest = std::max(fastest, std::abs(w.joint_rate(0, 0)));
+    }
+    return std::array<double, 2>{w.joint_rate(0, 0), fastest};
+  };
+  auto on = [](int) { return 1.0; };
+  auto flip = [](int i) { return i % 2 ? -1.0 : 1.0; };
+  // a step to 1: 4 (1 - e^(-t/0.05)) rad/s, 63% after one time constant
+  EXPECT_NEAR(run(on, 5)[0], 4 * (1 - std::exp(-1.0)), 0.02);
+  EXPECT_NEAR(run(on, 50)[0], 4.0, 0.01);
+  // +-1 every step: the lag keeps the motor's command within +-0.2
+  EXPECT_LT(run(flip, 50)[1], 0.8);
+  // without it the joint reverses at 4 rad/s every step
+  motor.response_time = 0;
+  EXPECT_GT(run(flip, 50)[1], 3.9);
+}
+
 TEST(World, TorqueMotorAcceleratesByTorqueOverInertia) {
   PhysicsDef def;
   def.gravity = 0;
@@ -225,9 +270,11 @@ class JointLimits : public ::testing::TestWithParam<JointType> {};
 TEST_P(JointLimits, ServoStopsAtTheUpperLimitOfEveryDof) {
   JointType type = GetParam();
   int dofs = joint_dofs(type);
+  for (PoweredStops stops : {PoweredStops::Ode, PoweredStops::Separate})
   for (int dof = 0; dof < dofs; ++dof) {
     PhysicsDef def;
     def.gravity = 0;
+    def.powered_stops = stops;
     World w(def);
     CreatureModel m = pendulum(0.5, 0);
     JointModel& j = m.joints[0];
@@ -254,6 +301,20 @@ TEST_P(JointLimits, ServoStopsAtTheUpperLimitOfEveryDof) {
     }
     double hi = j.limits[dof].hi;
     EXPECT_NEAR(std::abs(w.joint_position(0, dof)), hi, 0.1 * hi) << to_string(type) << " dof " << dof;
+    // driven away from the stop: a motor of its own leaves it no faster than
+    // its speed; ODE's joint motor kicks the light bar off with a plain
+    // torque of its full force for a step (docs/physics.md cause 12)
+    if (type == JointType::Hinge || type == JointType::Universal) {
+      double back[1] = {-1.0};
+      w.apply_effectors(m, motor, back);
+      w.step();
+      double rate = std::abs(w.joint_rate(0, dof));
+      if (stops == PoweredStops::Separate) {
+        EXPECT_LE(rate, 1.001 * motor.max_speed) << to_string(type) << " dof " << dof;
+      } else if (type == JointType::Hinge) {
+        EXPECT_GT(rate, 5 * motor.max_speed);
+      }
+    }
     // the other degrees of freedom stay put (a ball joint's other two are free,
     // and move in reaction to the driven one)
     if (type == JointType::Spherical) continue;
