@@ -112,7 +112,7 @@ struct MotorDef {
   /// Every model: the time constant (s) of a first-order lag between the
   /// effector signal and the motor, which follows it from 0 (a motor's
   /// inductance and rotor cannot follow a command that flips every brain
-  /// step; docs/physics.md cause 12). 0: the motor takes each signal at once.
+  /// step; docs/physics.md cause 13). 0: the motor takes each signal at once.
   double response_time = 0;
   double kp = 0.25;       ///< PD gain
   double kd = 0.175;      ///< PD damping
