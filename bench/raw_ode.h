@@ -27,6 +27,7 @@
 #include "develop/creature_model.h"
 #include "eval/evaluate.h"
 #include "eval/sim_config.h"
+#include "physics/mechanisms.h"
 #include "physics/world.h"
 
 namespace bx::bench {
@@ -90,14 +91,9 @@ struct RawWorld {
     bool rolls;
     double was = -1;
   };
-  struct Carried {
-    dBodyID a, b;
-    Vec3 p;
-    double now, before;
-  };
   std::vector<Contact> contacts;
   std::vector<dJointFeedback> feedback;
-  std::vector<Carried> carried;
+  std::vector<CarriedContact> carried;
 
   static bool round_geom(dGeomID g) {
     int c = dGeomGetClass(g);
@@ -137,23 +133,13 @@ struct RawWorld {
     for (std::size_t k = 0; k < contacts.size(); ++k) {
       Contact& ct = contacts[k];
       if (lagged) {
-        Vec3 p{ct.c.geom.pos[0], ct.c.geom.pos[1], ct.c.geom.pos[2]};
-        double nearest = 0.02;
-        const Carried* same = nullptr;
-        for (const Carried& was : carried) {
-          if (was.a != ct.a || was.b != ct.b) continue;
-          double d = norm(was.p - p);
-          if (d < nearest) {
-            nearest = d;
-            same = &was;
-          }
-        }
-        if (same) {
+        const dReal* q = ct.c.geom.pos;
+        if (const CarriedContact* same = find_carried(carried, ct.a, ct.b, {q[0], q[1], q[2]})) {
           ct.was = same->now;
-          if (same->before >= 0 && !ct.rolls &&
-              std::abs(same->now - same->before) <= 0.3 * std::max(same->now, same->before)) {
+          double bound = ct.rolls ? -1 : lagged_bound(*same, def.friction);
+          if (bound >= 0) {
             ct.c.surface.mode &= ~dContactApprox1;
-            ct.c.surface.mu = def.friction * std::min(same->now, same->before);
+            ct.c.surface.mu = bound;
           }
         }
       }
@@ -168,10 +154,8 @@ struct RawWorld {
     if (def.friction_bound != FrictionBound::Lagged) return;
     for (std::size_t k = 0; k < contacts.size(); ++k) {
       const Contact& ct = contacts[k];
-      const dReal* f = feedback[k].f1;
-      const dReal* n = ct.c.geom.normal;
-      double normal = std::abs(f[0] * n[0] + f[1] * n[1] + f[2] * n[2]);
-      carried.push_back({ct.a, ct.b, {ct.c.geom.pos[0], ct.c.geom.pos[1], ct.c.geom.pos[2]}, normal, ct.was});
+      carried.push_back({ct.a, ct.b, {ct.c.geom.pos[0], ct.c.geom.pos[1], ct.c.geom.pos[2]},
+                         normal_force(feedback[k], ct.c.geom.normal), ct.was});
     }
   }
 
@@ -237,17 +221,6 @@ struct RawWorld {
       dBodyID b1 = bodies[jm.parent], b2 = bodies[jm.child];
       dJointID j = nullptr, am = nullptr, mo = nullptr;
       const bool separate = def.powered_stops == PoweredStops::Separate;
-      // as World::Impl::make_motor: an angular motor of the joint's own axes
-      auto motor_of = [&](std::initializer_list<Vec3> axes, std::initializer_list<int> rel) {
-        dJointID mj = dJointCreateAMotor(world, nullptr);
-        dJointAttach(mj, b1, b2);
-        dJointSetAMotorMode(mj, dAMotorUser);
-        dJointSetAMotorNumAxes(mj, static_cast<int>(axes.size()));
-        auto r = rel.begin();
-        int k = 0;
-        for (const Vec3& a : axes) dJointSetAMotorAxis(mj, k++, *r++, a.x, a.y, a.z);
-        return mj;
-      };
       switch (jm.type) {
         case JointType::Fixed:
           j = dJointCreateFixed(world, nullptr);
@@ -259,7 +232,7 @@ struct RawWorld {
           dJointAttach(j, b1, b2);
           dJointSetHingeAnchor(j, an.x, an.y, an.z);
           dJointSetHingeAxis(j, a1.x, a1.y, a1.z);
-          if (separate) mo = motor_of({a1}, {1});
+          if (separate) mo = create_axis_motor(world, b1, b2, {a1}, {1});
           break;
         case JointType::Universal:
           j = dJointCreateUniversal(world, nullptr);
@@ -267,7 +240,7 @@ struct RawWorld {
           dJointSetUniversalAnchor(j, an.x, an.y, an.z);
           dJointSetUniversalAxis1(j, a1.x, a1.y, a1.z);
           dJointSetUniversalAxis2(j, a2.x, a2.y, a2.z);
-          if (separate) mo = motor_of({a1, a2}, {1, 2});
+          if (separate) mo = create_axis_motor(world, b1, b2, {a1, a2}, {1, 2});
           break;
         case JointType::Slider:
           j = dJointCreateSlider(world, nullptr);
@@ -423,7 +396,7 @@ inline MotorTape record_motor_tape(const CreatureModel& m, const SimConfig& cfg,
   const std::size_t nd = tape.drives.size(), w = tape.width();
   tape.v.assign(static_cast<std::size_t>(steps) * nd * w, 0.0);
   // the motors' first-order lag (MotorDef::response_time), as World applies it
-  const double lag = motor.response_time > 0 ? -std::expm1(-cfg.physics.dt / motor.response_time) : 0;
+  const double lag = motor_lag_share(cfg.physics.dt, motor.response_time);
   std::vector<double> lagged(m.effectors.size(), 0.0);
   // frame 0 is the initial state; frame k+1 holds the signals of step k
   for (long s = 0; s < steps; ++s) {

@@ -1,5 +1,6 @@
 // ODE implementation of the physics world.
 #include "physics/world.h"
+#include "physics/mechanisms.h"
 
 #include <ode/ode.h>
 
@@ -32,12 +33,6 @@ void ode_message(int num, const char* msg, va_list ap) {
   ++g_messages;
   std::vsnprintf(g_last_message, sizeof g_last_message, msg, ap);
 }
-
-// FrictionBound::Lagged: a contact of this step between the same bodies
-// within this distance (m) of one of the last step is the same contact, and
-// its normal force is steady if it changed by at most this share between the
-// last two steps
-constexpr double kSameContact = 0.02, kSteadyNormal = 0.3;
 
 [[noreturn]] void ode_fault(int num, const char* msg, va_list ap) {
   g_faulted = true;
@@ -174,12 +169,7 @@ struct World::Impl {
   std::vector<dJointFeedback> feedback;
   // FrictionBound::Lagged: each contact of the last step, with its normal
   // force then and the step before
-  struct Carried {
-    dBodyID a, b;
-    Vec3 p;
-    double now, before;
-  };
-  std::vector<Carried> carried;
+  std::vector<CarriedContact> carried;
   std::string solver_failure;  // the message of a step ODE could not solve
   double total_mass = 0;
   double t = 0;
@@ -235,20 +225,6 @@ struct World::Impl {
     }
     if (j.linear && !j.limits.empty()) g = std::max(g, overshoot(j, 0));
     return g;
-  }
-
-  // an angular motor of its own for a joint's axes (world frame now, each
-  // fixed to body `rel`: 1 the parent, 2 the child), unpowered until driven
-  dJointID make_motor(dBodyID b1, dBodyID b2, std::initializer_list<Vec3> axes,
-                      std::initializer_list<int> rel) {
-    dJointID m = dJointCreateAMotor(world, nullptr);
-    dJointAttach(m, b1, b2);
-    dJointSetAMotorMode(m, dAMotorUser);
-    dJointSetAMotorNumAxes(m, static_cast<int>(axes.size()));
-    auto r = rel.begin();
-    int k = 0;
-    for (const Vec3& a : axes) dJointSetAMotorAxis(m, k++, *r++, a.x, a.y, a.z);
-    return m;
   }
 
   // joint parameter of one degree of freedom
@@ -382,24 +358,12 @@ struct World::Impl {
     for (Contact& ct : contacts) {
       dContact& c = ct.c;
       if (lagged) {
-        Vec3 p = vec(c.geom.pos);
-        double nearest = kSameContact;
-        const Carried* same = nullptr;
-        for (const Carried& was : carried) {
-          if (was.a != ct.a || was.b != ct.b) continue;
-          double d = norm(was.p - p);
-          if (d < nearest) {
-            nearest = d;
-            same = &was;
-          }
-        }
-        if (same) {
+        if (const CarriedContact* same = find_carried(carried, ct.a, ct.b, vec(c.geom.pos))) {
           ct.was = same->now;
-          bool steady = same->before >= 0 &&
-                        std::abs(same->now - same->before) <= kSteadyNormal * std::max(same->now, same->before);
-          if (steady && !ct.rolls) {
+          double bound = ct.rolls ? -1 : lagged_bound(*same, def.friction);
+          if (bound >= 0) {
             c.surface.mode &= ~dContactApprox1;
-            c.surface.mu = def.friction * std::min(same->now, same->before);
+            c.surface.mu = bound;
           }
         }
       }
@@ -415,8 +379,7 @@ struct World::Impl {
     if (def.friction_bound != FrictionBound::Lagged) return;
     for (std::size_t k = 0; k < contacts.size(); ++k) {
       const Contact& ct = contacts[k];
-      double normal = std::abs(dot(vec(feedback[k].f1), vec(ct.c.geom.normal)));
-      carried.push_back({ct.a, ct.b, vec(ct.c.geom.pos), normal, ct.was});
+      carried.push_back({ct.a, ct.b, vec(ct.c.geom.pos), normal_force(feedback[k], ct.c.geom.normal), ct.was});
     }
   }
 
@@ -555,7 +518,7 @@ void World::add_creature(const CreatureModel& m, const Pose& placement) {
         dJointAttach(j.id, b1, b2);
         dJointSetHingeAnchor(j.id, an.x, an.y, an.z);
         dJointSetHingeAxis(j.id, a1.x, a1.y, a1.z);
-        if (w.def.powered_stops == PoweredStops::Separate) j.motor = w.make_motor(b1, b2, {a1}, {1});
+        if (w.def.powered_stops == PoweredStops::Separate) j.motor = create_axis_motor(w.world, b1, b2, {a1}, {1});
         break;
       case JointType::Universal:
         j.id = dJointCreateUniversal(w.world, nullptr);
@@ -564,7 +527,7 @@ void World::add_creature(const CreatureModel& m, const Pose& placement) {
         dJointSetUniversalAxis1(j.id, a1.x, a1.y, a1.z);
         dJointSetUniversalAxis2(j.id, a2.x, a2.y, a2.z);
         // axis 1 turns with the parent, axis 2 with the child
-        if (w.def.powered_stops == PoweredStops::Separate) j.motor = w.make_motor(b1, b2, {a1, a2}, {1, 2});
+        if (w.def.powered_stops == PoweredStops::Separate) j.motor = create_axis_motor(w.world, b1, b2, {a1, a2}, {1, 2});
         break;
       case JointType::Slider:
         j.id = dJointCreateSlider(w.world, nullptr);
@@ -625,7 +588,7 @@ void World::apply_effectors(const CreatureModel& m, const MotorDef& motor,
     w.set_param(j, dof, dParamFMax, force);
   };
   // the motors' first-order lag: the share of the gap closed in one step
-  const double lag = motor.response_time > 0 ? -std::expm1(-w.def.dt / motor.response_time) : 0;
+  const double lag = motor_lag_share(w.def.dt, motor.response_time);
   if (lag > 0 && w.motor_signal.size() != m.effectors.size()) w.motor_signal.assign(m.effectors.size(), 0);
   for (std::size_t e = 0; e < m.effectors.size(); ++e) {
     const EffectorModel& em = m.effectors[e];
