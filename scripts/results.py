@@ -11,7 +11,13 @@ For each run: the final best fitness; the best creature re-simulated exactly
 same creature simulated for twice the task's time: the gait counts as
 sustained when, in that run, the centre of mass moves (in the plane) over the
 second half at least half as far as over the first half, and more than half a
-body length.
+body length; "exploded" when that doubled run ended in an explosion test.
+
+For every run also `bestiary check` of its best: its fitness re-simulated
+under 5 other physics seeds (the median ratio to the scored fitness), at dt/2
+and dt/4, at twice the solver iterations and with every effector clamped to
+its mean, the largest joint separation, and the verdict (its gates are the
+run's [check] config keys).
 
 For a throwing run (chaumont2007's catapults) instead: the best fitness of the
 first and last generation; the best creature re-simulated exactly: its throw
@@ -82,8 +88,25 @@ def row(preset, seed, run_dir):
     planar = lambda a, b: ((a[0] - b[0]) ** 2 + (a[1] - b[1]) ** 2) ** 0.5
     first, second = planar(com[0], mid), planar(mid, end)
     sustained = "yes" if second >= 0.5 * first and second > 0.5 * bl else "no"
+    if two.get("failed"):
+        sustained = "exploded"
     return (f"| {preset} | {seed} | {evals} | {best0:.4g} | {best:.4g} | {one['parts']} | {d1:.2f} | "
             f"{d1 / bl:.1f} | {d2:.2f} | {sustained} | {failed} | {rejected} |")
+
+
+def check_row(preset, seed, run_dir):
+    """`bestiary check` of the run's best: ratios to the scored fitness."""
+    r = sh(["check", run_dir, "--json"])
+    if r.returncode not in (0, 1):
+        sys.exit(r.stderr)
+    c = json.loads(r.stdout)
+    ratio = {v["name"]: v for v in c["variants"]}
+    cell = lambda n: ("failed" if ratio[n]["failed"] else f"{ratio[n]['ratio']:.2f}") if n in ratio else "-"
+    verdict = "pass" if c["passed"] else "FAIL: " + "; ".join(c["failures"])
+    active = sum(1 for sd in c["effector_sd"] if sd >= 0.1)
+    return (f"| {preset} | {seed} | {c['fitness']:.4g} | {c['median_other_seeds']:.2f} | {cell('dt/2')} | "
+            f"{cell('dt/4')} | {cell('2x iterations')} | {cell('clamped')} | "
+            f"{active}/{len(c['effector_sd'])} | {100 * c['max_joint_gap']:.1f} | {verdict} |")
 
 
 def is_throwing(run_dir):
@@ -201,7 +224,7 @@ def main():
     ap.add_argument("--runs-dir", default="runs/results")
     ap.add_argument("--workers", default="2")
     a = ap.parse_args()
-    rows, throws = [], []
+    rows, throws, checks = [], [], []
     for spec in a.runs:
         preset, _, s = spec.partition(":")
         for seed in seeds(s or "1"):
@@ -213,6 +236,8 @@ def main():
                 r = sh(args + ["--workers", a.workers, "--quiet"])
                 if r.returncode != 0:
                     sys.exit(r.stderr)
+            checks.append(check_row(preset, seed, run_dir))
+            print(checks[-1], flush=True)
             if is_throwing(run_dir):
                 throws.append(throw_row(preset, seed, run_dir))
                 print("\n".join(throws[-1]), flush=True)
@@ -229,6 +254,11 @@ def main():
               "| early release, first generation | early release, last |")
         print("|" + "---|" * 14)
         print("\n".join(t[1] for t in throws))
+    if checks:
+        print("\n| preset | seed | best (scored) | other seeds (median) | dt/2 | dt/4 | 2x iterations "
+              "| clamped | active effectors (s.d. >= 0.1) | largest joint gap (cm) | check |")
+        print("|" + "---|" * 11)
+        print("\n".join(checks))
     if not rows:
         return
     print("\n| preset | seed | evaluations | best, first generation | best, last | parts | distance (m) "
