@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "cli/commands.h"
+#include "cli/creature.h"
 #include "core/files.h"
 #include "develop/develop.h"
 #include "eval/check.h"
@@ -26,71 +27,10 @@ namespace fs = std::filesystem;
 
 /// Arguments of `bestiary check`.
 struct CheckArgs {
-  std::string target;  ///< a genome file or a run directory
-  std::optional<std::int64_t> id;
-  std::string config;
-  std::optional<std::uint64_t> seed;
-  std::vector<std::string> set;
+  std::string target;  ///< a genome file or a run's creature (cli/creature.h)
+  CreatureFlags flags;
   bool json = false;
 };
-
-/// What is checked: the genome, the config and seed that scored it, and
-/// where they came from.
-struct Subject {
-  Genome genome;
-  RunConfig cfg;
-  std::uint64_t seed = 1;
-  std::string label;
-  std::optional<double> stored_fitness;  ///< a run's individual: the fitness the run recorded
-};
-
-// a run's individual (the best by default), with the run's config and its evaluation seed
-Result<Subject> from_run(const CheckArgs& a) {
-  if (!a.config.empty()) return Error{"--config: a run is checked with its own config (use --set to vary it)"};
-  if (a.seed) return Error{"--seed: a run's individual is checked with its own evaluation seed"};
-  auto store = RunStore::open(run_db_path(a.target));
-  if (!store) return Error{store.error()};
-  std::optional<Individual> ind;
-  if (a.id) {
-    ind = (*store)->individual(*a.id);
-    if (!ind) return Error{"--id: " + a.target + " has no individual " + std::to_string(*a.id)};
-  } else {
-    ind = (*store)->best_individual();
-    if (!ind) return Error{a.target + ": no generation finished yet"};
-  }
-  auto cfg = read_run_config((*store)->meta("config"), run_config_path(a.target), a.set);
-  if (!cfg) return Error{cfg.error()};
-  std::uint64_t master = std::stoull((*store)->meta("seed"));
-  Subject s{ind->genome, *cfg, evaluation_seed(master, ind->id),
-            a.target + " individual " + std::to_string(ind->id) + " (generation " +
-                std::to_string(ind->generation) + ")",
-            ind->fitness};
-  return s;
-}
-
-// a genome file, with its dialect's defaults, --config and --set, as simulate takes it
-Result<Subject> from_genome(const CheckArgs& a) {
-  if (a.id) return Error{"--id: names an individual of a run; " + a.target + " is a genome file"};
-  auto g = load_genome(a.target);
-  if (!g) return Error{g.error()};
-  std::string text = "[genome]\ndialect = \"" + std::string(to_string(g->dialect)) + "\"\n";
-  std::string source = a.target;
-  if (!a.config.empty()) {
-    auto t = read_file(a.config);
-    if (!t) return Error{t.error()};
-    text = *t;
-    source = a.config;
-  }
-  std::vector<std::string> sets;
-  if (g->catapult) sets.push_back("task.kind=throwing");  // as simulate: a catapult throws
-  sets.insert(sets.end(), a.set.begin(), a.set.end());
-  auto cfg = read_run_config(text, source, sets);
-  if (!cfg) return Error{cfg.error()};
-  if (!a.config.empty() && cfg->dialect != g->dialect)
-    return Error{a.config + ": genome.dialect is " + std::string(to_string(cfg->dialect)) + ", the genome's is " +
-                 std::string(to_string(g->dialect))};
-  return Subject{std::move(*g), *cfg, a.seed.value_or(1), a.target, std::nullopt};
-}
 
 std::string ratio_text(double r) {
   char buf[32];
@@ -99,7 +39,7 @@ std::string ratio_text(double r) {
 }
 
 int cmd_check(const CheckArgs& a) {
-  auto subject = fs::is_directory(a.target) ? from_run(a) : from_genome(a);
+  auto subject = resolve_creature(a.target, a.flags);
   if (!subject) return fail(subject.error());
   const SimConfig& sim = subject->cfg.sim;
   Development dev = develop(subject->genome, sim.develop);
@@ -108,6 +48,7 @@ int cmd_check(const CheckArgs& a) {
   if (!a.json)
     std::fprintf(stderr, "checking %s: %d parts, %zu effectors, seed %llu ...\n", subject->label.c_str(),
                  m.n_parts(), m.effectors.size(), static_cast<unsigned long long>(subject->seed));
+  if (!a.json && !subject->settings.empty()) std::fprintf(stderr, "%s\n", subject->settings.c_str());
   CheckReport rep = check_creature(m, sim, subject->seed, subject->cfg.check);
   const EvalResult& s = rep.scored;
   const EvalDiagnostics& d = s.diagnostics;
@@ -170,11 +111,7 @@ void add_check_command(CLI::App& app) {
   static CheckArgs a;
   auto* c = app.add_subcommand(
       "check", "Re-evaluate a creature under other seeds, smaller steps, more iterations and clamped effectors");
-  c->add_option("target", a.target, "Genome file, or run directory (its best by default)")->required();
-  c->add_option("--id", a.id, "A run's individual to check (default: the run's best)");
-  c->add_option("--config", a.config, "Config file for a genome file (default: its dialect's)");
-  c->add_option("--seed", a.seed, "Evaluation seed for a genome file (default 1)");
-  c->add_option("--set", a.set, "Override one config key: section.key=value (repeatable)");
+  add_creature_options(c, a.target, a.flags);
   c->add_flag("--json", a.json, "Print one JSON object");
   c->footer("Exit code 0: passed the gates ([check] config keys); 1: failed them; 2: bad input.");
   c->callback([] { std::exit(cmd_check(a)); });

@@ -5,6 +5,8 @@
 
 #include <string>
 
+#include "core/result.h"
+
 namespace CLI {
 class App;
 }
@@ -25,5 +27,14 @@ void add_check_command(CLI::App& app);
 
 /// Prints "bestiary: MESSAGE" on stderr and returns 2, the bad-input exit code.
 int fail(const std::string& message);
+
+/// The program as the user ran it (argv[0], e.g. ./build/bestiary), for the
+/// commands we print as next steps.
+const std::string& program();
+void set_program(const char* argv0);
+
+/// Makes the folder of an output file (so a bad path fails before any work);
+/// errors name `flag`.
+Status make_parent_dir(const std::string& flag, const std::string& path);
 
 }  // namespace bx

@@ -1,5 +1,6 @@
 // `bestiary run`, `resume`, `best` and `presets`.
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 
 #include <csignal>
 #include <cstdio>
@@ -11,6 +12,7 @@
 #include <unistd.h>
 
 #include "cli/commands.h"
+#include "cli/creature.h"
 #include "core/files.h"
 #include "evolve/run.h"
 #include "genome/genome_json.h"
@@ -24,17 +26,15 @@ namespace {
 namespace fs = std::filesystem;
 
 // SIGINT/SIGTERM: the database is always at a generation boundary, so stop now
-char g_run_dir[4096];
+char g_resume_hint[8192];  // made before the signal: a handler may only write
 void on_interrupt(int) {
-  const char head[] = "\ninterrupted; continue with: bestiary resume ";
-  (void)!::write(STDERR_FILENO, head, sizeof head - 1);
-  (void)!::write(STDERR_FILENO, g_run_dir, std::strlen(g_run_dir));
-  (void)!::write(STDERR_FILENO, "\n", 1);
+  (void)!::write(STDERR_FILENO, g_resume_hint, std::strlen(g_resume_hint));
   ::_exit(130);
 }
 
 void catch_interrupts(const std::string& dir) {
-  std::snprintf(g_run_dir, sizeof g_run_dir, "%s", dir.c_str());
+  std::snprintf(g_resume_hint, sizeof g_resume_hint, "\ninterrupted; continue with: %s resume %s\n",
+                program().c_str(), dir.c_str());
   std::signal(SIGINT, on_interrupt);
   std::signal(SIGTERM, on_interrupt);
 }
@@ -67,8 +67,8 @@ int finish(const std::string& dir, const Status& s) {
     if (!gens.empty())
       std::printf("best fitness %.6g (generation 0: %.6g)\n", gens.back().best, gens.front().best);
   }
-  std::printf("its genome: bestiary best %s --out best.json\n", dir.c_str());
-  std::printf("watch the run: bestiary show %s  (writes %s/view.html)\n", dir.c_str(), dir.c_str());
+  std::printf("its genome: %s best %s --out best.json\n", program().c_str(), dir.c_str());
+  std::printf("watch the run: %s show %s  (writes %s/view.html)\n", program().c_str(), dir.c_str(), dir.c_str());
   return 0;
 }
 
@@ -106,23 +106,29 @@ int cmd_resume(const std::string& dir, int workers, bool quiet) {
   return finish(dir, drive_run(dir, {workers, quiet, 0}));
 }
 
-int cmd_best(const std::string& dir, const std::string& out) {
-  auto store = RunStore::open(run_db_path(dir));
+int cmd_best(const std::string& target, const CreatureFlags& flags, const std::string& out) {
+  if (!names_run(target)) return fail(target + ": expected a run directory (RUN_DIR, RUN_DIR:ID or RUN_DIR:gen=G)");
+  auto c = resolve_creature(target, flags);
+  if (!c) return fail(c.error());
+  const Individual& ind = *c->individual;
+  bool overall = fs::is_directory(target) && !flags.id && !flags.gen;
+  std::fprintf(stderr, "%sindividual %lld of generation %d, fitness %.6g (%s)\n", overall ? "best so far: " : "",
+               static_cast<long long>(ind.id), ind.generation, ind.fitness, ind.op.c_str());
+  // the genome with where it came from: the run's config and the seed that
+  // scored it travel with it, so `simulate/show/render/check FILE` replay that evaluation
+  auto store = RunStore::open(run_db_path(c->run_dir));
   if (!store) return fail(store.error());
-  std::optional<Individual> best = (*store)->best_individual();
-  if (!best) return fail(dir + ": no generation finished yet");
-  std::fprintf(stderr, "best so far: individual %lld of generation %d, fitness %.6g (%s)\n",
-               static_cast<long long>(best->id), best->generation, best->fitness, best->op.c_str());
+  nlohmann::json j = genome_to_json(ind.genome);
+  j["provenance"] = provenance_json(*c, (*store)->meta("config"));
+  std::string text = j.dump(2) + "\n";
   if (out.empty()) {
-    std::printf("%s", genome_to_string(best->genome).c_str());
+    std::printf("%s", text.c_str());
     return 0;
   }
-  if (Status s = save_genome(out, best->genome); !s) return fail(s.error());
-  // the evaluation that scored it, exactly: the run's config and its seed
-  std::uint64_t seed = std::stoull((*store)->meta("seed"));
-  std::fprintf(stderr, "written to %s; its evaluation, exactly: bestiary simulate %s --config %s --seed %llu\n",
-               out.c_str(), out.c_str(), run_config_path(dir).c_str(),
-               static_cast<unsigned long long>(evaluation_seed(seed, best->id)));
+  if (Status s = make_parent_dir("--out", out); !s) return fail(s.error());
+  if (Status s = write_file_atomic(out, text); !s) return fail(s.error());
+  std::fprintf(stderr, "written to %s, with its run's config and evaluation seed; its evaluation, exactly: %s simulate %s\n",
+               out.c_str(), program().c_str(), out.c_str());
   return 0;
 }
 
@@ -149,11 +155,14 @@ void add_evolve_commands(CLI::App& app) {
   s->add_flag("--quiet", resume_quiet, "No progress output");
   s->callback([] { std::exit(cmd_resume(resume_dir, resume_workers, resume_quiet)); });
 
-  static std::string best_dir, best_out;
-  auto* b = app.add_subcommand("best", "Write the best genome of a run so far");
-  b->add_option("dir", best_dir, "Run directory")->required();
+  static std::string best_target, best_out;
+  static CreatureFlags best_flags;
+  auto* b = app.add_subcommand("best", "Write the genome of a run's best (or of any of its creatures), with its provenance");
+  b->add_option("run", best_target, "RUN_DIR (its best so far), RUN_DIR:ID or RUN_DIR:gen=G")->required();
+  b->add_option("--id", best_flags.id, "A run's individual (as RUN_DIR:ID)");
+  b->add_option("--gen", best_flags.gen, "The best of a run's generation (as RUN_DIR:gen=G)");
   b->add_option("--out", best_out, "Genome file to write (default: standard output)");
-  b->callback([] { std::exit(cmd_best(best_dir, best_out)); });
+  b->callback([] { std::exit(cmd_best(best_target, best_flags, best_out)); });
 
   auto* p = app.add_subcommand("presets", "List the presets");
   p->callback([] {

@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "cli/commands.h"
+#include "cli/creature.h"
 #include "develop/develop.h"
 #include "eval/evaluate.h"
 #include "genome/dialect.h"
@@ -22,48 +23,32 @@ namespace {
 
 /// Arguments of `bestiary simulate`.
 struct SimulateArgs {
-  std::string genome;
-  std::string config;
-  std::optional<double> seconds;
-  std::uint64_t seed = 1;
+  std::string genome;  ///< a genome file or a run's creature (cli/creature.h)
+  CreatureFlags flags;
   std::string replay;
   bool json = false;
 };
 
-// shortest text that reads back as the same double
-std::string shortest(double v) {
-  char buf[32];
-  auto r = std::to_chars(buf, buf + sizeof buf, v);
-  return std::string(buf, r.ptr);
-}
-
 int cmd_simulate(const SimulateArgs& a) {
-  // inputs: genome, config, flags; all checked before any work
-  auto genome = load_genome(a.genome);
-  if (!genome) return fail(genome.error());
-  SimConfig cfg = default_sim_config(*genome);
-  if (!a.config.empty())
-    if (Status s = apply_config_file(cfg, a.config); !s) return fail(s.error());
-  if (a.seconds) {
-    if (!(*a.seconds > 0) || !std::isfinite(*a.seconds) || *a.seconds > 1e6)
-      return fail("--seconds: expected a number in (0, 1e6], got " + shortest(*a.seconds));
-    task_seconds(cfg) = *a.seconds;
-  }
+  // inputs: the creature, its config, flags; all checked before any work
+  auto creature = resolve_creature(a.genome, a.flags);
+  if (!creature) return fail(creature.error());
+  const SimConfig& cfg = creature->cfg.sim;
+  const std::uint64_t seed = creature->seed;
+  const Genome* genome = &creature->genome;
   if (!a.replay.empty()) {
     // make the replay's folder now, so a bad path fails before the simulation
-    auto dir = std::filesystem::path(a.replay).parent_path();
-    std::error_code ec;
-    if (!dir.empty()) std::filesystem::create_directories(dir, ec);
-    if (ec || (!dir.empty() && !std::filesystem::is_directory(dir)))
-      return fail("--replay: cannot create directory \"" + dir.string() + "\"" +
-                  (ec ? " (" + ec.message() + ")" : ""));
+    if (Status s = make_parent_dir("--replay", a.replay); !s) return fail(s.error());
   }
 
   // grow, then simulate
   Development dev = develop(*genome, cfg.develop);
   nlohmann::json out;
   out["genome"] = a.genome;
-  out["seed"] = a.seed;
+  out["seed"] = seed;
+  out["settings"] = creature->settings;
+  out["as_scored"] = creature->scored_settings;
+  out["stored_fitness"] = creature->stored_fitness ? nlohmann::json(*creature->stored_fitness) : nlohmann::json(nullptr);
   out["viable"] = dev.viable();
   if (!dev.viable()) {
     out["reason"] = dev.reason;
@@ -73,14 +58,14 @@ int cmd_simulate(const SimulateArgs& a) {
     if (a.json)
       std::printf("%s\n", out.dump().c_str());
     else
-      std::printf("%s: not viable: %s\n", a.genome.c_str(), dev.reason.c_str());
+      std::printf("%s: not viable: %s\n", creature->label.c_str(), dev.reason.c_str());
     return 0;
   }
   const CreatureModel& m = *dev.model;
   Replay replay;
-  EvalResult res = evaluate(m, cfg, a.seed, a.replay.empty() ? nullptr : &replay);
+  EvalResult res = evaluate(m, cfg, seed, a.replay.empty() ? nullptr : &replay);
   if (!a.replay.empty()) {
-    ReplayInfo info{a.genome, a.seed, cfg.physics.dt, cfg.physics.friction};
+    ReplayInfo info{creature->label, seed, cfg.physics.dt, cfg.physics.friction};
     if (Status s = save_replay(a.replay, m, replay, res, info); !s) return fail(s.error());
   }
 
@@ -108,12 +93,13 @@ int cmd_simulate(const SimulateArgs& a) {
     std::printf("%s\n", out.dump().c_str());
     return 0;
   }
-  std::printf("%s: %s, %d parts, %zu joints, %d neurons, body length %.3f m\n", a.genome.c_str(),
+  std::printf("%s: %s, %d parts, %zu joints, %d neurons, body length %.3f m\n", creature->label.c_str(),
               std::string(to_string(m.dialect)).c_str(), m.n_parts(), m.joints.size(),
               m.brain.n_neurons(), bl);
   for (const auto& w : res.warnings) std::printf("warning: %s\n", w.c_str());
+  if (!creature->settings.empty()) std::printf("%s\n", creature->settings.c_str());
   std::printf("simulated %.2f s (%ld steps), seed %llu\n", res.seconds, res.steps,
-              static_cast<unsigned long long>(a.seed));
+              static_cast<unsigned long long>(seed));
   if (res.failed) std::printf("failed: %s\n", res.failure.c_str());
   if (!res.note.empty()) std::printf("note: %s\n", res.note.c_str());
   if (cfg.task_kind == TaskKind::Throwing) {
@@ -121,11 +107,11 @@ int cmd_simulate(const SimulateArgs& a) {
     if (res.release_time >= 0) std::printf("released at %.3f s\n", res.release_time);
     std::printf("projectile thrown %.4f m", res.distance);
     if (res.target_miss >= 0) std::printf(", passing %.4f m from the target", res.target_miss);
-    std::printf("\nfitness %.6g\n", res.fitness);
+    std::printf("\n");
   } else {
-    std::printf("distance %.4f m (%.2f body lengths)\nfitness %.6g\n", res.distance,
-                bl > 0 ? res.distance / bl : 0.0, res.fitness);
+    std::printf("distance %.4f m (%.2f body lengths)\n", res.distance, bl > 0 ? res.distance / bl : 0.0);
   }
+  std::printf("%s\n", fitness_line(res.fitness, creature->scored_fitness()).c_str());
   if (!res.trial_fitness.empty()) {
     // task.trials > 1: the lines above are the first trial's, the fitness the mean
     std::printf("fitness is the mean of %zu trials (the lines above are the first's):",
@@ -157,10 +143,7 @@ void add_simulate_commands(CLI::App& app) {
   // arguments live as long as the app: parsing fills them, the callback reads them
   static SimulateArgs sim;
   auto* s = app.add_subcommand("simulate", "Grow a genome and simulate it on flat ground");
-  s->add_option("genome", sim.genome, "Genome file (JSON)")->required();
-  s->add_option("--config", sim.config, "TOML config overlaid on the dialect's defaults");
-  s->add_option("--seconds", sim.seconds, "Simulated seconds (default: the config's task.seconds, or throwing.seconds)");
-  s->add_option("--seed", sim.seed, "Seed of the evaluation")->default_val(1);
+  add_creature_options(s, sim.genome, sim.flags);
   s->add_option("--replay", sim.replay, "Write a replay file here (folders are made)");
   s->add_flag("--json", sim.json, "Print one JSON object instead of text");
   s->callback([] { std::exit(cmd_simulate(sim)); });

@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "cli/commands.h"
+#include "cli/creature.h"
 #include "core/files.h"
 #include "develop/develop.h"
 #include "eval/evaluate.h"
@@ -44,18 +45,10 @@ namespace fs = std::filesystem;
 
 /// Arguments of `show` and `render`.
 struct WatchArgs {
-  std::string genome;
-  std::string config;
-  std::optional<double> seconds;
-  std::uint64_t seed = 1;
+  std::string genome;  ///< a genome file, a run's creature, or (show) a run
+  CreatureFlags flags;
   std::string out;
   int width = 1280, height = 720, fps = 30;
-};
-
-/// A genome ready to simulate: its config, with flags applied.
-struct Prepared {
-  Genome genome;
-  SimConfig cfg;
 };
 
 /// What simulating gave: the page's entry and the result.
@@ -64,54 +57,24 @@ struct Watched {
   EvalResult result;
 };
 
-std::string number(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
-
-// genome, config and --seconds, checked as `simulate` checks them
-Result<Prepared> prepare(const WatchArgs& a) {
-  auto genome = load_genome(a.genome);
-  if (!genome) return Error{genome.error()};
-  SimConfig cfg = default_sim_config(*genome);
-  if (!a.config.empty())
-    if (Status s = apply_config_file(cfg, a.config); !s) return Error{s.error()};
-  if (a.seconds) {
-    if (!(*a.seconds > 0) || !std::isfinite(*a.seconds) || *a.seconds > 1e6)
-      return Error{"--seconds: expected a number in (0, 1e6], got " + number(*a.seconds)};
-    task_seconds(cfg) = *a.seconds;
-  }
-  return Prepared{std::move(*genome), cfg};
-}
-
-// the folder of an output file exists (made if need be), so a bad path fails
-// before the simulation
-Status make_parent(const std::string& flag, const std::string& path) {
-  auto dir = fs::path(path).parent_path();
-  std::error_code ec;
-  if (!dir.empty()) fs::create_directories(dir, ec);
-  if (ec || (!dir.empty() && !fs::is_directory(dir)))
-    return Error{flag + ": cannot create directory \"" + dir.string() + "\"" +
-                 (ec ? " (" + ec.message() + ")" : "")};
-  return Ok{};
-}
-
 // grow and simulate with a replay, as `simulate --replay` does
-Result<Watched> simulate(const WatchArgs& a, const Prepared& p) {
-  Development dev = develop(p.genome, p.cfg.develop);
-  if (!dev.viable()) return Error{a.genome + ": not viable: " + dev.reason};
+Result<Watched> simulate(const Creature& c) {
+  Development dev = develop(c.genome, c.cfg.sim.develop);
+  if (!dev.viable()) return Error{c.label + ": not viable: " + dev.reason};
   const CreatureModel& m = *dev.model;
   Replay replay;
-  EvalResult res = evaluate(m, p.cfg, a.seed, &replay);
-  ReplayInfo info{a.genome, a.seed, p.cfg.physics.dt, p.cfg.physics.friction};
-  std::string label = fs::path(a.genome).stem().string();
+  EvalResult res = evaluate(m, c.cfg.sim, c.seed, &replay);
+  ReplayInfo info{c.label, c.seed, c.cfg.sim.physics.dt, c.cfg.sim.physics.friction};
+  std::string label = c.individual ? "individual " + std::to_string(c.individual->id) + " (generation " +
+                                         std::to_string(c.individual->generation) + ")"
+                                   : fs::path(c.label).stem().string();
   return Watched{{label, replay_to_string(m, replay, res, info)}, res};
 }
 
-void print_result(const WatchArgs& a, const EvalResult& res) {
-  std::printf("%s: simulated %.2f s, seed %llu, distance %.4f m, fitness %.6g\n", a.genome.c_str(),
-              res.seconds, static_cast<unsigned long long>(a.seed), res.distance, res.fitness);
+void print_result(const Creature& c, const EvalResult& res) {
+  if (!c.settings.empty()) std::printf("%s\n", c.settings.c_str());
+  std::printf("%s: simulated %.2f s, seed %llu, distance %.4f m, %s\n", c.label.c_str(), res.seconds,
+              static_cast<unsigned long long>(c.seed), res.distance, fitness_line(res.fitness, c.scored_fitness()).c_str());
   if (res.failed) std::printf("failed: %s\n", res.failure.c_str());
 }
 
@@ -124,12 +87,15 @@ int cmd_show_run(WatchArgs a) {
   auto cfg = read_run_config((*store)->meta("config"), run_config_path(dir));
   if (!cfg) return fail(cfg.error());
   SimConfig sim = cfg->sim;
-  if (a.seconds) task_seconds(sim) = *a.seconds;
-  const std::uint64_t seed = std::stoull((*store)->meta("seed"));
+  if (a.flags.seconds) {
+    if (!(*a.flags.seconds > 0) || !std::isfinite(*a.flags.seconds) || *a.flags.seconds > 1e6)
+      return fail("--seconds: expected a number in (0, 1e6], got " + exact_number(*a.flags.seconds));
+    task_seconds(sim) = *a.flags.seconds;
+  }
   auto gens = (*store)->generations();
   if (gens.empty()) return fail(dir + ": no generation finished yet");
   if (a.out.empty()) a.out = (fs::path(dir) / "view.html").string();
-  if (Status s = make_parent("--out", a.out); !s) return fail(s.error());
+  if (Status s = make_parent_dir("--out", a.out); !s) return fail(s.error());
 
   // each distinct best once; with many, the generations where the best changed
   // are kept up to a limit, always with the last
@@ -151,7 +117,7 @@ int cmd_show_run(WatchArgs a) {
     Development dev = develop(ind->genome, sim.develop);
     if (!dev.viable()) continue;
     Replay replay;
-    std::uint64_t eval_seed = evaluation_seed(seed, id);
+    std::uint64_t eval_seed = ind->seed;
     EvalResult res = evaluate(*dev.model, sim, eval_seed, &replay);
     ReplayInfo info{dir + " individual " + std::to_string(id), eval_seed, sim.physics.dt, sim.physics.friction};
     index_of[id] = static_cast<int>(replays.size());
@@ -176,16 +142,24 @@ int cmd_show_run(WatchArgs a) {
 }
 
 int cmd_show(WatchArgs a) {
-  if (fs::is_directory(a.genome)) return cmd_show_run(a);
+  // a run directory alone is the run's page; RUN_DIR:ID, --id or --gen one of its creatures
+  if (fs::is_directory(a.genome) && !a.flags.id && !a.flags.gen) {
+    if (!a.flags.config.empty() || a.flags.seed || !a.flags.set.empty())
+      return fail("--config/--seed/--set: a run's page shows its creatures as they were scored "
+                  "(name one, RUN_DIR:ID, to vary its settings)");
+    return cmd_show_run(a);
+  }
   // inputs first, then the simulation, then the page
-  auto p = prepare(a);
-  if (!p) return fail(p.error());
-  if (a.out.empty()) a.out = fs::path(a.genome).replace_extension(".html").string();
-  if (Status s = make_parent("--out", a.out); !s) return fail(s.error());
-  auto w = simulate(a, *p);
+  auto c = resolve_creature(a.genome, a.flags);
+  if (!c) return fail(c.error());
+  if (a.out.empty())
+    a.out = c->individual ? (fs::path(c->run_dir) / ("individual-" + std::to_string(c->individual->id) + ".html")).string()
+                          : fs::path(a.genome).replace_extension(".html").string();
+  if (Status s = make_parent_dir("--out", a.out); !s) return fail(s.error());
+  auto w = simulate(*c);
   if (!w) return fail(w.error());
   if (Status s = save_view_html(a.out, {w->entry}); !s) return fail(s.error());
-  print_result(a, w->result);
+  print_result(*c, w->result);
   std::printf("viewer written to %s\n", a.out.c_str());
   return 0;
 }
@@ -278,9 +252,9 @@ std::string lower(std::string s) {
 // ---- render ----
 
 int cmd_render(const WatchArgs& a) {
-  // inputs: genome, config and flags, the output's kind and folder, the tools
-  auto p = prepare(a);
-  if (!p) return fail(p.error());
+  // inputs: the creature, its config and flags, the output's kind and folder, the tools
+  auto c = resolve_creature(a.genome, a.flags);
+  if (!c) return fail(c.error());
   std::string ext = lower(fs::path(a.out).extension().string());
   if (ext != ".mp4" && ext != ".gif")
     return fail("--out: expected a file name ending in .mp4 or .gif, got \"" + a.out + "\"");
@@ -292,12 +266,15 @@ int cmd_render(const WatchArgs& a) {
       return fail(std::string(flag) + ": an mp4 needs an even number of pixels, got " + std::to_string(v));
   }
   if (a.fps < 1 || a.fps > 60) return fail("--fps: expected frames per second in [1, 60], got " + std::to_string(a.fps));
-  if (Status s = make_parent("--out", a.out); !s) return fail(s.error());
+  if (Status s = make_parent_dir("--out", a.out); !s) return fail(s.error());
   auto tools = find_tools();
   if (!tools) return fail(tools.error());
 
   // simulate, and write the page into a fresh temporary folder
-  auto w = simulate(a, *p);
+  if (!c->settings.empty()) std::printf("%s\n", c->settings.c_str());
+  std::printf("simulating %s ...\n", c->label.c_str());
+  std::fflush(stdout);
+  auto w = simulate(*c);
   if (!w) return fail(w.error());
   std::string tmpl = (fs::temp_directory_path() / "bestiary-render-XXXXXX").string();
   if (!::mkdtemp(tmpl.data())) return fail("render: cannot make a temporary folder in " + fs::temp_directory_path().string());
@@ -335,19 +312,12 @@ int cmd_render(const WatchArgs& a) {
     std::remove(tmp.c_str());
     return fail(a.out + ": cannot replace file (" + ec.message() + ")");
   }
-  print_result(a, w->result);
+  print_result(*c, w->result);
   std::printf("video written to %s (%ld frames, %.2f s)\n", a.out.c_str(), frames,
               static_cast<double>(frames) / a.fps);
   return 0;
 }
 
-// options both commands take
-void add_common(CLI::App* c, WatchArgs& a) {
-  c->add_option("genome", a.genome, "Genome file (JSON), or for show a run directory")->required();
-  c->add_option("--config", a.config, "TOML config overlaid on the dialect's defaults");
-  c->add_option("--seconds", a.seconds, "Simulated seconds (default: the config's task.seconds, or throwing.seconds)");
-  c->add_option("--seed", a.seed, "Seed of the evaluation")->default_val(1);
-}
 
 }  // namespace
 
@@ -368,7 +338,7 @@ int cmd_plot(const WatchArgs& a) {
   if (gens.empty()) return fail(dir + ": no generation finished yet");
   std::string title = (*store)->meta("name") + " (seed " + (*store)->meta("seed") + ")";
   std::string svg = fitness_svg(gens, title, a.width, a.height);
-  if (Status s = make_parent("--out", a.out); !s) return fail(s.error());
+  if (Status s = make_parent_dir("--out", a.out); !s) return fail(s.error());
   if (ext == ".svg") {
     if (Status s = write_file_atomic(a.out, svg); !s) return fail(s.error());
   } else {
@@ -402,12 +372,14 @@ void add_watch_commands(CLI::App& app) {
   // arguments live as long as the app: parsing fills them, the callback reads them
   static WatchArgs show, render;
   auto* s = app.add_subcommand("show", "Write a self-contained HTML viewer of a genome, or of a run directory (curves and the best of each generation)");
-  add_common(s, show);
-  s->add_option("--out", show.out, "HTML file to write (default: the genome's name with .html)");
+  add_creature_options(s, show.genome, show.flags);
+  s->add_option("--out", show.out,
+                "HTML file to write (default: the genome's name with .html, RUN_DIR/view.html for a run, "
+                "RUN_DIR/individual-ID.html for one of its creatures)");
   s->callback([] { std::exit(cmd_show(show)); });
 
   auto* r = app.add_subcommand("render", "Simulate a genome and make a video of it (mp4 or gif)");
-  add_common(r, render);
+  add_creature_options(r, render.genome, render.flags);
   r->add_option("--out", render.out, "Video file to write: .mp4 or .gif")->required();
   r->add_option("--width", render.width, "Width in pixels")->default_val(1280);
   r->add_option("--height", render.height, "Height in pixels")->default_val(720);

@@ -99,7 +99,8 @@ std::vector<Individual> Evolution::evaluate(std::vector<Child> children, Evoluti
     ind.parent2 = children[k].parent2;
     ind.op = children[k].op;
     ind.generation = s.generation + 1;
-    jobs[k] = {&ind.genome, eval_seed(ind.id)};
+    ind.seed = eval_seed(ind.id);
+    jobs[k] = {&ind.genome, ind.seed};
   }
   std::vector<EvalOutcome> out = eval.evaluate(jobs);
   for (std::size_t k = 0; k < born.size(); ++k) {

@@ -29,6 +29,7 @@ struct Individual {
   std::int64_t parent1 = -1, parent2 = -1;
   std::string op;       ///< random, mutation, crossover, graft
   int generation = 0;   ///< the generation (steady state: the report interval) it was born in
+  std::uint64_t seed = 0;  ///< the seed of the evaluation that scored it
 };
 
 /// Statistics of one generation (steady state: one report interval).

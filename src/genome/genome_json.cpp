@@ -432,7 +432,10 @@ Genome parse_genome(const json& j) {
          "unsupported version " + std::to_string(ver) + " (this build reads " +
              std::to_string(kGenomeVersion) + ")",
          version);
-  expect_object(j, "", {"format", "version", "dialect", "nodes", "global_neurons", "catapult"});
+  // "provenance": where a genome file came from (`bestiary best --out`); read
+  // by the command line, not part of the genome
+  expect_object(j, "", {"format", "version", "dialect", "nodes", "global_neurons", "catapult", "provenance"});
+  if (const json* v = find(j, "provenance"); v && !v->is_object()) fail("provenance", "expected an object", *v);
 
   Genome g;
   g.dialect = name_of(require(j, "", "dialect"), "dialect", "dialect", kDialects);

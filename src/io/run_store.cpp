@@ -23,7 +23,7 @@ CREATE TABLE generation (
 CREATE TABLE individual (
   id INTEGER PRIMARY KEY, gen INTEGER NOT NULL, genome TEXT NOT NULL,
   fitness REAL NOT NULL, distance REAL NOT NULL, parent1 INTEGER, parent2 INTEGER,
-  operator TEXT NOT NULL, failure TEXT NOT NULL);
+  operator TEXT NOT NULL, failure TEXT NOT NULL, seed TEXT);
 CREATE INDEX individual_gen ON individual (gen);
 CREATE TABLE checkpoint (id INTEGER PRIMARY KEY CHECK (id = 1), gen INTEGER NOT NULL, state TEXT NOT NULL);
 )";
@@ -97,6 +97,11 @@ Result<std::unique_ptr<RunStore>> RunStore::open(const std::string& path) {
   std::unique_ptr<RunStore> store(new RunStore(*db));
   Stmt check(*db, "SELECT count(*) FROM run");
   if (!check.ok() || check.step() != SQLITE_ROW) return Error{path + ": not a Bestiary run database"};
+  // databases written before individuals kept their evaluation seed get the
+  // column (empty: the seed is derived, see individual()); read-only, they stay as they are
+  Stmt has_seed(*db, "SELECT count(*) FROM pragma_table_info('individual') WHERE name = 'seed'");
+  if (has_seed.ok() && has_seed.step() == SQLITE_ROW && has_seed.i64(0) == 0)
+    store->seed_column_ = exec(*db, "ALTER TABLE individual ADD COLUMN seed TEXT").ok();
   return store;
 }
 
@@ -124,14 +129,14 @@ Status RunStore::write_generation(const GenerationStats& st, const std::vector<I
   };
   // individuals born in this generation
   {
-    Stmt ins(db_, "INSERT INTO individual (id, gen, genome, fitness, distance, parent1, parent2, operator, failure) "
-                  "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)");
+    Stmt ins(db_, "INSERT INTO individual (id, gen, genome, fitness, distance, parent1, parent2, operator, failure, "
+                  "seed) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
     for (const auto& ind : born) {
       ins.bind(1, ind.id).bind(2, static_cast<std::int64_t>(ind.generation))
           .bind(3, genome_to_json(ind.genome).dump()).bind(4, ind.fitness).bind(5, ind.distance);
       if (ind.parent1 >= 0) ins.bind(6, ind.parent1); else ins.bind_null(6);
       if (ind.parent2 >= 0) ins.bind(7, ind.parent2); else ins.bind_null(7);
-      ins.bind(8, ind.op).bind(9, ind.failure);
+      ins.bind(8, ind.op).bind(9, ind.failure).bind(10, std::to_string(ind.seed));
       if (ins.step() != SQLITE_DONE) return rollback("storing individual " + std::to_string(ind.id));
       ins.reset();
     }
@@ -188,7 +193,10 @@ std::vector<GenerationStats> RunStore::generations() const {
 }
 
 std::optional<Individual> RunStore::individual(std::int64_t id) const {
-  Stmt s(db_, "SELECT id, gen, genome, fitness, distance, parent1, parent2, operator, failure FROM individual WHERE id = ?");
+  Stmt s(db_, seed_column_ ? "SELECT id, gen, genome, fitness, distance, parent1, parent2, operator, failure, seed "
+                             "FROM individual WHERE id = ?"
+                           : "SELECT id, gen, genome, fitness, distance, parent1, parent2, operator, failure, '' "
+                             "FROM individual WHERE id = ?");
   s.bind(1, id);
   if (s.step() != SQLITE_ROW) return std::nullopt;
   auto g = genome_from_string(s.text(2), "individual " + std::to_string(id));
@@ -203,6 +211,14 @@ std::optional<Individual> RunStore::individual(std::int64_t id) const {
   ind.parent2 = s.null(6) ? -1 : s.i64(6);
   ind.op = s.text(7);
   ind.failure = s.text(8);
+  // the stored evaluation seed; an older database's individual was evaluated
+  // with the seed derived from the run's master seed and its id
+  const std::string seed = s.text(9);
+  try {
+    ind.seed = seed.empty() ? evaluation_seed(std::stoull(meta("seed")), ind.id) : std::stoull(seed);
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
   return ind;
 }
 

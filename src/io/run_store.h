@@ -56,6 +56,7 @@ class RunStore {
  private:
   explicit RunStore(sqlite3* db) : db_(db) {}
   sqlite3* db_;
+  bool seed_column_ = true;  ///< false: an older database opened read-only, without individual.seed
 };
 
 }  // namespace bx

@@ -161,10 +161,107 @@ TEST_F(RunCli, InterruptStopsAtAGenerationBoundaryAndSaysHowToResume) {
   std::ifstream e(dir / "stderr.txt");
   std::stringstream ss;
   ss << e.rdbuf();
-  EXPECT_NE(ss.str().find("interrupted; continue with: bestiary resume " + run.string()), std::string::npos)
+  EXPECT_NE(ss.str().find("interrupted; continue with: " + std::string(BESTIARY_BINARY) + " resume " + run.string()),
+            std::string::npos)
       << ss.str();
   EXPECT_EQ(bestiary("resume " + run.string() + " --quiet").code, 0);
   EXPECT_EQ(query(run / "run.sqlite", "SELECT count(*) FROM generation"), "5|\n");
+}
+
+// the stored fitness of individual `id`, exactly (SQLite's own printing keeps 15 digits)
+double stored_fitness(const fs::path& run, const std::string& id) {
+  sqlite3* db = nullptr;
+  double v = -1e300;
+  sqlite3_stmt* s = nullptr;
+  if (sqlite3_open_v2((run / "run.sqlite").c_str(), &db, SQLITE_OPEN_READONLY, nullptr) == SQLITE_OK &&
+      sqlite3_prepare_v2(db, ("SELECT fitness FROM individual WHERE id = " + id).c_str(), -1, &s, nullptr) ==
+          SQLITE_OK &&
+      sqlite3_step(s) == SQLITE_ROW)
+    v = sqlite3_column_double(s, 0);
+  sqlite3_finalize(s);
+  sqlite3_close(db);
+  return v;
+}
+
+// the "fitness" of simulate --json's output
+double json_fitness(const std::string& out) {
+  auto at = out.find("\"fitness\":");
+  return at == std::string::npos ? -1e300 : std::strtod(out.c_str() + at + 10, nullptr);
+}
+
+TEST_F(RunCli, ACreatureNamedInARunIsEvaluatedExactlyAsScored) {
+  fs::path run = dir / "run";
+  ASSERT_EQ(bestiary("run " + (dir / "small.toml").string() + " --out " + run.string() + " --quiet").code, 0);
+  // every individual keeps the seed it was evaluated with
+  EXPECT_EQ(query(run / "run.sqlite", "SELECT count(*) FROM individual WHERE seed IS NULL OR seed = ''"), "0|\n");
+  std::string best = query(run / "run.sqlite", "SELECT best_id FROM generation ORDER BY best DESC LIMIT 1");
+  best = best.substr(0, best.find('|'));
+  std::string gen2 = query(run / "run.sqlite", "SELECT best_id FROM generation WHERE gen = 2");
+  gen2 = gen2.substr(0, gen2.find('|'));
+  std::string some = query(run / "run.sqlite", "SELECT id FROM individual WHERE gen = 1 AND failure = '' LIMIT 1");
+  some = some.substr(0, some.find('|'));
+  struct Named {
+    std::string target, id;
+  } named[] = {{run.string(), best}, {run.string() + ":" + some, some}, {run.string() + ":gen=2", gen2},
+               {run.string() + " --id " + some, some}, {run.string() + " --gen 2", gen2}};
+  for (const auto& n : named) {
+    Outcome s = bestiary("simulate " + n.target + " --json");
+    ASSERT_EQ(s.code, 0) << n.target << s.err;
+    EXPECT_EQ(json_fitness(s.out), stored_fitness(run, n.id)) << n.target;  // bit for bit
+    EXPECT_NE(s.out.find("\"as_scored\":true"), std::string::npos) << s.out;
+    if (n.target == run.string()) continue;  // a run directory alone shows the run's page
+    Outcome v = bestiary("show " + n.target + " --out " + (dir / "one.html").string());
+    ASSERT_EQ(v.code, 0) << n.target << v.err;
+    EXPECT_NE(v.out.find("(the stored fitness, bit for bit)"), std::string::npos) << v.out;
+  }
+  // `best --out` writes the genome with its provenance: the file alone replays the scored evaluation
+  fs::path file = dir / "picked.json";
+  Outcome b = bestiary("best " + run.string() + ":" + some + " --out " + file.string());
+  ASSERT_EQ(b.code, 0) << b.err;
+  Outcome f = bestiary("simulate " + file.string() + " --json");
+  ASSERT_EQ(f.code, 0) << f.err;
+  EXPECT_EQ(json_fitness(f.out), stored_fitness(run, some));
+  EXPECT_NE(f.out.find("\"as_scored\":true"), std::string::npos) << f.out;
+  // and says plainly when it is told to use other settings
+  Outcome other = bestiary("simulate " + file.string() + " --seed 5");
+  ASSERT_EQ(other.code, 0) << other.err;
+  EXPECT_NE(other.out.find("not as scored: --seed given"), std::string::npos) << other.out;
+  Outcome longer = bestiary("simulate " + run.string() + ":" + some + " --seconds 3");
+  EXPECT_NE(longer.out.find("not as scored"), std::string::npos) << longer.out;
+  EXPECT_EQ(longer.out.find("bit for bit"), std::string::npos) << longer.out;
+
+  // a database from before individuals kept their seed: the seed is derived as it was then
+  ASSERT_EQ(query(run / "run.sqlite", "SELECT 1"), "1|\n");
+  {
+    sqlite3* db = nullptr;
+    ASSERT_EQ(sqlite3_open((run / "run.sqlite").c_str(), &db), SQLITE_OK);
+    EXPECT_EQ(sqlite3_exec(db, "ALTER TABLE individual DROP COLUMN seed", nullptr, nullptr, nullptr), SQLITE_OK);
+    sqlite3_close(db);
+  }
+  Outcome old = bestiary("simulate " + run.string() + ":" + some + " --json");
+  ASSERT_EQ(old.code, 0) << old.err;
+  EXPECT_EQ(json_fitness(old.out), stored_fitness(run, some));
+
+  // names that do not resolve are one line and exit code 2
+  for (const auto& [args, error] : std::vector<std::pair<std::string, std::string>>{
+           {"simulate " + run.string() + ":999999", run.string() + ": no individual 999999"},
+           {"simulate " + run.string() + ":gen=77", run.string() + ": no generation 77 (generations 0 to 4)"},
+           {"simulate " + run.string() + ":x1",
+            run.string() + ":x1: expected RUN_DIR:ID (an individual's id) or RUN_DIR:gen=G"},
+           {"simulate " + run.string() + ":3 --gen 1",
+            "--id/--gen: the creature is already named by \"" + run.string() + ":3\""},
+           {"simulate " + run.string() + " --seed 3",
+            "--seed: a run's creature is evaluated with its own stored evaluation seed"},
+           {"show " + run.string() + " --seed 3",
+            "--config/--seed/--set: a run's page shows its creatures as they were scored (name one, RUN_DIR:ID, "
+            "to vary its settings)"},
+           {"simulate " + file.string() + " --id 3",
+            "--id/--gen: name an individual of a run; " + file.string() + " is a genome file"},
+       }) {
+    Outcome r = bestiary(args);
+    EXPECT_EQ(r.code, 2) << args;
+    EXPECT_EQ(r.err, "bestiary: " + error + "\n") << args;
+  }
 }
 
 TEST_F(RunCli, BadInputGivesOneErrorLineAndWritesNothing) {

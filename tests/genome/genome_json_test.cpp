@@ -332,7 +332,7 @@ TEST(GenomeJsonErrors, UnknownField) {
             "reflect, terminal_only), got 2");
   EXPECT_EQ(err(edit(kSims, R"("version": 1,)", R"("version": 1, "author": "me",)")),
             "t.json: author: unknown field (expected one of format, version, dialect, nodes, "
-            "global_neurons, catapult), got \"me\"");
+            "global_neurons, catapult, provenance), got \"me\"");
 }
 
 TEST(GenomeJsonErrors, SourceForm) {

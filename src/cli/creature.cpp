@@ -1,0 +1,273 @@
+#include "cli/creature.h"
+
+#include <CLI/CLI.hpp>
+#include <toml++/toml.h>
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+
+#include "core/files.h"
+#include "evolve/run.h"
+#include "genome/dialect.h"
+#include "genome/genome_json.h"
+#include "io/run_store.h"
+
+namespace bx {
+
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+// FNV-1a, 64 bits, as 16 hex digits: detects an edited config or genome in a
+// genome file's provenance (not a security measure)
+std::string fnv1a64(const std::string& text) {
+  std::uint64_t h = 14695981039346656037ull;
+  for (unsigned char c : text) h = (h ^ c) * 1099511628211ull;
+  char buf[17];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+  return buf;
+}
+
+/// A run target split into its directory and its selector (after the colon).
+struct RunTarget {
+  std::string dir;
+  std::string selector;  ///< "", "ID" or "gen=G"
+};
+
+std::optional<RunTarget> split_run(const std::string& target) {
+  if (fs::is_directory(target)) return RunTarget{target, ""};
+  auto colon = target.rfind(':');
+  if (colon == std::string::npos || colon == 0) return std::nullopt;
+  std::string dir = target.substr(0, colon);
+  if (!fs::is_directory(dir)) return std::nullopt;
+  return RunTarget{dir, target.substr(colon + 1)};
+}
+
+// a whole decimal number in [lo, hi], or nullopt
+template <class T>
+std::optional<T> whole(const std::string& s, T lo, T hi) {
+  T v{};
+  auto r = std::from_chars(s.data(), s.data() + s.size(), v);
+  if (r.ec != std::errc() || r.ptr != s.data() + s.size() || v < lo || v > hi) return std::nullopt;
+  return v;
+}
+
+std::string seeds_text(std::uint64_t seed) { return std::to_string(seed); }
+
+std::string joined_sets(const std::vector<std::string>& set) {
+  std::string out;
+  for (const auto& s : set) out += (out.empty() ? "--set " : ", --set ") + s;
+  return out;
+}
+
+Status apply_seconds(Creature& c, const std::optional<double>& seconds) {
+  if (!seconds) return Ok{};
+  if (!(*seconds > 0) || !std::isfinite(*seconds) || *seconds > 1e6)
+    return Error{"--seconds: expected a number in (0, 1e6], got " + exact_number(*seconds)};
+  task_seconds(c.cfg.sim) = *seconds;
+  return Ok{};
+}
+
+Result<Creature> from_run(const RunTarget& t, const CreatureFlags& f) {
+  if (!f.config.empty())
+    return Error{"--config: a run's creature is evaluated with its run's config (use --set to vary it)"};
+  if (f.seed) return Error{"--seed: a run's creature is evaluated with its own stored evaluation seed"};
+  auto store = RunStore::open(run_db_path(t.dir));
+  if (!store) return Error{store.error()};
+  std::optional<std::int64_t> id = f.id;
+  std::optional<int> gen = f.gen;
+  if (!t.selector.empty()) {
+    if (f.id || f.gen) return Error{"--id/--gen: the creature is already named by \"" + t.dir + ":" + t.selector + "\""};
+    if (t.selector.rfind("gen=", 0) == 0) {
+      gen = whole<int>(t.selector.substr(4), 0, 1 << 30);
+      if (!gen) return Error{t.dir + ":" + t.selector + ": expected gen=G with G a generation number"};
+    } else {
+      id = whole<std::int64_t>(t.selector, 0, INT64_MAX);
+      if (!id) return Error{t.dir + ":" + t.selector + ": expected RUN_DIR:ID (an individual's id) or RUN_DIR:gen=G"};
+    }
+  }
+  if (id && gen) return Error{"--id/--gen: name an individual or a generation, not both"};
+  std::optional<Individual> ind;
+  if (id) {
+    ind = (*store)->individual(*id);
+    if (!ind) return Error{t.dir + ": no individual " + std::to_string(*id)};
+  } else if (gen) {
+    auto gens = (*store)->generations();
+    if (gens.empty()) return Error{t.dir + ": no generation finished yet"};
+    auto g = std::find_if(gens.begin(), gens.end(), [&](const GenerationStats& s) { return s.generation == *gen; });
+    if (g == gens.end())
+      return Error{t.dir + ": no generation " + std::to_string(*gen) + " (generations " +
+                   std::to_string(gens.front().generation) + " to " + std::to_string(gens.back().generation) + ")"};
+    ind = (*store)->individual(g->best_id);
+    if (!ind) return Error{t.dir + ": generation " + std::to_string(*gen) + "'s best is missing"};
+  } else {
+    ind = (*store)->best_individual();
+    if (!ind) return Error{t.dir + ": no generation finished yet"};
+  }
+  auto cfg = read_run_config((*store)->meta("config"), run_config_path(t.dir), f.set);
+  if (!cfg) return Error{cfg.error()};
+  Creature c;
+  c.genome = ind->genome;
+  c.cfg = *cfg;
+  c.seed = ind->seed;
+  c.label = t.dir + " individual " + std::to_string(ind->id) + " (generation " + std::to_string(ind->generation) + ")";
+  c.stored_fitness = ind->fitness;
+  c.individual = ind;
+  c.run_dir = t.dir;
+  c.scored_settings = f.set.empty() && !f.seconds;
+  c.settings = c.scored_settings
+                   ? "as scored: the run's config and its evaluation seed " + seeds_text(c.seed)
+                   : "not as scored: the run's config and seed with " +
+                         joined_sets(f.set) + (f.seconds ? std::string(f.set.empty() ? "" : ", ") + "--seconds" : "");
+  if (Status s = apply_seconds(c, f.seconds); !s) return Error{s.error()};
+  return c;
+}
+
+// the run config of a genome file: its dialect's defaults (a catapult
+// throws), then --config, then --set
+Result<RunConfig> genome_config(const Genome& g, const std::string& text, const std::string& source,
+                                const std::vector<std::string>& set) {
+  std::vector<std::string> layers;
+  // the file decides the dialect only if it names one (then it must be the genome's)
+  bool names_dialect = false;
+  try {
+    names_dialect = toml::parse(text, source)["genome"]["dialect"].is_value();
+  } catch (const toml::parse_error&) {
+    // read_run_config reports it with its position
+  }
+  if (!names_dialect) layers.push_back("genome.dialect=" + std::string(to_string(g.dialect)));
+  if (g.catapult) {
+    layers.push_back("catapult.enabled=true");
+    layers.push_back("task.kind=throwing");
+  }
+  layers.insert(layers.end(), set.begin(), set.end());
+  auto cfg = read_run_config(text, source, layers);
+  if (!cfg) return Error{cfg.error()};
+  if (cfg->dialect != g.dialect)
+    return Error{source + ": genome.dialect is " + std::string(to_string(cfg->dialect)) + ", the genome's is " +
+                 std::string(to_string(g.dialect))};
+  return cfg;
+}
+
+Result<Creature> from_genome(const std::string& path, const CreatureFlags& f) {
+  if (f.id || f.gen) return Error{"--id/--gen: name an individual of a run; " + path + " is a genome file"};
+  auto text = read_file(path);
+  if (!text) return Error{text.error()};
+  auto g = genome_from_string(*text, path);
+  if (!g) return Error{g.error()};
+  Creature c;
+  c.genome = std::move(*g);
+  c.label = path;
+  json prov;
+  try {
+    prov = json::parse(*text).value("provenance", json::object());
+  } catch (const json::exception&) {
+    // the genome reader accepted it, so it parses
+  }
+  std::string scored_by;  // "RUN individual N"
+  auto str = [&](const char* k) {
+    return prov.contains(k) && prov[k].is_string() ? prov[k].get<std::string>() : std::string();
+  };
+  if (!prov.empty()) {
+    // written by `best --out`: the run's config and seed travel with the genome
+    auto seed = whole<std::uint64_t>(str("seed"), 0, UINT64_MAX);
+    if (!seed || str("config").empty())
+      return Error{path + ": provenance: expected the fields \"seed\" (a number as text) and \"config\" (TOML text)"};
+    scored_by = str("run") + " individual " + (prov.contains("individual") ? prov["individual"].dump() : "?");
+    bool genome_same = str("genome_hash") == fnv1a64(genome_to_string(c.genome));
+    bool config_same = str("config_hash") == fnv1a64(str("config"));
+    if (f.config.empty() && !f.seed) {
+      auto cfg = genome_config(c.genome, str("config"), path + " (provenance.config)", f.set);
+      if (!cfg) return Error{cfg.error()};
+      c.cfg = *cfg;
+      c.seed = *seed;
+      c.scored_settings = genome_same && config_same && f.set.empty() && !f.seconds;
+      if (genome_same && prov.contains("fitness") && prov["fitness"].is_number())
+        c.stored_fitness = prov["fitness"].get<double>();
+      if (c.scored_settings)
+        c.settings = "as scored (" + scored_by + "): its run's config and evaluation seed " + seeds_text(c.seed);
+      else if (!genome_same)
+        c.settings = "not as scored: the genome was edited after " + scored_by + " was scored";
+      else if (!config_same)
+        c.settings = "not as scored: the provenance's config was edited";
+      else
+        c.settings = "not as scored: " + scored_by + "'s config and seed with " + joined_sets(f.set) +
+                     (f.seconds ? std::string(f.set.empty() ? "" : ", ") + "--seconds" : "");
+      if (Status s = apply_seconds(c, f.seconds); !s) return Error{s.error()};
+      return c;
+    }
+  }
+  std::string cfg_text, source = path;
+  if (!f.config.empty()) {
+    auto t = read_file(f.config);
+    if (!t) return Error{t.error()};
+    cfg_text = *t;
+    source = f.config;
+  }
+  auto cfg = genome_config(c.genome, cfg_text, source, f.set);
+  if (!cfg) return Error{cfg.error()};
+  c.cfg = *cfg;
+  c.seed = f.seed.value_or(1);
+  if (!scored_by.empty())
+    c.settings = "not as scored: " + std::string(f.config.empty() ? "--seed" : "--config") + " given (" + scored_by +
+                 " was scored with its run's config and seed " + str("seed") + ")";
+  if (Status s = apply_seconds(c, f.seconds); !s) return Error{s.error()};
+  return c;
+}
+
+}  // namespace
+
+std::string exact_number(double v) {
+  char buf[32];
+  auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
+}
+
+std::string fitness_line(double fitness, const std::optional<double>& stored) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "fitness %.6g", fitness);
+  std::string out = buf;
+  if (!stored) return out;
+  if (std::memcmp(&fitness, &*stored, sizeof fitness) == 0) return out + " (the stored fitness, bit for bit)";
+  return out + " (NOT the stored fitness " + exact_number(*stored) + ": " + exact_number(fitness) + ")";
+}
+
+void add_creature_options(CLI::App* cmd, std::string& target, CreatureFlags& f) {
+  cmd->add_option("creature", target,
+                  "Genome file (JSON), or a run's creature: RUN_DIR (its best), RUN_DIR:ID, RUN_DIR:gen=G")
+      ->required();
+  cmd->add_option("--id", f.id, "A run's individual (as RUN_DIR:ID)");
+  cmd->add_option("--gen", f.gen, "The best of a run's generation (as RUN_DIR:gen=G)");
+  cmd->add_option("--config", f.config, "Config for a genome file, overlaid on its dialect's defaults");
+  cmd->add_option("--seed", f.seed, "Evaluation seed for a genome file (default 1, or its provenance's)");
+  cmd->add_option("--set", f.set, "Override one config key: section.key=value (repeatable)");
+  cmd->add_option("--seconds", f.seconds, "Simulated seconds (default: the config's task.seconds, or throwing.seconds)");
+}
+
+bool names_run(const std::string& target) { return split_run(target).has_value(); }
+
+Result<Creature> resolve_creature(const std::string& target, const CreatureFlags& flags) {
+  if (auto run = split_run(target)) return from_run(*run, flags);
+  return from_genome(target, flags);
+}
+
+json provenance_json(const Creature& c, const std::string& config_text) {
+  json p;
+  p["run"] = c.run_dir;
+  if (c.individual) {
+    p["individual"] = c.individual->id;
+    p["generation"] = c.individual->generation;
+    p["fitness"] = c.individual->fitness;
+  }
+  p["seed"] = std::to_string(c.seed);  // text: JSON numbers lose 64-bit integers in many readers
+  p["genome_hash"] = fnv1a64(genome_to_string(c.genome));
+  p["config_hash"] = fnv1a64(config_text);
+  p["config"] = config_text;
+  return p;
+}
+
+}  // namespace bx

@@ -1,0 +1,81 @@
+// One way to name a creature on the command line, for every command that
+// simulates one (simulate, show, render, check, best):
+//   GENOME.json          a genome file: its dialect's defaults and seed 1, or,
+//                        if `best --out` wrote it, the run's config and the
+//                        seed that scored it (its "provenance")
+//   RUN_DIR              the run's best so far
+//   RUN_DIR:ID           the run's individual ID
+//   RUN_DIR:gen=G        the best of generation G
+// A run's individual is always re-evaluated with the run's config and its own
+// stored evaluation seed, so what a command shows is what was scored.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/result.h"
+#include "evolve/evolution.h"
+#include "io/config.h"
+
+namespace CLI {
+class App;
+}
+
+namespace bx {
+
+/// The flags that change which creature, or how it is evaluated.
+struct CreatureFlags {
+  std::string config;                 ///< --config: genome files only
+  std::optional<std::uint64_t> seed;  ///< --seed: genome files only
+  std::vector<std::string> set;       ///< --set section.key=value
+  std::optional<std::int64_t> id;     ///< --id: a run's individual
+  std::optional<int> gen;             ///< --gen: the best of a run's generation
+  std::optional<double> seconds;      ///< --seconds: the evaluation's length
+};
+
+/// A creature to evaluate, with the config and seed to evaluate it with.
+struct Creature {
+  Genome genome;
+  RunConfig cfg;
+  std::uint64_t seed = 1;
+  std::string label;                    ///< "RUN individual 12 (generation 3)", or the file
+  std::optional<double> stored_fitness; ///< the fitness its run recorded, when known
+  std::optional<Individual> individual; ///< a run's individual, as stored
+  std::string run_dir;                  ///< its run, if any
+  /// Where the settings come from, and whether they are the scored ones; one
+  /// line for the user (empty when there is nothing to say).
+  std::string settings;
+  bool scored_settings = false;  ///< the config and seed that scored it, unchanged
+
+  /// The stored fitness when this evaluation should reproduce it.
+  std::optional<double> scored_fitness() const { return scored_settings ? stored_fitness : std::nullopt; }
+};
+
+/// True when `target` names a run (RUN_DIR, RUN_DIR:ID, RUN_DIR:gen=G).
+bool names_run(const std::string& target);
+
+/// The creature `target` names, with the flags applied; errors name the
+/// target or the flag.
+Result<Creature> resolve_creature(const std::string& target, const CreatureFlags& flags);
+
+/// A run's individual's provenance, for the genome file `best --out` writes:
+/// run, individual, generation, fitness, seed, and the run's config (its
+/// text and a hash), so the file alone reproduces the scored evaluation.
+nlohmann::json provenance_json(const Creature& c, const std::string& config_text);
+
+/// "fitness F", and whether it equals the stored fitness bit for bit.
+std::string fitness_line(double fitness, const std::optional<double>& stored);
+
+/// The target positional and the flags above, as every command that takes a
+/// creature declares them.
+void add_creature_options(CLI::App* cmd, std::string& target, CreatureFlags& flags);
+
+/// The shortest text that reads back as the same double (fitness reports
+/// that can be compared bit for bit).
+std::string exact_number(double v);
+
+}  // namespace bx
