@@ -9,6 +9,7 @@
 
 namespace CLI {
 class App;
+class Validator;
 }
 
 namespace bx {
@@ -32,6 +33,10 @@ int fail(const std::string& message);
 /// commands we print as next steps.
 const std::string& program();
 void set_program(const char* argv0);
+
+/// A validator for a flag that takes a whole number in [lo, hi]; its error
+/// says so in those words.
+CLI::Validator whole_number(long long lo, unsigned long long hi);
 
 /// Makes the folder of an output file (so a bad path fails before any work);
 /// errors name `flag`.

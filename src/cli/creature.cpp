@@ -9,6 +9,7 @@
 #include <cstring>
 #include <filesystem>
 
+#include "cli/commands.h"
 #include "core/files.h"
 #include "evolve/run.h"
 #include "genome/dialect.h"
@@ -240,10 +241,11 @@ void add_creature_options(CLI::App* cmd, std::string& target, CreatureFlags& f) 
   cmd->add_option("creature", target,
                   "Genome file (JSON), or a run's creature: RUN_DIR (its best), RUN_DIR:ID, RUN_DIR:gen=G")
       ->required();
-  cmd->add_option("--id", f.id, "A run's individual (as RUN_DIR:ID)");
-  cmd->add_option("--gen", f.gen, "The best of a run's generation (as RUN_DIR:gen=G)");
+  cmd->add_option("--id", f.id, "A run's individual (as RUN_DIR:ID)")->check(whole_number(0, INT64_MAX));
+  cmd->add_option("--gen", f.gen, "The best of a run's generation (as RUN_DIR:gen=G)")->check(whole_number(0, INT32_MAX));
   cmd->add_option("--config", f.config, "Config for a genome file, overlaid on its dialect's defaults");
-  cmd->add_option("--seed", f.seed, "Evaluation seed for a genome file (default 1, or its provenance's)");
+  cmd->add_option("--seed", f.seed, "Evaluation seed for a genome file (default 1, or its provenance's)")
+      ->check(whole_number(0, UINT64_MAX));
   cmd->add_option("--set", f.set, "Override one config key: section.key=value (repeatable)");
   cmd->add_option("--seconds", f.seconds, "Simulated seconds (default: the config's task.seconds, or throwing.seconds)");
 }

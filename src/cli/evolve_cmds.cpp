@@ -13,9 +13,11 @@
 
 #include "cli/commands.h"
 #include "cli/creature.h"
+#include "core/text.h"
 #include "core/files.h"
 #include "evolve/run.h"
 #include "genome/genome_json.h"
+#include "io/config.h"
 #include "io/presets.h"
 #include "io/run_store.h"
 
@@ -49,7 +51,10 @@ Result<std::pair<std::string, std::string>> config_source(const std::string& arg
     return std::pair{fs::path(arg).stem().string(), *text};
   }
   if (const Preset* p = find_preset(arg)) return std::pair{p->name, p->text};
-  return Error{arg + ": no such config file, and no preset of that name (`bestiary presets` lists them)"};
+  std::vector<std::string> names;
+  for (const auto& p : presets()) names.push_back(p.name);
+  return Error{arg + ": no such config file, and no preset of that name" + did_you_mean(arg, names) + " (`" +
+               program() + " presets` lists them)"};
 }
 
 std::string timestamp() {
@@ -100,8 +105,21 @@ int cmd_run(const RunArgs& a) {
   return finish(dir, drive_run(dir, {a.workers, a.quiet, a.stop_after}));
 }
 
-int cmd_resume(const std::string& dir, int workers, bool quiet) {
+int cmd_resume(const std::string& dir, int workers, bool quiet, const std::vector<std::string>& set) {
   if (!fs::is_directory(dir)) return fail(dir + ": no such run directory");
+  if (!set.empty())
+    if (Status s = extend_run(dir, set); !s) return fail(s.error());
+  auto p = run_progress(dir);
+  if (!p) return fail(p.error());
+  if (p->complete) {
+    std::printf("%s: already complete (%d of %d generations, %ld evaluations); lengthen it with --set %s=N\n",
+                dir.c_str(), p->generations_done, p->generations_total, p->evaluations,
+                "evolution.generations (or evaluations)");
+    return finish(dir, Ok{});
+  }
+  if (!quiet)
+    std::printf("resuming %s at generation %d of %d (%ld evaluations done)\n", dir.c_str(), p->generations_done,
+                p->generations_total, p->evaluations);
   catch_interrupts(dir);
   return finish(dir, drive_run(dir, {workers, quiet, 0}));
 }
@@ -132,6 +150,49 @@ int cmd_best(const std::string& target, const CreatureFlags& flags, const std::s
   return 0;
 }
 
+// the paper a config reproduces, from its dialect
+std::string paper_of(Dialect d) {
+  switch (d) {
+    case Dialect::Sims1994: return "Sims 1994";
+    case Dialect::Miconi2006: return "Miconi & Channon 2006";
+    case Dialect::Chaumont2007: return "Chaumont et al. 2007";
+  }
+  return "";
+}
+
+// with thousands separators: 12,000
+std::string grouped(long v) {
+  std::string s = std::to_string(v);
+  for (int k = static_cast<int>(s.size()) - 3; k > 0; k -= 3) s.insert(static_cast<std::size_t>(k), ",");
+  return s;
+}
+
+// one line per preset: name, paper, budget, time on 2 cores, what it runs
+int cmd_presets() {
+  struct Row {
+    std::string name, paper, budget, time, summary;
+  };
+  std::vector<Row> rows{{"NAME", "PAPER", "BUDGET", "TIME (2 CORES)", "WHAT IT RUNS"}};
+  for (const auto& p : presets()) {
+    auto cfg = read_run_config(p.text, p.name);
+    if (!cfg) return fail(cfg.error());  // a broken built-in preset: the build's tests catch it
+    const EvolutionDef& e = cfg->evolution;
+    std::string budget = e.algorithm == Algorithm::Generational
+                             ? grouped(e.population) + " x " + grouped(e.generations) + " generations"
+                             : grouped(e.population) + ", " + grouped(e.evaluations) + " evaluations";
+    rows.push_back({p.name, paper_of(cfg->dialect), budget, preset_time(p), preset_summary(p)});
+  }
+  std::size_t w[4] = {};
+  for (const auto& r : rows)
+    for (auto [k, f] : {std::pair{0, &r.name}, {1, &r.paper}, {2, &r.budget}, {3, &r.time}})
+      w[k] = std::max(w[k], f->size());
+  for (const auto& r : rows)
+    std::printf("%-*s  %-*s  %-*s  %-*s  %s\n", static_cast<int>(w[0]), r.name.c_str(), static_cast<int>(w[1]),
+                r.paper.c_str(), static_cast<int>(w[2]), r.budget.c_str(), static_cast<int>(w[3]), r.time.c_str(),
+                r.summary.c_str());
+  return 0;
+}
+
 }  // namespace
 
 void add_evolve_commands(CLI::App& app) {
@@ -139,21 +200,27 @@ void add_evolve_commands(CLI::App& app) {
   auto* r = app.add_subcommand("run", "Start an evolutionary run from a preset or a TOML config");
   r->add_option("config", run.config, "Preset name (see `bestiary presets`) or config file")->required();
   r->add_option("--out", run.out, "Run directory to create (default runs/NAME-TIME)");
-  r->add_option("--seed", run.seed, "Master seed of the run")->default_val(1);
-  r->add_option("--workers", run.workers, "Worker processes (default: the number of cores; 0: in-process)");
+  r->add_option("--seed", run.seed, "Master seed of the run")->default_val(1)->check(whole_number(0, UINT64_MAX));
+  r->add_option("--workers", run.workers, "Worker processes (default: the number of cores; 0: in-process)")
+      ->check(whole_number(0, 256));
   r->add_option("--set", run.set, "Override a config key: section.key=value (repeatable)");
   r->add_flag("--quiet", run.quiet, "No progress output");
-  r->add_option("--stop-after", run.stop_after, "Stop after N generations (the run stays resumable)");
+  r->add_option("--stop-after", run.stop_after, "Stop after N generations (the run stays resumable)")
+      ->check(whole_number(1, INT32_MAX));
   r->callback([] { std::exit(cmd_run(run)); });
 
   static std::string resume_dir;
   static int resume_workers = default_workers();
   static bool resume_quiet = false;
+  static std::vector<std::string> resume_set;
   auto* s = app.add_subcommand("resume", "Continue a run from its last checkpoint");
   s->add_option("dir", resume_dir, "Run directory")->required();
-  s->add_option("--workers", resume_workers, "Worker processes (results do not depend on it)");
+  s->add_option("--workers", resume_workers, "Worker processes (results do not depend on it)")
+      ->check(whole_number(0, 256));
   s->add_flag("--quiet", resume_quiet, "No progress output");
-  s->callback([] { std::exit(cmd_resume(resume_dir, resume_workers, resume_quiet)); });
+  s->add_option("--set", resume_set,
+                "Lengthen the run: evolution.generations=N (generational) or evolution.evaluations=N (steady state)");
+  s->callback([] { std::exit(cmd_resume(resume_dir, resume_workers, resume_quiet, resume_set)); });
 
   static std::string best_target, best_out;
   static CreatureFlags best_flags;
@@ -165,10 +232,7 @@ void add_evolve_commands(CLI::App& app) {
   b->callback([] { std::exit(cmd_best(best_target, best_flags, best_out)); });
 
   auto* p = app.add_subcommand("presets", "List the presets");
-  p->callback([] {
-    for (const auto& pr : presets()) std::printf("%-34s %s\n", pr.name.c_str(), preset_summary(pr).c_str());
-    std::exit(0);
-  });
+  p->callback([] { std::exit(cmd_presets()); });
 }
 
 }  // namespace bx

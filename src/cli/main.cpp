@@ -2,10 +2,13 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
+#include <algorithm>
+#include <charconv>
 #include <filesystem>
 #include <string>
 
 #include "cli/commands.h"
+#include "core/text.h"
 
 namespace bx {
 
@@ -23,6 +26,26 @@ const std::string& program() { return g_program; }
 void set_program(const char* argv0) {
   // as run: a path stays a path; a bare name was found on PATH
   if (argv0 && *argv0) g_program = argv0;
+}
+
+CLI::Validator whole_number(long long lo, unsigned long long hi) {
+  std::string range = "a whole number from " + std::to_string(lo) + " to " + std::to_string(hi);
+  return CLI::Validator(
+      [lo, hi, range](std::string& text) -> std::string {
+        bool ok = false;
+        if (!text.empty() && text[0] == '-') {
+          long long v = 0;
+          auto r = std::from_chars(text.data(), text.data() + text.size(), v);
+          ok = r.ec == std::errc() && r.ptr == text.data() + text.size() && v >= lo;
+        } else {
+          unsigned long long v = 0;
+          auto r = std::from_chars(text.data(), text.data() + text.size(), v);
+          ok = r.ec == std::errc() && r.ptr == text.data() + text.size() && v <= hi &&
+               (lo <= 0 || v >= static_cast<unsigned long long>(lo));
+        }
+        return ok ? "" : "expected " + range + ", got \"" + text + "\"";
+      },
+      range);
 }
 
 Status make_parent_dir(const std::string& flag, const std::string& path) {
@@ -46,6 +69,34 @@ int main(int argc, char** argv) {
   bx::add_evolve_commands(app);
   bx::add_watch_commands(app);
   bx::add_check_command(app);
-  CLI11_PARSE(app, argc, argv);
+  // a command that is not one: name it, and the nearest, before CLI11 does in its words
+  if (argc > 1 && argv[1][0] != '-') {
+    std::vector<std::string> names;
+    for (const auto* sub : app.get_subcommands({})) names.push_back(sub->get_name());
+    if (std::find(names.begin(), names.end(), argv[1]) == names.end()) {
+      std::string list;
+      for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
+      return bx::fail(std::string(argv[1]) + ": no such command" + bx::did_you_mean(argv[1], names) +
+                      "; the commands: " + list);
+    }
+  }
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    // a usage error: one line, exit code 2, like every other bad input
+    std::string what = e.what();
+    for (char& c : what)
+      if (c == '\n') c = ' ';
+    while (!what.empty() && what.back() == ' ') what.pop_back();
+    std::string sub;
+    for (const auto* s : app.get_subcommands()) sub = " " + s->get_name();
+    return bx::fail(what + " (see " + bx::program() + sub + " --help)");
+  }
   return 0;
 }

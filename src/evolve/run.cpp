@@ -42,6 +42,64 @@ Status create_run(const std::string& dir, const RunConfig& cfg, const std::strin
   return Ok{};
 }
 
+Result<RunProgress> run_progress(const std::string& dir) {
+  auto store = RunStore::open(run_db_path(dir));
+  if (!store) return Error{store.error()};
+  auto cfg = read_run_config((*store)->meta("config"), run_config_path(dir));
+  if (!cfg) return Error{cfg.error()};
+  Evolution evo(cfg->dialect, cfg->evolution, cfg->operators, cfg->sim.develop, 0);
+  RunProgress p;
+  EvolutionState state;
+  if (auto cp = (*store)->checkpoint()) {
+    state.generation = cp->generation;
+    state.evaluations = cp->evaluations;
+  }
+  p.generations_done = state.generation + 1;
+  p.generations_total = evo.total_generations();
+  p.evaluations = state.evaluations;
+  p.complete = evo.finished(state);
+  return p;
+}
+
+Status extend_run(const std::string& dir, const std::vector<std::string>& overrides) {
+  auto store = RunStore::open(run_db_path(dir));
+  if (!store) return Error{store.error()};
+  auto old = read_run_config((*store)->meta("config"), run_config_path(dir));
+  if (!old) return Error{old.error()};
+  const bool generational = old->evolution.algorithm == Algorithm::Generational;
+  const std::string allowed = generational ? "evolution.generations" : "evolution.evaluations";
+  for (const auto& o : overrides)
+    if (o.rfind(allowed + "=", 0) != 0)
+      return Error{"--set " + o + ": resume can only lengthen a run (" + allowed + "=N); the rest of its config stays"};
+  auto cfg = read_run_config((*store)->meta("config"), run_config_path(dir), overrides);
+  if (!cfg) return Error{cfg.error()};
+  auto cp = (*store)->checkpoint();
+  const int done = cp ? cp->generation + 1 : 0;
+  const long evaluations = cp ? cp->evaluations : 0;
+  const EvolutionDef &was = old->evolution, &now = cfg->evolution;
+  if (generational && now.generations < done)
+    return Error{"--set evolution.generations=" + std::to_string(now.generations) + ": the run has done " +
+                 std::to_string(done) + " generations already"};
+  if (!generational) {
+    if (now.population + now.evaluations < evaluations)
+      return Error{"--set evolution.evaluations=" + std::to_string(now.evaluations) + ": the run has done " +
+                   std::to_string(evaluations - now.population) + " already"};
+    // a longer run's intervals match this one's only if its budget ended on one
+    const long every = was.report_every > 0 ? was.report_every : was.population;
+    if (now.evaluations > was.evaluations && was.evaluations % every != 0)
+      return Error{"--set evolution.evaluations: this run's budget (" + std::to_string(was.evaluations) +
+                   ") does not end on a report interval (" + std::to_string(every) +
+                   "), so a longer run would not continue it exactly"};
+  }
+  std::string extended;
+  for (const auto& o : overrides) extended += " --set " + o;
+  std::string text = (*store)->meta("config");
+  std::string head = text.substr(0, text.find('\n'));
+  std::string resolved = head + " (lengthened by resume" + extended + ")\n" + config_to_toml(*cfg);
+  if (Status s = (*store)->set_meta("config", resolved); !s) return Error{run_db_path(dir) + ": " + s.error()};
+  return write_file_atomic(run_config_path(dir), resolved);
+}
+
 namespace {
 
 std::string duration(double s) {

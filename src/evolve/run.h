@@ -20,6 +20,22 @@ struct RunOptions {
   int stop_after = 0;
 };
 
+/// Where a run stands, for what `resume` says before it goes on.
+struct RunProgress {
+  int generations_done = 0;   ///< generations stored (steady state: report intervals)
+  int generations_total = 0;  ///< as configured
+  long evaluations = 0;
+  bool complete = false;
+};
+Result<RunProgress> run_progress(const std::string& dir);
+
+/// Lengthens a run: `overrides` may set only evolution.generations
+/// (generational) or evolution.evaluations (steady state), to at least what
+/// is done. Resumed, the run then ends exactly as a run configured that long
+/// from the start (a steady-state run only if its budget ended on a report
+/// interval). Updates the stored config and config.toml.
+Status extend_run(const std::string& dir, const std::vector<std::string>& overrides);
+
 /// Creates the run directory `dir` (which must not exist) for `cfg` and
 /// `seed`, with `name` (the preset or config file) recorded.
 Status create_run(const std::string& dir, const RunConfig& cfg, const std::string& config_text,

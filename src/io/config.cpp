@@ -8,6 +8,7 @@
 #include <sstream>
 #include <vector>
 
+#include "core/text.h"
 #include "core/files.h"
 #include "genome/dialect.h"
 
@@ -263,7 +264,11 @@ Status apply_config_toml(RunConfig& cfg, std::string_view text, std::string_view
     auto* table = sec_node.as_table();
     bool known = false;
     for (const auto& f : fields()) known |= f.section == sec;
-    if (!known) return Error{std::string(source) + ": " + sec + ": unknown section"};
+    if (!known) {
+      std::vector<std::string> sections;
+      for (const auto& f : fields()) sections.emplace_back(f.section);
+      return Error{std::string(source) + ": " + sec + ": unknown section" + did_you_mean(sec, sections)};
+    }
     if (!table) return Error{std::string(source) + ": " + sec + ": expected a table, got " + show(sec_node)};
     for (auto&& [key, node] : *table) {
       std::string where = std::string(source) + ": " + sec + "." + std::string(key.str());
@@ -275,7 +280,10 @@ Status apply_config_toml(RunConfig& cfg, std::string_view text, std::string_view
           if (o.section == sec && o.key == key.str())
             return Error{where + ": replaced by " + std::string(o.use) +
                          ", got " + show(node)};
-        return Error{where + ": unknown key"};
+        std::vector<std::string> keys;
+        for (const auto& f : fields())
+          if (f.section == sec) keys.emplace_back(f.key);
+        return Error{where + ": unknown key" + did_you_mean(key.str(), keys)};
       }
       if (Status s = set_field(*field, out, node, where); !s) return s;
     }

@@ -19,7 +19,11 @@ const std::vector<Preset>& presets();
 /// The preset of that name, or nullptr.
 const Preset* find_preset(const std::string& name);
 
-/// The preset's one-line summary: the first comment line of its text.
+/// The preset's one-line summary: the first comment line of its text,
+/// without a leading "NAME: ".
 std::string preset_summary(const Preset& p);
+
+/// The preset's time on 2 cores: its "# Time on 2 cores: ..." line ("" if none).
+std::string preset_time(const Preset& p);
 
 }  // namespace bx

@@ -264,6 +264,29 @@ TEST_F(RunCli, ACreatureNamedInARunIsEvaluatedExactlyAsScored) {
   }
 }
 
+TEST_F(RunCli, ALengthenedRunEndsExactlyAsARunConfiguredThatLong) {
+  std::string cfg = (dir / "small.toml").string();  // 5 generations
+  ASSERT_EQ(bestiary("run " + cfg + " --out " + (dir / "whole").string() + " --quiet").code, 0);
+  fs::path run = dir / "short";
+  ASSERT_EQ(bestiary("run " + cfg + " --out " + run.string() + " --set evolution.generations=3 --quiet").code, 0);
+  Outcome done = bestiary("resume " + run.string());
+  ASSERT_EQ(done.code, 0) << done.err;
+  EXPECT_NE(done.out.find(run.string() + ": already complete (3 of 3 generations"), std::string::npos) << done.out;
+  Outcome shorter = bestiary("resume " + run.string() + " --set evolution.generations=2");
+  EXPECT_EQ(shorter.code, 2);
+  EXPECT_EQ(shorter.err, "bestiary: --set evolution.generations=2: the run has done 3 generations already\n");
+  Outcome other = bestiary("resume " + run.string() + " --set task.seconds=3");
+  EXPECT_EQ(other.code, 2);
+  Outcome longer = bestiary("resume " + run.string() + " --set evolution.generations=5");
+  ASSERT_EQ(longer.code, 0) << longer.err;
+  EXPECT_NE(longer.out.find("resuming " + run.string() + " at generation 3 of 5"), std::string::npos) << longer.out;
+  EXPECT_EQ(dump(run), dump(dir / "whole"));
+  std::ifstream toml(run / "config.toml");
+  std::stringstream text;
+  text << toml.rdbuf();
+  EXPECT_NE(text.str().find("generations = 5"), std::string::npos);
+}
+
 TEST_F(RunCli, BadInputGivesOneErrorLineAndWritesNothing) {
   struct Case {
     std::string args, error;
@@ -272,15 +295,26 @@ TEST_F(RunCli, BadInputGivesOneErrorLineAndWritesNothing) {
   fs::path out = dir / "out";
   std::vector<Case> cases = {
       {"run nosuchpreset --out " + out.string(),
-       "nosuchpreset: no such config file, and no preset of that name (`bestiary presets` lists them)"},
-      {"run " + cfg + " --out " + out.string() + " --set evolution.populaton=5",
-       "--set evolution.populaton=5: evolution.populaton: unknown key"},
+       "nosuchpreset: no such config file, and no preset of that name (`" BESTIARY_BINARY " presets` lists them)"},
       {"run " + cfg + " --out " + out.string() + " --set evolution.population=two",
        "--set evolution.population=two: evolution.population: expected an integer, got \"two\""},
       {"run " + cfg + " --out " + out.string() + " --set task.seconds=-1",
        "--set task.seconds=-1: task.seconds: out of range [0, 1000000], got -1"},
       {"resume " + (dir / "nothing").string(), (dir / "nothing").string() + ": no such run directory"},
       {"best " + dir.string(), (dir / "run.sqlite").string() + ": no run database here"},
+      // usage errors of the argument parser too: one line, exit code 2
+      {"run " + cfg + " --out " + out.string() + " --seed -1",
+       "--seed: expected a whole number from 0 to 18446744073709551615, got \"-1\" (see " BESTIARY_BINARY " run --help)"},
+      {"run " + cfg + " --out " + out.string() + " --stop-after 0",
+       "--stop-after: expected a whole number from 1 to 2147483647, got \"0\" (see " BESTIARY_BINARY " run --help)"},
+      {"run " + cfg + " --out " + out.string() + " --frob",
+       "The following argument was not expected: --frob (see " BESTIARY_BINARY " run --help)"},
+      {"runn " + cfg, "runn: no such command (did you mean \"run\"?); the commands: simulate, config, run, resume, "
+                      "best, presets, show, render, plot, check"},
+      {"run quikc --out " + out.string(), "quikc: no such config file, and no preset of that name (did you mean "
+                                          "\"quick\"?) (`" BESTIARY_BINARY " presets` lists them)"},
+      {"run " + cfg + " --out " + out.string() + " --set evolution.populaton=5",
+       "--set evolution.populaton=5: evolution.populaton: unknown key (did you mean \"population\"?)"},
   };
   for (const auto& c : cases) {
     Outcome r = bestiary(c.args);

@@ -30,8 +30,8 @@ TEST(Config, OverlaysValuesOntoTheDialectDefaults) {
 }
 
 TEST(Config, BadInputNamesTheKeyAndTheValue) {
-  EXPECT_EQ(apply_error("[physics]\nerpp = 0.2\n"), "run.toml: physics.erpp: unknown key");
-  EXPECT_EQ(apply_error("[physic]\nerp = 0.2\n"), "run.toml: physic: unknown section");
+  EXPECT_EQ(apply_error("[physics]\nerpp = 0.2\n"), "run.toml: physics.erpp: unknown key (did you mean \"erp\"?)");
+  EXPECT_EQ(apply_error("[physic]\nerp = 0.2\n"), "run.toml: physic: unknown section (did you mean \"physics\"?)");
   EXPECT_EQ(apply_error("[physics]\ndt = \"fast\"\n"),
             "run.toml: physics.dt: expected a number, got \"fast\"");
   EXPECT_EQ(apply_error("[physics]\nerp = 1.5\n"), "run.toml: physics.erp: out of range [0, 1], got 1.5");
@@ -87,7 +87,7 @@ TEST(Config, RunConfigTakesTheDialectsDefaultsThenTheTextThenTheOverrides) {
   EXPECT_EQ(c->sim.motor.model, MotorModel::PD);
   EXPECT_EQ(c->sim.task.seconds, 5.0);
   auto bad = read_run_config("", "r.toml", {"evolution.populaton=3"});
-  EXPECT_EQ(bad.error(), "--set evolution.populaton=3: evolution.populaton: unknown key");
+  EXPECT_EQ(bad.error(), "--set evolution.populaton=3: evolution.populaton: unknown key (did you mean \"population\"?)");
   EXPECT_EQ(read_run_config("", "r.toml", {"population=3"}).error(),
             "--set: expected section.key=value, got \"population=3\"");
   EXPECT_EQ(read_run_config("[genome]\ndialect = \"sims\"\n", "r.toml").error(),
