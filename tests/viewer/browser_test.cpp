@@ -2,8 +2,8 @@
 // inspect.mjs drives it): it draws the creature, the creature moves, the
 // panels are there (the signals panel: a trace per effector, sensor and joint
 // dof with its range, "constant" on a constant signal), nothing sticks out
-// of its panel, nothing is fetched from outside, and a run's page lets the
-// user pick a generation's best. Screenshots go to BUILD/viewer-test/.
+// of its panel and nothing is fetched from outside. Screenshots go to
+// BUILD/viewer-test/.
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -11,7 +11,6 @@
 #include <regex>
 #include <string>
 
-#include "io/html_view.h"
 #include "support/run_command.h"
 
 namespace {
@@ -141,40 +140,6 @@ TEST_F(ViewerInBrowser, ACentipedesManySignalsFitAt1920x1080) {
   EXPECT_EQ(group(seen, "joints")["traces"].size(), 11u);
   EXPECT_EQ(group(seen, "sensors")["traces"][0]["label"], "0: angle · part 0 (root)");
   expect_tidy_panels(seen);
-}
-
-TEST_F(ViewerInBrowser, ARunPageShowsCurvesAndSwitchesToTheChosenGeneration) {
-  // three creatures as the best of generations 0, 5 and 10 of a made-up run
-  std::vector<bx::LabelledReplay> replays;
-  const char* names[] = {"hinged_pair.json", "snake.json", "walker.json"};
-  for (int i = 0; i < 3; ++i) {
-    std::string n = std::to_string(i), gen = std::to_string(5 * i);  // (GCC 12 warns on "r" + to_string)
-    fs::path r = dir / (n + ".json");
-    ASSERT_EQ(bestiary("simulate " + creature(names[i]) + " --seconds 2 --replay " + r.string()).code, 0);
-    replays.push_back({std::string("generation ") + gen + " best", slurp(r)});
-  }
-  bx::RunCurves run;
-  for (int g = 0; g <= 10; ++g) run.generations.push_back({g, 1.0 + g, 0.5 + g / 2.0, 0.4 + g / 2.5});
-  run.best_of_generation = {{0, 0}, {5, 1}, {10, 2}};
-  fs::path page = dir / "run.html";
-  ASSERT_TRUE(bx::save_view_html(page.string(), replays, run).ok());
-
-  json seen = inspect(page, "run", "--times 0.5,1.5 --run");
-  ASSERT_FALSE(seen.is_null());
-  EXPECT_TRUE(seen["errors"].empty()) << seen["errors"];
-  const json& r = seen["run"];
-  ASSERT_TRUE(r["shown"].get<bool>());
-  // three curves of 11 points, three generations to choose from
-  ASSERT_EQ(r["curves"].size(), 3u);
-  for (const auto& c : r["curves"]) EXPECT_EQ(c["points"], 11) << c;
-  ASSERT_EQ(r["options"].size(), 3u);
-  EXPECT_EQ(r["options"][2]["text"], "generation 10 (best 11)");
-  // the page opens on the first replay; choosing generation 10 shows the walker,
-  // clicking the chart's left end goes back to generation 0
-  EXPECT_EQ(r["before"], 0);
-  EXPECT_EQ(r["afterSelect"], 2);
-  EXPECT_EQ(r["label"], "generation 10 best");
-  EXPECT_EQ(r["afterClick"], 0);
 }
 
 TEST_F(ViewerInBrowser, ACatapultsProjectileFliesAwayWithItsTrajectoryDrawn) {
