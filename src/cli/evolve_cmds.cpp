@@ -162,9 +162,13 @@ std::string paper_of(Dialect d) {
 
 // with thousands separators: 12,000
 std::string grouped(long v) {
-  std::string s = std::to_string(v);
-  for (int k = static_cast<int>(s.size()) - 3; k > 0; k -= 3) s.insert(static_cast<std::size_t>(k), ",");
-  return s;
+  const std::string digits = std::to_string(v);
+  std::string out;
+  for (std::size_t k = 0; k < digits.size(); ++k) {
+    if (k > 0 && digits[k - 1] != '-' && (digits.size() - k) % 3 == 0) out += ',';
+    out += digits[k];
+  }
+  return out;
 }
 
 // one line per preset: name, paper, budget, time on 2 cores, what it runs

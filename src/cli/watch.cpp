@@ -16,7 +16,6 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <map>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -32,6 +31,7 @@
 #include "io/fitness_plot.h"
 #include "io/html_view.h"
 #include "io/replay_file.h"
+#include "io/run_page.h"
 #include "io/run_store.h"
 #include "evolve/run.h"
 
@@ -78,8 +78,9 @@ void print_result(const Creature& c, const EvalResult& res) {
   if (res.failed) std::printf("failed: %s\n", res.failure.c_str());
 }
 
-// A run directory: its fitness curves, and the best creature of each
-// generation re-simulated exactly (the run's config and evaluation seed).
+// A run directory: its context and fitness curves, the overall best, the
+// generations' bests and their lineages, re-simulated exactly (the run's
+// config and evaluation seeds).
 int cmd_show_run(WatchArgs a) {
   const std::string dir = a.genome;
   auto store = RunStore::open(run_db_path(dir));
@@ -92,52 +93,19 @@ int cmd_show_run(WatchArgs a) {
       return fail("--seconds: expected a number in (0, 1e6], got " + exact_number(*a.flags.seconds));
     task_seconds(sim) = *a.flags.seconds;
   }
-  auto gens = (*store)->generations();
-  if (gens.empty()) return fail(dir + ": no generation finished yet");
   if (a.out.empty()) a.out = (fs::path(dir) / "view.html").string();
   if (Status s = make_parent_dir("--out", a.out); !s) return fail(s.error());
 
-  // each distinct best once; with many, the generations where the best changed
-  // are kept up to a limit, always with the last
-  constexpr std::size_t kMostReplays = 40;
-  std::vector<std::int64_t> distinct;
-  for (const auto& g : gens)
-    if (distinct.empty() || distinct.back() != g.best_id) distinct.push_back(g.best_id);
-  std::vector<std::int64_t> keep;
-  for (std::size_t k = 0; k < distinct.size(); ++k)
-    if (distinct.size() <= kMostReplays || k % ((distinct.size() + kMostReplays - 1) / kMostReplays) == 0 ||
-        k + 1 == distinct.size())
-      keep.push_back(distinct[k]);
-
-  std::vector<LabelledReplay> replays;
-  std::map<std::int64_t, int> index_of;
-  for (std::int64_t id : keep) {
-    auto ind = (*store)->individual(id);
-    if (!ind) return fail(run_db_path(dir) + ": individual " + std::to_string(id) + " is missing");
-    Development dev = develop(ind->genome, sim.develop);
-    if (!dev.viable()) continue;
-    Replay replay;
-    std::uint64_t eval_seed = ind->seed;
-    EvalResult res = evaluate(*dev.model, sim, eval_seed, &replay);
-    ReplayInfo info{dir + " individual " + std::to_string(id), eval_seed, sim.physics.dt, sim.physics.friction};
-    index_of[id] = static_cast<int>(replays.size());
-    replays.push_back({"generation " + std::to_string(ind->generation) + " best (individual " +
-                           std::to_string(id) + ")",
-                       replay_to_string(*dev.model, replay, res, info)});
-  }
-  if (replays.empty()) return fail(dir + ": no best creature could be grown");
-  RunCurves curves;
-  int shown = 0;
-  for (const auto& g : gens) {
-    curves.generations.push_back({g.generation, g.best, g.mean, g.median});
-    // a generation whose best was not kept shows the latest kept one before it
-    if (index_of.count(g.best_id)) shown = index_of[g.best_id];
-    curves.best_of_generation.push_back({g.generation, shown});
-  }
-  // the last generation's best first: the page opens on it
-  if (Status s = save_view_html(a.out, replays, curves); !s) return fail(s.error());
-  std::printf("%s: %zu generations, best fitness %.6g; %zu creatures\nviewer written to %s\n", dir.c_str(),
-              gens.size(), gens.back().best, replays.size(), a.out.c_str());
+  // the overall best, the lineages and the generations' bests (io/run_page.h)
+  auto page = gather_run_page(**store, dir, *cfg, sim, std::stoull((*store)->meta("seed")));
+  if (!page) return fail(dir + ": " + page.error());
+  if (Status s = save_view_html(a.out, page->replays, page->run); !s) return fail(s.error());
+  const RunView& run = page->run;
+  auto best = std::find_if(run.members.begin(), run.members.end(), [&](const RunMember& m) { return m.id == run.best_id; });
+  std::printf("%s: %zu generations, best fitness %.6g (individual %lld); %zu of %zu creatures replayed\n"
+              "viewer written to %s\n",
+              dir.c_str(), run.generations.size(), best->fitness, static_cast<long long>(run.best_id),
+              page->replays.size(), run.members.size(), a.out.c_str());
   return 0;
 }
 

@@ -41,7 +41,7 @@ std::string_view trim(std::string_view s) {
 }  // namespace
 
 std::string view_data_json(const std::vector<LabelledReplay>& replays,
-                           const std::optional<RunCurves>& run) {
+                           const std::optional<RunView>& run) {
   using nlohmann::json;
   // replays go in as the text replay_to_string() made, without a re-parse
   std::string out = "{\"replays\":[";
@@ -49,28 +49,37 @@ std::string view_data_json(const std::vector<LabelledReplay>& replays,
     if (i) out += ',';
     out += "{\"label\":" + json(replays[i].label).dump() + ",\"replay\":";
     out += trim(replays[i].replay_json);
+    if (!replays[i].genome.empty()) out += ",\"genome\":" + json(replays[i].genome).dump();
     out += '}';
   }
   out += "],\"run\":";
-  // the run's curves and the best of each generation
   if (!run) {
     out += "null";
   } else {
-    json gens = json::array(), bests = json::array();
+    auto id_or_null = [](std::int64_t id) { return id >= 0 ? json(id) : json(nullptr); };
+    json gens = json::array(), members = json::array();
     for (const auto& g : run->generations)
-      gens.push_back({{"gen", g.gen}, {"best", g.best}, {"mean", g.mean}, {"median", g.median}});
-    for (const auto& b : run->best_of_generation) {
-      assert(b.replay_index >= 0 && b.replay_index < static_cast<int>(replays.size()));
-      bests.push_back({{"gen", b.gen}, {"replay_index", b.replay_index}});
+      gens.push_back({{"gen", g.gen}, {"best", g.best}, {"mean", g.mean}, {"median", g.median},
+                      {"best_id", g.best_id}, {"evaluations", g.evaluations}, {"rejected", g.rejected},
+                      {"failed", g.failed}});
+    for (const auto& m : run->members) {
+      assert(m.replay_index < static_cast<int>(replays.size()));
+      members.push_back({{"id", m.id}, {"gen", m.gen}, {"fitness", m.fitness},
+                         {"parent1", id_or_null(m.parent1)}, {"parent2", id_or_null(m.parent2)},
+                         {"operator", m.op}, {"replay_index", m.replay_index >= 0 ? json(m.replay_index) : json(nullptr)}});
     }
-    out += json{{"generations", gens}, {"best_of_generation", bests}}.dump();
+    out += json{{"name", run->name}, {"seed", run->seed}, {"dialect", run->dialect},
+                {"algorithm", run->algorithm}, {"population", run->population},
+                {"planned_generations", run->planned_generations}, {"generations", gens},
+                {"members", members}, {"best_id", run->best_id}, {"replay_cap", run->replay_cap}}
+               .dump();
   }
   out += '}';
   return out;
 }
 
 std::string make_view_html(const std::vector<LabelledReplay>& replays,
-                           const std::optional<RunCurves>& run) {
+                           const std::optional<RunView>& run) {
   assert(!replays.empty());
   std::string_view page(kViewerPage, kViewerPageSize);
   std::size_t at = page.find(kDataMarker);
@@ -85,7 +94,7 @@ std::string make_view_html(const std::vector<LabelledReplay>& replays,
 }
 
 Status save_view_html(const std::string& path, const std::vector<LabelledReplay>& replays,
-                      const std::optional<RunCurves>& run) {
+                      const std::optional<RunView>& run) {
   return write_file_atomic(path, make_view_html(replays, run));
 }
 

@@ -4,6 +4,7 @@
 // viewer/build.mjs and linked into the binary; this file fills in the data.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -14,42 +15,63 @@ namespace bx {
 
 /// One creature the page can show.
 struct LabelledReplay {
-  std::string label;        ///< its name on the page ("walker", "generation 12 best")
+  std::string label;        ///< its name on the page ("walker", "individual 12, generation 3")
   std::string replay_json;  ///< the replay as replay_to_string() writes it
+  std::string genome = {};  ///< its genome file's text, for the page's download button ("": none)
 };
 
-/// Fitness of one generation of a run.
-struct FitnessPoint {
+/// One generation of a run (steady state: one report interval).
+struct RunGeneration {
   int gen = 0;
   double best = 0, mean = 0, median = 0;  ///< finite numbers
+  std::int64_t best_id = -1;
+  long evaluations = 0;  ///< cumulative, at its end
+  long rejected = 0;     ///< non-viable children redrawn during it
+  long failed = 0;       ///< evaluations that crashed, timed out or blew up
 };
 
-/// Which of the page's replays is the best creature of a generation.
-struct GenerationBest {
-  int gen = 0;
-  int replay_index = 0;  ///< index into the page's replays
+/// An individual of a run that the page names: a generation's best or an
+/// ancestor of one.
+struct RunMember {
+  std::int64_t id = -1;
+  int gen = 0;           ///< the generation it was born in
+  double fitness = 0;    ///< as stored by the run
+  std::int64_t parent1 = -1, parent2 = -1;
+  std::string op;        ///< the operator that made it
+  int replay_index = -1; ///< its replay on the page, or -1 when it was not re-simulated
 };
 
-/// A run's fitness curves and the best creature of its generations: with
-/// these the page draws the curves and lets the user pick a generation.
-struct RunCurves {
-  std::vector<FitnessPoint> generations;
-  std::vector<GenerationBest> best_of_generation;
+/// A run as its page shows it: where it came from, its generations, the
+/// individuals it names, and which is the overall best (the page opens on it).
+struct RunView {
+  std::string name;     ///< the preset or config file it was made from
+  std::string seed;     ///< the master seed, as text (64 bits do not fit a JavaScript number)
+  std::string dialect, algorithm;
+  int population = 0;
+  int planned_generations = 0;  ///< generations (report intervals) it has when finished
+  std::vector<RunGeneration> generations;
+  std::vector<RunMember> members;
+  std::int64_t best_id = -1;    ///< must be a member with a replay
+  int replay_cap = 0;           ///< most replays the page holds
 };
 
 /// The page's data as JSON text:
-/// {"replays": [{"label", "replay"}...], "run": null | {"generations": [{"gen",
-/// "best", "mean", "median"}...], "best_of_generation": [{"gen", "replay_index"}...]}}.
+/// {"replays": [{"label", "replay", "genome"?}...], "run": null | {"name", "seed",
+/// "dialect", "algorithm", "population", "planned_generations", "generations":
+/// [{"gen", "best", "mean", "median", "best_id", "evaluations", "rejected",
+/// "failed"}...], "members": [{"id", "gen", "fitness", "parent1", "parent2"
+/// (null when none), "operator", "replay_index" (null when none)}...],
+/// "best_id", "replay_cap"}}. docs/viewer.md describes it.
 std::string view_data_json(const std::vector<LabelledReplay>& replays,
-                           const std::optional<RunCurves>& run);
+                           const std::optional<RunView>& run);
 
 /// The whole page with the data embedded. `replays` must not be empty, and
 /// each replay_index must name one of them.
 std::string make_view_html(const std::vector<LabelledReplay>& replays,
-                           const std::optional<RunCurves>& run = std::nullopt);
+                           const std::optional<RunView>& run = std::nullopt);
 
 /// Writes the page to `path` atomically.
 Status save_view_html(const std::string& path, const std::vector<LabelledReplay>& replays,
-                      const std::optional<RunCurves>& run = std::nullopt);
+                      const std::optional<RunView>& run = std::nullopt);
 
 }  // namespace bx

@@ -84,6 +84,15 @@ class InTempDir : public ::testing::Test {
   fs::path dir;
 };
 
+/// Makes a small real run in `dir` (which must not exist), in a few seconds:
+/// the quick preset with 12 individuals for 6 generations of 2 s, seed 1. Its
+/// best is born after generation 0, so it has a lineage.
+inline Outcome small_run(const fs::path& dir) {
+  return bestiary("run quick --out " + dir.string() +
+                  " --set evolution.population=12 --set evolution.generations=6 --set task.seconds=2"
+                  " --workers 0 --quiet");
+}
+
 /// The JSON data a viewer page embeds (between its data script tags).
 inline std::string embedded_data(const std::string& html) {
   const std::string open = "<script id=\"bestiary-data\" type=\"application/json\">";

@@ -2,16 +2,21 @@
 // inspect.mjs drives it): it draws the creature, the creature moves, the
 // panels are there (the signals panel: a trace per effector, sensor and joint
 // dof with its range, "constant" on a constant signal), nothing sticks out
-// of its panel, nothing is fetched from outside, and a run's page lets the
-// user pick a generation's best. Screenshots go to BUILD/viewer-test/.
+// of its panel, nothing is fetched from outside; and a run's page, at
+// 800x600 and 1920x1080, with its lineage picker. Screenshots go to
+// BUILD/viewer-test/.
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <regex>
+#include <set>
 #include <string>
 
+#include "evolve/run.h"
+#include "genome/genome_json.h"
 #include "io/html_view.h"
+#include "io/run_page.h"
 #include "support/run_command.h"
 
 namespace {
@@ -143,40 +148,6 @@ TEST_F(ViewerInBrowser, ACentipedesManySignalsFitAt1920x1080) {
   expect_tidy_panels(seen);
 }
 
-TEST_F(ViewerInBrowser, ARunPageShowsCurvesAndSwitchesToTheChosenGeneration) {
-  // three creatures as the best of generations 0, 5 and 10 of a made-up run
-  std::vector<bx::LabelledReplay> replays;
-  const char* names[] = {"hinged_pair.json", "snake.json", "walker.json"};
-  for (int i = 0; i < 3; ++i) {
-    std::string n = std::to_string(i), gen = std::to_string(5 * i);  // (GCC 12 warns on "r" + to_string)
-    fs::path r = dir / (n + ".json");
-    ASSERT_EQ(bestiary("simulate " + creature(names[i]) + " --seconds 2 --replay " + r.string()).code, 0);
-    replays.push_back({std::string("generation ") + gen + " best", slurp(r)});
-  }
-  bx::RunCurves run;
-  for (int g = 0; g <= 10; ++g) run.generations.push_back({g, 1.0 + g, 0.5 + g / 2.0, 0.4 + g / 2.5});
-  run.best_of_generation = {{0, 0}, {5, 1}, {10, 2}};
-  fs::path page = dir / "run.html";
-  ASSERT_TRUE(bx::save_view_html(page.string(), replays, run).ok());
-
-  json seen = inspect(page, "run", "--times 0.5,1.5 --run");
-  ASSERT_FALSE(seen.is_null());
-  EXPECT_TRUE(seen["errors"].empty()) << seen["errors"];
-  const json& r = seen["run"];
-  ASSERT_TRUE(r["shown"].get<bool>());
-  // three curves of 11 points, three generations to choose from
-  ASSERT_EQ(r["curves"].size(), 3u);
-  for (const auto& c : r["curves"]) EXPECT_EQ(c["points"], 11) << c;
-  ASSERT_EQ(r["options"].size(), 3u);
-  EXPECT_EQ(r["options"][2]["text"], "generation 10 (best 11)");
-  // the page opens on the first replay; choosing generation 10 shows the walker,
-  // clicking the chart's left end goes back to generation 0
-  EXPECT_EQ(r["before"], 0);
-  EXPECT_EQ(r["afterSelect"], 2);
-  EXPECT_EQ(r["label"], "generation 10 best");
-  EXPECT_EQ(r["afterClick"], 0);
-}
-
 TEST_F(ViewerInBrowser, ACatapultsProjectileFliesAwayWithItsTrajectoryDrawn) {
   // tests/creatures/catapult.json releases at 0.5 s and throws about 2.5 m
   fs::path page = dir / "catapult.html";
@@ -198,6 +169,179 @@ TEST_F(ViewerInBrowser, ACatapultsProjectileFliesAwayWithItsTrajectoryDrawn) {
   };
   EXPECT_LT(gap(before) + 0.5, gap(after)) << before << after;
   EXPECT_GT(gap(after), 0.8) << after;
+}
+
+TEST_F(ViewerInBrowser, DevelopmentRemarksAreMutedNotesNotErrors) {
+  // tests/creatures/lcp_failure.json: two neuron inputs whose source the body
+  // lacks (they read 0), as evolved genomes often have; it does not fail
+  fs::path page = dir / "remarks.html";
+  ASSERT_EQ(bestiary("show " + creature("lcp_failure.json") + " --seconds 1 --out " + page.string()).code, 0);
+  json seen = inspect(page, "remarks", "--times 0.5");
+  ASSERT_FALSE(seen.is_null());
+  const json& info = seen["info"];
+  ASSERT_EQ(info["notes"].size(), 2u) << info;
+  EXPECT_EQ(info["notes"][0]["text"], "nodes[2].neurons[0].inputs[0]: its source does not exist in this body; it reads 0");
+  for (const auto& n : info["notes"]) EXPECT_EQ(n["color"], "rgb(110, 119, 129)") << n;  // the muted grey, not red
+  EXPECT_TRUE(info["warnings"].empty()) << info;
+}
+
+// ---- the run page, on a small real run ----
+
+class RunPageInBrowser : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = new fs::path(fs::temp_directory_path() / ("bx_run_page_browser_" + std::to_string(::getpid())));
+    fs::remove_all(*dir_);
+    Outcome r = small_run(*dir_);
+    ASSERT_EQ(r.code, 0) << r.err;
+    r = bestiary("show " + dir_->string());
+    ASSERT_EQ(r.code, 0) << r.err;
+  }
+  static void TearDownTestSuite() {
+    fs::remove_all(*dir_);
+    delete dir_;
+  }
+  static fs::path page() { return *dir_ / "view.html"; }
+  std::unique_ptr<bx::RunStore> store() {
+    auto s = bx::RunStore::open(bx::run_db_path(dir_->string()));
+    EXPECT_TRUE(s.ok()) << s.error();
+    return s.ok() ? std::move(*s) : nullptr;
+  }
+  static fs::path* dir_;
+};
+fs::path* RunPageInBrowser::dir_ = nullptr;
+
+// what a run page must show at any size: nothing out of its panel, a chart
+// as wide as its panel with a title, axis labels, readable ticks and a
+// marker unlike any curve, the run's context, and per generation its
+// rejected and failed counts
+void expect_run_page_layout(const json& seen, const std::vector<bx::GenerationStats>& gens) {
+  EXPECT_TRUE(seen["errors"].empty()) << seen["errors"];
+  EXPECT_TRUE(seen["overflow"].empty()) << seen["overflow"];
+  const json& r = seen["run"];
+  ASSERT_TRUE(r["shown"].get<bool>());
+  EXPECT_TRUE(r["overflow"].empty()) << r["overflow"];
+  const json& c = r["chart"];
+  EXPECT_NEAR(c["width"].get<double>(), c["panel"].get<double>(), 1) << c;
+  EXPECT_GE(c["height"].get<double>(), 170) << c;
+  EXPECT_EQ(c["title"], "Fitness per generation");
+  EXPECT_EQ(c["axisLabels"], json::array({"generation", "fitness"}));
+  EXPECT_GE(c["tickFont"].get<double>(), 11);
+  ASSERT_EQ(c["curves"].size(), 3u);
+  for (const auto& k : c["curves"]) {
+    EXPECT_EQ(k["points"], static_cast<int>(gens.size())) << k;
+    EXPECT_NE(k["stroke"], c["marker"]) << k;
+  }
+  EXPECT_EQ(r["legend"], json::array({"best", "mean", "median", "lineage", "shown"}));
+  EXPECT_EQ(r["facts"]["preset"], "quick (chaumont2007, generational)");
+  EXPECT_EQ(r["facts"]["master seed"], "1");
+  EXPECT_EQ(r["facts"]["population"], "12");
+  EXPECT_EQ(r["facts"]["generations"], "6 of 6");
+  // the table: a header, then gen, best, mean, rejected, failed per generation
+  ASSERT_EQ(r["table"].size(), gens.size() + 1);
+  for (std::size_t g = 0; g < gens.size(); ++g) {
+    const json& row = r["table"][g + 1];
+    EXPECT_EQ(row[0], std::to_string(gens[g].generation));
+    EXPECT_EQ(row[3], std::to_string(gens[g].rejected));
+    EXPECT_EQ(row[4], std::to_string(gens[g].failed));
+  }
+}
+
+TEST_F(RunPageInBrowser, FitsItsPanelsAt800x600) {
+  json seen = inspect(page(), "run_800x600", "--times 1 --width 800 --height 600 --run");
+  ASSERT_FALSE(seen.is_null());
+  expect_run_page_layout(seen, store()->generations());
+  expect_tidy_panels(seen);
+}
+
+TEST_F(RunPageInBrowser, FitsItsPanelsAt1920x1080) {
+  json seen = inspect(page(), "run_1920x1080", "--times 1 --width 1920 --height 1080 --run");
+  ASSERT_FALSE(seen.is_null());
+  expect_run_page_layout(seen, store()->generations());
+  expect_tidy_panels(seen);
+  // the wider panel gives the chart more room
+  EXPECT_GT(seen["run"]["chart"]["width"].get<double>(), 400);
+}
+
+TEST_F(RunPageInBrowser, OpensOnTheBestAndPlaysEachAncestorInItsLineage) {
+  auto s = store();
+  ASSERT_TRUE(s);
+  const std::int64_t best = s->best_individual()->id;
+  json seen = inspect(page(), "run_lineage", "--times 1 --run");
+  ASSERT_FALSE(seen.is_null());
+  EXPECT_TRUE(seen["errors"].empty()) << seen["errors"];
+  const json& r = seen["run"];
+  // opened on the overall best, its fitness the stored one
+  EXPECT_EQ(r["opened"]["individual"], best);
+  EXPECT_EQ(r["opened"]["fitness"], r["opened"]["storedFitness"]);
+  EXPECT_EQ(r["opened"]["fitness"].get<double>(), s->best_individual()->fitness);
+  // its lineage: the best, then each first parent back to generation 0
+  std::vector<std::int64_t> line;
+  for (std::int64_t at = best; at >= 0; at = s->individual(at)->parent1) line.push_back(at);
+  ASSERT_GE(line.size(), 2u) << "the small run's best should descend from generation 0";
+  ASSERT_EQ(r["lineage"].size(), line.size()) << r["lineage"];
+  for (std::size_t k = 0; k < line.size(); ++k) {
+    EXPECT_EQ(r["lineage"][k]["id"], line[k]);
+    EXPECT_TRUE(r["lineage"][k]["playable"].get<bool>());
+    EXPECT_EQ(r["lineage"][k]["current"].get<bool>(), k == 0);
+  }
+  // each ancestor, clicked, is played: its id and replay, its stored fitness;
+  // the list stays the best's, with the ancestor marked
+  ASSERT_EQ(r["ancestors"].size(), line.size() - 1);
+  std::set<int> replays{r["opened"]["replayIndex"].get<int>()};
+  for (const auto& a : r["ancestors"]) {
+    EXPECT_EQ(a["individual"], a["clicked"]) << a;
+    EXPECT_TRUE(replays.insert(a["replayIndex"].get<int>()).second) << a;
+    EXPECT_EQ(a["fitness"].get<double>(), s->individual(a["clicked"].get<std::int64_t>())->fitness) << a;
+    EXPECT_EQ(a["label"], "individual " + std::to_string(a["clicked"].get<std::int64_t>()) + ", generation " +
+                              std::to_string(s->individual(a["clicked"].get<std::int64_t>())->generation));
+    EXPECT_EQ(a["anchor"], best) << a;
+    EXPECT_EQ(a["current"], json::array({a["clicked"]})) << a;
+  }
+  EXPECT_EQ(r["ancestors"].back()["individual"], line[1]);  // the parent last
+  // the list of generations: generation 0's best; the chart's right end: the last generation's
+  auto gens = s->generations();
+  EXPECT_EQ(r["afterSelect"]["individual"], gens.front().best_id);
+  EXPECT_EQ(r["afterSelect"]["generation"], 0);
+  EXPECT_EQ(r["afterClick"]["individual"], gens.back().best_id);
+  // the download is the shown creature's genome file
+  auto shown = s->individual(r["afterClick"]["individual"].get<std::int64_t>());
+  EXPECT_EQ(r["download"]["name"], "individual-" + std::to_string(shown->id) + ".json");
+  EXPECT_EQ(r["download"]["text"], bx::genome_to_string(shown->genome));
+}
+
+TEST_F(RunPageInBrowser, MarksTheCreaturesItCouldNotReplayUnderACap) {
+  // the same run with room for two replays: the best and its parent
+  auto s = store();
+  ASSERT_TRUE(s);
+  auto cfg = bx::read_run_config(s->meta("config"), "run config");
+  ASSERT_TRUE(cfg.ok()) << cfg.error();
+  auto data = bx::gather_run_page(*s, dir_->string(), *cfg, cfg->sim, 1, 2);
+  ASSERT_TRUE(data.ok()) << data.error();
+  fs::path capped = *dir_ / "capped.html";
+  ASSERT_TRUE(bx::save_view_html(capped.string(), data->replays, data->run).ok());
+  json seen = inspect(capped, "run_capped", "--times 1 --run");
+  ASSERT_FALSE(seen.is_null());
+  EXPECT_TRUE(seen["errors"].empty()) << seen["errors"];
+  const json& r = seen["run"];
+  // the page says what it left out, and why
+  ASSERT_EQ(r["notes"].size(), 1u);
+  EXPECT_NE(r["notes"][0].get<std::string>().find("not replayed: the page holds at most 2 replays"), std::string::npos)
+      << r["notes"];
+  EXPECT_EQ(r["facts"]["replays"], "2 of the " + std::to_string(data->run.members.size()) +
+                                       " creatures named (at most 2)");
+  // the lineage's oldest members are listed but cannot be played; the parent can
+  const json& line = r["lineage"];
+  ASSERT_GE(line.size(), 3u) << line;
+  EXPECT_TRUE(line[1]["playable"].get<bool>());
+  EXPECT_FALSE(line.back()["playable"].get<bool>());
+  EXPECT_NE(line.back()["text"].get<std::string>().find("not replayed"), std::string::npos);
+  ASSERT_EQ(r["ancestors"].size(), 1u);
+  EXPECT_EQ(r["ancestors"][0]["individual"], line[1]["id"]);
+  // a generation whose best has no replay is offered but cannot be chosen
+  int disabled = 0;
+  for (const auto& o : r["options"]) disabled += o["disabled"].get<bool>() && o["value"] != "";
+  EXPECT_GT(disabled, 0) << r["options"];
 }
 
 }  // namespace

@@ -13,6 +13,7 @@ import { createSparklines } from './sparklines.js';
 import { createSignalsPanel } from './signals_panel.js';
 import { createRunPanel } from './run_panel.js';
 import { createPicker } from './picker.js';
+import { bestOf, lineageOf, memberOfReplay, membersById } from './lineage.js';
 import { showInfo } from './info_panel.js';
 import { createPlayer } from './player.js';
 import { creatureRadius } from './follow.js';
@@ -33,9 +34,31 @@ export function createViewer(ui, data) {
   let dirty = true;
   rig.controls.addEventListener('change', () => (dirty = true));
 
-  // panels: choice of replay, the run's curves, the player bar
-  const picker = createPicker(ui.picker, data.replays, (i) => load(i));
-  const runPanel = data.run ? createRunPanel(ui.run, data.run, (i) => load(i)) : null;
+  // panels: choice of creature, the run, the player bar. In a run, the
+  // creature shown is a member, chosen as a generation's best (`gen`) or from
+  // the lineage of the last one chosen so (`anchor`).
+  const run = data.run;
+  const byId = run ? membersById(run) : null;
+  const pick = { gen: null, anchor: null, member: null };
+  const showGeneration = (gen) => {
+    const g = run.generations.find((x) => x.gen === gen);
+    const m = g && byId.get(g.best_id);
+    if (m && m.replay_index !== null) show(m, gen, m.id);
+  };
+  const showMember = (id) => {
+    const m = byId.get(id);
+    if (!m || m.replay_index === null) return;
+    // still in the listed lineage: the list stays; else it becomes its own
+    const inLine = lineageOf(byId, pick.anchor).includes(m);
+    const gens = bestOf(run, m.id);
+    show(m, gens.includes(pick.gen) ? pick.gen : gens[0] ?? null, inLine ? pick.anchor : m.id);
+  };
+  function show(member, gen, anchor) {
+    Object.assign(pick, { member, gen, anchor });
+    load(member.replay_index);
+  }
+  const picker = createPicker(ui.picker, data, { replay: (i) => load(i), generation: showGeneration, member: showMember });
+  const runPanel = run ? createRunPanel(ui.run, run, showGeneration) : null;
   const player = createPlayer(ui.player, {
     togglePlay: () => setPlaying(!s.playing),
     seek: (t) => { setPlaying(false); setTime(t); },
@@ -84,13 +107,24 @@ export function createViewer(ui, data) {
     }
     player.setThrow(s.throw !== null, s.throw?.release ?? null, s.T);
     rig.reset(entry.replay.frames, s.radius, s.throw ? s.throw.projectile : -1);
-    showInfo(ui.info, entry);
     sparks?.dispose();
     signals?.dispose();
     signals = createSignalsPanel(ui.signals, entry.replay);
     sparks = createSparklines(ui.neurons, entry.replay);
-    picker.setCurrent(i);
-    runPanel?.setCurrent(i);
+    if (run) {
+      // a replay chosen by index (a script) names its member here
+      if (pick.member?.replay_index !== i) {
+        const m = memberOfReplay(run, i);
+        Object.assign(pick, { member: m, gen: bestOf(run, m.id)[0] ?? null, anchor: m.id });
+      }
+      const lineage = lineageOf(byId, pick.anchor);
+      showInfo(ui.info, entry, { member: pick.member, best: run.best_id, bestOf: bestOf(run, pick.member.id) });
+      picker.setCurrent({ index: i, gen: pick.gen, anchor: pick.anchor, lineage, member: pick.member });
+      runPanel.setCurrent(pick.member, lineage);
+    } else {
+      showInfo(ui.info, entry);
+      picker.setCurrent({ index: i });
+    }
     setTime(0);
   }
 
@@ -172,19 +206,25 @@ export function createViewer(ui, data) {
     ev.preventDefault();
   });
 
-  load(0);
+  // a run's page opens on its overall best
+  if (run) showMember(run.best_id);
+  else load(0);
   requestAnimationFrame(tick);
 
   /**
    * The present moment: time, replay, root part's and centre of mass's
-   * positions; for a catapult, the projectile's centre and whether its
-   * flight is drawn.
+   * positions; the replay's fitness; in a run, the individual shown, the
+   * generation it is shown as the best of (null for none), whose lineage is
+   * listed and the fitness the run stored for it; for a catapult, the
+   * projectile's centre and whether its flight is drawn.
    */
   function state() {
     const p = bodies.parts[0].position;
     const frames = s.entry.replay.frames;
     return {
       t: s.t, replayIndex: s.index, playing: s.playing, camera: rig.mode,
+      individual: run ? pick.member.id : null, generation: run ? pick.gen : null, anchor: run ? pick.anchor : null,
+      fitness: s.entry.replay.result.fitness ?? null, storedFitness: run ? pick.member.fitness : null,
       root: [p.x, p.y, p.z], com: comAt(frames, s.t), sparklines: sparks.rows, signals: signals.rows,
       projectile: s.throw ? centreAt(frames, s.throw.projectile, s.t) : null,
       flight: flight ? flight.drawn && s.flight : false,

@@ -21,18 +21,20 @@ export function niceTicks(lo, hi, n = 5) {
 /**
  * Layout of a run's curves in a width x height box with margins `pad`
  * ({left, right, top, bottom}): SVG path data per curve, ticks with their
- * pixel positions, and the scales both ways.
+ * pixel positions, and the scales both ways. The fitness range holds zero,
+ * the three curves and the run's members (so a lineage fits too).
  */
 export function curveLayout(run, width, height, pad = { left: 36, right: 8, top: 8, bottom: 20 }) {
   const gens = [...run.generations].sort((a, b) => a.gen - b.gen);
-  // ranges: generations on x; all three curves and zero on y
   const g0 = gens.length ? gens[0].gen : 0;
   const g1 = gens.length ? gens[gens.length - 1].gen : 1;
   let y0 = 0, y1 = 0;
-  for (const g of gens) for (const k of CURVES) {
-    y0 = Math.min(y0, g[k]);
-    y1 = Math.max(y1, g[k]);
-  }
+  const widen = (v) => {
+    y0 = Math.min(y0, v);
+    y1 = Math.max(y1, v);
+  };
+  for (const g of gens) for (const k of CURVES) widen(g[k]);
+  for (const m of run.members ?? []) widen(m.fitness);
   const yTicks = niceTicks(y0, y1 > y0 ? y1 : y0 + 1, 4);
   const yLo = Math.min(y0, yTicks[0]), yHi = Math.max(y1, yTicks[yTicks.length - 1]);
   const xTicks = niceTicks(g0, g1 > g0 ? g1 : g0 + 1, 5).filter((v) => Number.isInteger(v));
@@ -55,19 +57,23 @@ export function curveLayout(run, width, height, pad = { left: 36, right: 8, top:
 }
 
 /**
- * The creatures a run offers, one per generation that has a best:
- * [{ gen, replayIndex, best }] in generation order.
+ * The creatures a run offers by generation: per generation its best,
+ * [{ gen, id, best (its fitness), replayIndex (null when not replayed) }] in
+ * generation order.
  */
 export function generationChoices(run) {
-  const best = new Map(run.generations.map((g) => [g.gen, g.best]));
-  return [...run.best_of_generation]
+  const replayOf = new Map(run.members.map((m) => [m.id, m.replay_index]));
+  return [...run.generations]
     .sort((a, b) => a.gen - b.gen)
-    .map((b) => ({ gen: b.gen, replayIndex: b.replay_index, best: best.get(b.gen) ?? null }));
+    .map((g) => ({ gen: g.gen, id: g.best_id, best: g.best, replayIndex: replayOf.get(g.best_id) ?? null }));
 }
 
-/** The choice whose generation is nearest to `gen` (null when there are none). */
+/** The playable choice whose generation is nearest to `gen` (null when there is none). */
 export function nearestChoice(choices, gen) {
   let best = null;
-  for (const c of choices) if (!best || Math.abs(c.gen - gen) < Math.abs(best.gen - gen)) best = c;
+  for (const c of choices) {
+    if (c.replayIndex === null) continue;
+    if (!best || Math.abs(c.gen - gen) < Math.abs(best.gen - gen)) best = c;
+  }
   return best;
 }

@@ -178,29 +178,60 @@ function parseThrowResult(res, path) {
   if (res.target_miss !== undefined && res.target_miss !== null) num(res.target_miss, `${path}.target_miss`);
 }
 
-/** Checks a run's curves: generations with best/mean/median, and the best of each. */
+const isId = (v) => v === null || (Number.isInteger(v) && v >= 0);
+
+/**
+ * Checks a run (null when the page is not a run's): its context, generations
+ * (fitness statistics, best, evaluations, rejected and failed counts), the
+ * individuals it names (each with its parents and its replay, or null when it
+ * was not re-simulated) and its overall best, which must have a replay.
+ */
 export function parseRun(run, nReplays, path = 'run') {
   if (run === null || run === undefined) return null;
   obj(run, path);
+  for (const k of ['name', 'seed', 'dialect', 'algorithm'])
+    if (typeof run[k] !== 'string') fail(`${path}.${k}`, 'expected a string', run[k]);
+  int(run.population, `${path}.population`, 1);
+  int(run.planned_generations, `${path}.planned_generations`, 0);
+  int(run.replay_cap, `${path}.replay_cap`, 0);
   arr(run.generations, `${path}.generations`).forEach((g, i) => {
     const at = `${path}.generations[${i}]`;
     obj(g, at);
     int(g.gen, `${at}.gen`, 0);
     for (const k of ['best', 'mean', 'median']) num(g[k], `${at}.${k}`);
+    for (const k of ['best_id', 'evaluations', 'rejected', 'failed']) int(g[k], `${at}.${k}`, 0);
   });
-  arr(run.best_of_generation, `${path}.best_of_generation`).forEach((b, i) => {
-    const at = `${path}.best_of_generation[${i}]`;
-    obj(b, at);
-    int(b.gen, `${at}.gen`, 0);
-    if (int(b.replay_index, `${at}.replay_index`, 0) >= nReplays)
-      fail(`${at}.replay_index`, `no such replay (the page has ${nReplays})`, b.replay_index);
+  const ids = new Set();
+  arr(run.members, `${path}.members`).forEach((m, i) => {
+    const at = `${path}.members[${i}]`;
+    obj(m, at);
+    ids.add(int(m.id, `${at}.id`, 0));
+    int(m.gen, `${at}.gen`, 0);
+    num(m.fitness, `${at}.fitness`);
+    for (const k of ['parent1', 'parent2']) if (!isId(m[k])) fail(`${at}.${k}`, 'expected an id or null', m[k]);
+    if (typeof m.operator !== 'string') fail(`${at}.operator`, 'expected a string', m.operator);
+    if (m.replay_index !== null && int(m.replay_index, `${at}.replay_index`, 0) >= nReplays)
+      fail(`${at}.replay_index`, `no such replay (the page has ${nReplays})`, m.replay_index);
   });
+  // every replay is one member's
+  const owners = new Map();
+  run.members.forEach((m, i) => {
+    if (m.replay_index === null) return;
+    if (owners.has(m.replay_index)) fail(`${path}.members[${i}].replay_index`, `also member ${owners.get(m.replay_index)}'s`, m.replay_index);
+    owners.set(m.replay_index, i);
+  });
+  if (owners.size !== nReplays) fail(`${path}.members`, `expected one with each of the ${nReplays} replays`, owners.size);
+  run.generations.forEach((g, i) => {
+    if (!ids.has(g.best_id)) fail(`${path}.generations[${i}].best_id`, 'not among the members', g.best_id);
+  });
+  const best = run.members.find((m) => m.id === run.best_id);
+  if (!best || best.replay_index === null) fail(`${path}.best_id`, 'expected a member with a replay', run.best_id);
   return run;
 }
 
 /**
- * Checks the page's data: { replays: [{label, replay}], run: null | {...} }.
- * Returns it with every replay checked.
+ * Checks the page's data: { replays: [{label, replay, genome?}], run: null |
+ * {...} }. Returns it with every replay checked.
  */
 export function parsePageData(d) {
   obj(d, 'data');
@@ -209,6 +240,7 @@ export function parsePageData(d) {
   replays.forEach((e, i) => {
     obj(e, `replays[${i}]`);
     if (typeof e.label !== 'string') fail(`replays[${i}].label`, 'expected a string', e.label);
+    if (e.genome !== undefined && typeof e.genome !== 'string') fail(`replays[${i}].genome`, 'expected a string', e.genome);
     parseReplay(e.replay, `replays[${i}].replay`);
   });
   return { replays, run: parseRun(d.run, replays.length) };

@@ -1,8 +1,12 @@
-// What the page says about the creature shown: where it came from, its body
-// and brain, and how it did; for a catapult, its projectile and throw.
+// What the page says about the creature shown: where it came from (in a
+// run: its id, generation, parents and stored fitness), its body and brain,
+// and how it did; for a catapult, its projectile and throw. Development's
+// remarks are notes, not errors: evolved genomes often carry parts that do
+// nothing. Its genome, when the page holds it, can be downloaded.
 import { el } from './dom.js';
 import { fitness, metres, seconds } from './format.js';
 import { throwOf } from './flight.js';
+import { generationRanges } from './lineage.js';
 import { cssColor, PROJECTILE_COLOR } from './palette.js';
 
 /** The facts of `entry` ({label, replay}) as [name, text] rows. */
@@ -38,17 +42,61 @@ export function infoRows(entry) {
   return rows;
 }
 
-/** Fills `container` with the facts of `entry` ({label, replay}). */
-export function showInfo(container, entry) {
+/**
+ * What a run says about `member` ({id, gen, fitness, parent1, parent2,
+ * operator}) as [name, text] rows; `best` is the run's overall best's id and
+ * `bestOf` the generations it was the best of (numbers, in order).
+ */
+export function memberRows(member, best, bestOf) {
+  const parent = (id) => (id === null ? null : `#${id}`);
+  const parents = [parent(member.parent1), parent(member.parent2)].filter((p) => p !== null);
+  const rows = [
+    ['individual', `#${member.id}` + (member.id === best ? ' (the overall best)' : '')],
+    ['born in', `generation ${member.gen}, by ${member.operator || '?'}`],
+    ['parents', parents.length ? parents.join(' and ') : 'none'],
+  ];
+  if (bestOf.length) rows.push(['best of', `generation${bestOf.length > 1 ? 's' : ''} ${generationRanges(bestOf)}`]);
+  rows.push(['stored fitness', fitness(member.fitness)]);
+  return rows;
+}
+
+/** A file named `name` holding `text`, saved by the browser. */
+function download(name, text) {
+  const url = URL.createObjectURL(new Blob([text], { type: 'application/json' }));
+  const a = el('a', { href: url, download: name });
+  document.body.append(a);
+  a.click();
+  a.remove();
+  setTimeout(() => URL.revokeObjectURL(url), 1000);
+}
+
+/**
+ * Fills `container` with the facts of `entry` ({label, replay, genome?});
+ * in a run, `run` is {member, best, bestOf} (memberRows).
+ */
+export function showInfo(container, entry, run = null) {
   const res = entry.replay.result ?? {};
   // the projectile's row carries a swatch of its colour in the scene
   const value = (k, v) => (k === 'projectile'
     ? el('dd', {}, el('span', { class: 'swatch', style: `background:${cssColor(PROJECTILE_COLOR)}` }), v)
     : el('dd', {}, v ?? '?'));
+  const rows = [...(run ? memberRows(run.member, run.best, run.bestOf) : []), ...infoRows(entry)];
   container.replaceChildren(
     el('h1', {}, entry.label),
-    el('dl', {}, ...infoRows(entry).flatMap(([k, v]) => [el('dt', {}, k), value(k, v)])),
+    el('dl', {}, ...rows.flatMap(([k, v]) => [el('dt', {}, k), value(k, v)])),
   );
+  if (typeof entry.genome === 'string') {
+    const name = run ? `individual-${run.member.id}.json` : `${entry.label}.json`;
+    container.append(el('button', {
+      type: 'button', id: 'download-genome', class: 'download', title: `save this creature's genome as ${name}`,
+      onclick: () => download(name, entry.genome),
+    }, 'Download genome'));
+  }
   if (res.failed) container.append(el('p', { class: 'warn' }, `failed: ${res.failure}`));
-  for (const w of res.warnings ?? []) container.append(el('p', { class: 'warn' }, `warning: ${w}`));
+  const notes = res.warnings ?? [];
+  if (notes.length) {
+    container.append(el('details', { class: 'notes' },
+      el('summary', {}, `Development notes (${notes.length})`),
+      ...notes.map((w) => el('p', { class: 'muted note' }, w))));
+  }
 }

@@ -10,7 +10,7 @@ function start() {
   try {
     const data = parsePageData(JSON.parse($('bestiary-data').textContent));
     data.replays.forEach((e) => sceneProps(e.replay)); // props too, before anything is drawn
-    document.title = `${data.replays[0].label} · Bestiary`;
+    document.title = data.run ? `${data.run.name}, seed ${data.run.seed} · Bestiary` : `${data.replays[0].label} · Bestiary`;
     const viewer = createViewer({
       canvas: $('view'), stage: $('stage'), hud: $('hud'), info: $('info'), picker: $('picker'),
       run: $('run'), signals: $('signals'), neurons: $('neurons'), player: $('player'),

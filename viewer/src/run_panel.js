@@ -1,60 +1,130 @@
-// A run's fitness curves (best, mean, median per generation) as an SVG chart,
-// and the choice of any generation's best creature: from a list, or by
-// clicking the chart.
+// The run panel: where the run came from (preset, dialect, master seed,
+// population, generations, failures and redraws), its fitness per generation
+// as a chart with the shown creature and its lineage marked, and a table of
+// the generations. A click on the chart picks that generation's best.
 import { el, svg } from './dom.js';
 import { CURVES, curveLayout, generationChoices, nearestChoice } from './curves.js';
 import { fitness } from './format.js';
 
-const W = 272, H = 170;
+/** Height of the chart for a width: wide enough to read, never too tall. */
+export function chartHeight(width) {
+  return Math.round(Math.min(Math.max(width * 0.62, 170), 260));
+}
+
+const PAD = { right: 10, top: 10, bottom: 34 };
+// room on the left for the fitness label and the widest tick (11 px digits)
+const padLeft = (L) => 24 + 6.5 * Math.max(...L.yTicks.map((t) => String(t.value).length));
+
+/** The run's context as [name, text] rows. */
+export function runRows(run) {
+  const gens = run.generations;
+  const last = gens[gens.length - 1];
+  const sum = (k) => gens.reduce((n, g) => n + g[k], 0);
+  const unit = run.algorithm === 'generational' ? 'generations' : 'report intervals';
+  const replayed = run.members.filter((m) => m.replay_index !== null).length;
+  return [
+    ['preset', `${run.name} (${run.dialect}, ${run.algorithm})`],
+    ['master seed', run.seed],
+    ['population', String(run.population)],
+    [unit, `${gens.length} of ${run.planned_generations}`],
+    ['evaluations', `${last ? last.evaluations : 0}, of which ${sum('failed')} failed`],
+    ['rejected', `${sum('rejected')} non-viable children redrawn`],
+    ['replays', `${replayed} of the ${run.members.length} creatures named` +
+      (replayed < run.members.length ? ` (at most ${run.replay_cap})` : '')],
+  ];
+}
 
 /**
- * The run panel in `container`. `onChoose(replayIndex)` is called when the
- * user picks a generation; `setCurrent(replayIndex)` marks the shown one.
+ * The run panel in `container` for `run`. `onGeneration(gen)` is called when
+ * the user clicks the chart; `setCurrent(member, lineage)` marks the shown
+ * creature and its lineage (members, newest first).
  */
-export function createRunPanel(container, run, onChoose) {
+export function createRunPanel(container, run, onGeneration) {
   container.replaceChildren();
   container.hidden = false;
-  const L = curveLayout(run, W, H);
   const choices = generationChoices(run);
+  const rows = runRows(run);
+  const dropped = run.members.length - run.members.filter((m) => m.replay_index !== null).length;
 
-  // the chart: grid and ticks, one path per curve, a marker for the shown generation
-  const chart = svg('svg', { class: 'curves', width: W, height: H, viewBox: `0 0 ${W} ${H}` });
-  for (const t of L.yTicks) {
-    chart.append(svg('line', { class: 'grid', x1: L.plot.left, x2: L.plot.left + L.plot.width, y1: t.px, y2: t.px }));
-    chart.append(svg('text', { class: 'tick', x: L.plot.left - 4, y: t.px + 3, 'text-anchor': 'end' }, String(t.value)));
-  }
-  for (const t of L.xTicks)
-    chart.append(svg('text', { class: 'tick', x: t.px, y: H - 6, 'text-anchor': 'middle' }, String(t.value)));
-  const marker = svg('line', { class: 'marker', y1: L.plot.top, y2: L.plot.top + L.plot.height, x1: -10, x2: -10 });
-  chart.append(marker);
-  for (const k of CURVES) chart.append(svg('path', { class: `curve ${k}`, d: L.paths[k] }));
-  chart.addEventListener('click', (ev) => {
-    const box = chart.getBoundingClientRect();
-    const c = nearestChoice(choices, L.genAt(((ev.clientX - box.left) / box.width) * W));
-    if (c) onChoose(c.replayIndex);
-  });
+  const chartBox = el('div', { class: 'chart-box' });
   const legend = el('div', { class: 'legend' },
-    ...CURVES.slice().reverse().map((k) => el('span', { class: `key ${k}` }, k)));
+    ...CURVES.slice().reverse().map((k) => el('span', { class: `key ${k}` }, k)),
+    el('span', { class: 'key lineage' }, 'lineage'),
+    el('span', { class: 'key shown' }, 'shown'));
+  const table = el('table', { class: 'gens' },
+    el('thead', {}, el('tr', {}, ...['gen', 'best', 'mean', 'rejected', 'failed'].map((h) => el('th', {}, h)))),
+    el('tbody', {}, ...run.generations.map((g) => el('tr', { 'data-gen': String(g.gen) },
+      el('td', {}, String(g.gen)), el('td', {}, fitness(g.best)), el('td', {}, fitness(g.mean)),
+      el('td', {}, String(g.rejected)), el('td', {}, String(g.failed))))));
+  container.append(
+    el('h2', {}, 'Run'),
+    el('dl', { class: 'run-facts' }, ...rows.flatMap(([k, v]) => [el('dt', {}, k), el('dd', {}, v)])));
+  if (dropped > 0)
+    container.append(el('p', { class: 'muted' }, `${dropped} of them not replayed: the page holds at most ` +
+      `${run.replay_cap} replays, the best and its lineage first, then the generations' bests, then the other lineages.`));
+  container.append(
+    el('h3', {}, 'Fitness per generation'), chartBox, legend,
+    el('details', { class: 'gens-box', open: run.generations.length <= 12 },
+      el('summary', {}, `Generations (${run.generations.length}): best, mean, rejected, failed`),
+      el('div', { class: 'gens-scroll' }, table)));
 
-  // the list of generations
-  const select = el('select', { id: 'generation', 'aria-label': 'generation' },
-    ...choices.map((c) => el('option', { value: String(c.replayIndex) },
-      `generation ${c.gen}` + (c.best === null ? '' : ` (best ${fitness(c.best)})`))));
-  select.addEventListener('change', () => onChoose(Number(select.value)));
-
-  container.append(el('h2', {}, 'Run'), chart, legend,
-    el('label', { class: 'row' }, 'Best of ', select));
+  // the chart is drawn at its box's width, again when that changes
+  let shown = { member: null, lineage: [] };
+  let width = 0;
+  function draw() {
+    const w = chartBox.clientWidth;
+    if (w <= 0 || w === width) return;
+    width = w;
+    const h = chartHeight(w);
+    const L = curveLayout(run, w, h, { ...PAD, left: padLeft(curveLayout(run, w, h, { ...PAD, left: 0 })) });
+    const chart = svg('svg', { class: 'curves', width: w, height: h, viewBox: `0 0 ${w} ${h}`, role: 'img',
+      'aria-label': 'best, mean and median fitness per generation' });
+    const right = L.plot.left + L.plot.width, bottom = L.plot.top + L.plot.height;
+    for (const t of L.yTicks) {
+      chart.append(svg('line', { class: 'grid', x1: L.plot.left, x2: right, y1: t.px, y2: t.px }));
+      chart.append(svg('text', { class: 'tick', x: L.plot.left - 4, y: t.px + 4, 'text-anchor': 'end' }, String(t.value)));
+    }
+    for (const t of L.xTicks)
+      chart.append(svg('text', { class: 'tick', x: t.px, y: bottom + 14, 'text-anchor': 'middle' }, String(t.value)));
+    chart.append(
+      svg('line', { class: 'axis', x1: L.plot.left, x2: right, y1: bottom, y2: bottom }),
+      svg('line', { class: 'axis', x1: L.plot.left, x2: L.plot.left, y1: L.plot.top, y2: bottom }),
+      svg('text', { class: 'axis-label', x: L.plot.left + L.plot.width / 2, y: h - 4, 'text-anchor': 'middle' }, 'generation'),
+      svg('text', { class: 'axis-label', x: 0, y: 0, 'text-anchor': 'middle',
+        transform: `translate(11 ${L.plot.top + L.plot.height / 2}) rotate(-90)` }, 'fitness'));
+    // the lineage: each ancestor's fitness at the generation it was born in,
+    // its line under the curves and its dots over them
+    const line = shown.lineage.map((m) => [L.x(m.gen), L.y(m.fitness)]);
+    if (line.length > 1)
+      chart.append(svg('path', { class: 'lineage', d: line.map(([x, y], i) => `${i ? 'L' : 'M'}${x.toFixed(1)},${y.toFixed(1)}`).join('') }));
+    for (const k of CURVES) chart.append(svg('path', { class: `curve ${k}`, d: L.paths[k] }));
+    for (const [x, y] of line) chart.append(svg('circle', { class: 'lineage-dot', cx: x, cy: y, r: 2.5 }));
+    // the shown creature: a dashed line at its generation, a ring at its fitness
+    const m = shown.member;
+    if (m) {
+      chart.append(
+        svg('line', { class: 'marker', x1: L.x(m.gen), x2: L.x(m.gen), y1: L.plot.top, y2: bottom }),
+        svg('circle', { class: 'marker-dot', cx: L.x(m.gen), cy: L.y(m.fitness), r: 4.5 }));
+    }
+    chart.addEventListener('click', (ev) => {
+      const box = chart.getBoundingClientRect();
+      const c = nearestChoice(choices, L.genAt(((ev.clientX - box.left) / box.width) * w));
+      if (c) onGeneration(c.gen);
+    });
+    chartBox.replaceChildren(chart);
+  }
+  const observer = typeof ResizeObserver === 'function' ? new ResizeObserver(() => draw()) : null;
+  observer?.observe(chartBox);
+  draw();
 
   return {
     choices,
-    setCurrent(replayIndex) {
-      const c = choices.find((x) => x.replayIndex === replayIndex);
-      if (c) {
-        select.value = String(replayIndex);
-        marker.setAttribute('x1', L.x(c.gen));
-        marker.setAttribute('x2', L.x(c.gen));
-      }
-      marker.style.display = c ? '' : 'none';
+    /** Marks `member` (a run member, or null) and `lineage` (members, newest first). */
+    setCurrent(member, lineage) {
+      shown = { member, lineage };
+      width = 0;
+      draw();
+      for (const tr of table.tBodies[0].rows) tr.classList.toggle('current', member !== null && Number(tr.dataset.gen) === member.gen);
     },
   };
 }

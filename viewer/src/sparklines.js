@@ -4,7 +4,7 @@
 // width and is drawn again when that changes; otherwise only the cursors and
 // values move. The neurons' panel is one such list.
 import { el } from './dom.js';
-import { neuronSeries } from './neurons.js';
+import { neuronAxis, neuronSeries } from './neurons.js';
 import { CONSTANT_STD, rangeText, sparkPoints, valueY } from './series.js';
 import { AT_STOP_SHARE } from './signals.js';
 import { bracket } from './timeline.js';
@@ -125,7 +125,9 @@ export function createTraceList(series, frames) {
 export function createSparklines(container, replay) {
   container.replaceChildren();
   const all = neuronSeries(replay);
-  container.append(el('h2', {}, `Neurons (${all.length})`));
+  container.append(el('div', { class: 'panel-head' },
+    el('h2', {}, `Neurons (${all.length})`),
+    all.length ? el('span', { class: 'group-note' }, neuronAxis(all)) : null));
   if (all.length === 0) {
     container.append(el('p', { class: 'muted' }, 'This creature has no neurons.'));
     return { rows: 0, setTime() {}, dispose() {} };

@@ -28,20 +28,31 @@ test('each curve is a path with one point per generation', () => {
   assert.deepEqual(L.xTicks.map((t) => t.value), [0, 1, 2, 3, 4]);
 });
 
-test('the best creature of each kept generation, in generation order', () => {
+test('the best of each generation, playable when replayed, in generation order', () => {
   const c = generationChoices(makeRun());
   assert.deepEqual(c, [
-    { gen: 0, replayIndex: 0, best: 1 },
-    { gen: 2, replayIndex: 1, best: 3 },
-    { gen: 4, replayIndex: 2, best: 5 },
+    { gen: 0, id: 3, best: 1, replayIndex: 1 },
+    { gen: 1, id: 7, best: 2, replayIndex: null },
+    { gen: 2, id: 12, best: 3, replayIndex: 2 },
+    { gen: 3, id: 12, best: 3, replayIndex: 2 },
+    { gen: 4, id: 20, best: 5, replayIndex: 0 },
   ]);
-  assert.equal(nearestChoice(c, 3.4).gen, 4);
+  // the nearest playable one: generation 1's best is not replayed
+  assert.equal(nearestChoice(c, 3.6).gen, 4);
   assert.equal(nearestChoice(c, 0.9).gen, 0);
+  assert.equal(nearestChoice(c, 1.1).gen, 2);
   assert.equal(nearestChoice([], 1), null);
 });
 
+test('the fitness range holds the members too', () => {
+  const run = makeRun();
+  run.members[2].fitness = -4; // an ancestor below every curve
+  const L = curveLayout(run, 200, 100, { left: 10, right: 10, top: 10, bottom: 10 });
+  assert.equal(L.y(-4), 90); // the bottom of the plot
+});
+
 test('a run of one generation still lays out', () => {
-  const run = { generations: [{ gen: 0, best: 1, mean: 1, median: 1 }], best_of_generation: [{ gen: 0, replay_index: 0 }] };
+  const run = { generations: [{ gen: 0, best: 1, mean: 1, median: 1 }], members: [] };
   const L = curveLayout(run, 200, 100);
   assert.match(L.paths.best, /^M[\d.]+,[\d.]+$/);
   assert.ok(Number.isFinite(L.x(0)));

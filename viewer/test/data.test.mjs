@@ -63,14 +63,26 @@ test('page data holds labelled replays and an optional run', () => {
 test('bad page data is refused with the place of the fault', () => {
   assert.throws(() => parsePageData({ replays: [] }), { message: /^data\.replays: expected at least one replay/ });
   assert.throws(() => parsePageData({ replays: [{ label: 3, replay: makeReplay() }] }), { message: /^replays\[0\]\.label: expected a string/ });
+  assert.throws(() => parsePageData({ replays: [{ label: 'a', replay: makeReplay(), genome: {} }] }), { message: /^replays\[0\]\.genome: expected a string/ });
   const bad = makeReplay();
   bad.version = 9;
   assert.throws(() => parsePageData({ replays: [{ label: 'x', replay: bad }] }), { message: /^replays\[0\]\.replay\.version/ });
-  // run: a best creature that is not on the page, a curve value that is not a number
-  assert.throws(() => parseRun(makeRun(), 2), { message: /^run\.best_of_generation\[1\]\.replay_index: no such replay \(the page has 2\), got 2$/ });
-  const run = makeRun();
-  run.generations[3].mean = null;
-  assert.throws(() => parseRun(run, 3), { message: /^run\.generations\[3\]\.mean: expected a number, got null$/ });
+  // run: a member's replay that is not on the page, a curve value that is not a number
+  assert.throws(() => parseRun(makeRun(), 2), { message: /^run\.members\[3\]\.replay_index: no such replay \(the page has 2\), got 2$/ });
+  const spoilt = (spoil) => {
+    const run = makeRun();
+    spoil(run);
+    return () => parseRun(run, 3);
+  };
+  assert.throws(spoilt((r) => (r.generations[3].mean = null)), { message: /^run\.generations\[3\]\.mean: expected a number, got null$/ });
+  assert.throws(spoilt((r) => (r.seed = 1)), { message: /^run\.seed: expected a string, got 1$/ });
+  assert.throws(spoilt((r) => (r.generations[1].failed = -1)), { message: /^run\.generations\[1\]\.failed: expected an integer >= 0/ });
+  assert.throws(spoilt((r) => (r.members[2].parent1 = 'x')), { message: /^run\.members\[2\]\.parent1: expected an id or null/ });
+  // every replay is exactly one member's, every generation's best a member, the best replayed
+  assert.throws(spoilt((r) => (r.members[2].replay_index = 1)), { message: /^run\.members\[2\]\.replay_index: also member 1's/ });
+  assert.throws(spoilt((r) => (r.members[1].replay_index = null)), { message: /^run\.members: expected one with each of the 3 replays, got 2$/ });
+  assert.throws(spoilt((r) => (r.generations[0].best_id = 99)), { message: /^run\.generations\[0\]\.best_id: not among the members, got 99$/ });
+  assert.throws(spoilt((r) => (r.best_id = 7)), { message: /^run\.best_id: expected a member with a replay, got 7$/ });
 });
 
 test('a catapult replay passes, with or without a target or a release', () => {

@@ -51,15 +51,28 @@ export function makeReplay({ frames = 21, dt = 0.1 } = {}) {
   };
 }
 
-/** A synthetic run: generations 0..4, fitness rising, best of 0, 2 and 4 kept. */
+/**
+ * A synthetic run of generations 0..4 on three replays. Its line of descent:
+ * #3 (random, generation 0) -> #7 (mutation, generation 1; not replayed) ->
+ * #12 (crossover of #7 with #3, generation 2) -> #20 (mutation, generation 4,
+ * the overall best). #12 is the best of generations 2 and 3 (an elite).
+ */
 export function makeRun() {
+  const member = (id, gen, fitness, parent1, parent2, operator, replay_index) =>
+    ({ id, gen, fitness, parent1, parent2, operator, replay_index });
+  const gen = (g, best, best_id, rejected, failed) =>
+    ({ gen: g, best, mean: best / 2, median: best / 2.5, best_id, evaluations: 10 * (g + 1), rejected, failed });
   return {
-    generations: [0, 1, 2, 3, 4].map((g) => ({ gen: g, best: 1 + g, mean: 0.5 + g / 2, median: 0.4 + g / 2 })),
-    best_of_generation: [
-      { gen: 0, replay_index: 0 },
-      { gen: 4, replay_index: 2 },
-      { gen: 2, replay_index: 1 },
+    name: 'quick', seed: '18446744073709551615', dialect: 'chaumont2007', algorithm: 'generational',
+    population: 10, planned_generations: 6, replay_cap: 3,
+    generations: [gen(0, 1, 3, 2, 0), gen(1, 2, 7, 1, 1), gen(2, 3, 12, 0, 0), gen(3, 3, 12, 4, 2), gen(4, 5, 20, 0, 0)],
+    members: [
+      member(20, 4, 5, 12, null, 'mutation', 0),
+      member(3, 0, 1, null, null, 'random', 1),
+      member(7, 1, 2, 3, null, 'mutation', null),
+      member(12, 2, 3, 7, 3, 'crossover', 2),
     ],
+    best_id: 20,
   };
 }
 

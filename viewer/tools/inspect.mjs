@@ -10,10 +10,11 @@
 // of pixels that change between the first and last moment under a still
 // (orbit) camera, what the signals panel shows (each group's traces with
 // their range text and badges, whether a group closes and opens, whether the
-// plots follow a resize), the elements that stick out of their panel, and
-// with --run what the run panel shows and whether choosing a generation
-// switches the creature.
-import { mkdirSync } from 'node:fs';
+// plots follow a resize), the elements that stick out of their panel, the
+// creature's development notes and warnings, and
+// with --run what the run page shows and what choosing a creature (from the
+// lineage, the generation list or the chart) does.
+import { mkdirSync, readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { openViewer } from './browser.mjs';
 
@@ -79,8 +80,16 @@ async function main() {
     out.sparklines = await page.locator('#neurons .spark').count();
     out.player = await page.locator('#player button, #player input, #player select').count();
     out.overflow = await page.evaluate(overflowing);
+    // the creature's facts: development's notes (muted) and warnings (red)
+    out.info = await page.evaluate(() => ({
+      notes: [...document.querySelectorAll('#info .note')].map((p) => ({ text: p.textContent, color: getComputedStyle(p).color })),
+      warnings: [...document.querySelectorAll('#info .warn')].map((p) => p.textContent),
+    }));
     out.signals = await inspectSignals(page, a);
-    if (a.run) out.run = await inspectRun(page, a);
+    if (a.run) {
+      out.run = await inspectRun(page, a);
+      out.run.overflow = await page.evaluate(overflowing); // with the panels as the choices left them
+    }
     console.log(JSON.stringify(out));
   } finally {
     await browser.close();
@@ -88,15 +97,16 @@ async function main() {
 }
 
 // Elements drawn (partly) outside their panel (side panel, player bar, the
-// scene's line of text): side-ways for the side panel, which scrolls, either
-// way for the others. Each as "panel: tag.class 'text'".
+// scene's line of text and its scale): side-ways for the side panel, which
+// scrolls, either way for the others; and a panel outside the window. Each
+// as "panel: tag.class 'text'".
 function overflowing() {
   const out = [];
-  for (const id of ['side', 'player', 'hud']) {
+  for (const id of ['side', 'player', 'hud', 'scale']) {
     const panel = document.getElementById(id);
     if (!panel || panel.offsetParent === null) continue;
     const p = panel.getBoundingClientRect();
-    if (id !== 'side' && (p.right > window.innerWidth + 0.5 || p.bottom > window.innerHeight + 0.5))
+    if (p.left < -0.5 || p.right > window.innerWidth + 0.5 || p.bottom > window.innerHeight + 0.5)
       out.push(`${id}: outside the window`);
     for (const e of panel.querySelectorAll('*')) {
       if (e.getClientRects().length === 0) continue; // not drawn (a closed group's)
@@ -157,21 +167,70 @@ async function inspectSignals(page, a) {
   };
 }
 
-// the run panel: curves drawn, generations offered, choosing one switches the creature
+// the run page: the run's facts, the chart (its size, title, axis labels,
+// the colours of its curves and of the shown creature's marker), the table
+// of generations, the generation list and the lineage; then playing each
+// playable ancestor in the lineage, choosing the first generation's best,
+// clicking the chart's right end, and downloading the shown genome
 async function inspectRun(page, a) {
   if (await page.locator('#run').isHidden()) return { shown: false };
-  const curves = await page.$$eval('#run svg path.curve', (ps) => ps.map((p) => ({ cls: p.getAttribute('class'), points: (p.getAttribute('d').match(/[ML]/g) || []).length })));
-  const options = await page.$$eval('#generation option', (os) => os.map((o) => ({ value: o.value, text: o.textContent })));
-  const r = { shown: true, curves, options, before: await page.evaluate(() => window.bestiary.replayIndex) };
-  // choose the last generation from the list
-  await page.selectOption('#generation', options[options.length - 1].value);
-  r.afterSelect = await page.evaluate(() => window.bestiary.replayIndex);
-  r.label = await page.locator('#info h1').textContent();
-  await page.screenshot({ path: join(a.shots, `${a.name}_run.png`) });
-  // click the chart's left edge: the first generation
-  const box = await page.locator('#run svg').boundingBox();
-  await page.mouse.click(box.x + 40, box.y + box.height / 2);
-  r.afterClick = await page.evaluate(() => window.bestiary.replayIndex);
+  const now = () => page.evaluate(() => {
+    const s = window.bestiary.state();
+    return {
+      replayIndex: s.replayIndex, individual: s.individual, generation: s.generation, anchor: s.anchor,
+      fitness: s.fitness, storedFitness: s.storedFitness, label: document.querySelector('#info h1').textContent,
+    };
+  });
+  const lineage = () => page.$$eval('#picker .lineage-item', (bs) => bs.map((b) => ({
+    id: Number(b.dataset.id), text: b.textContent, playable: !b.disabled, current: b.getAttribute('aria-current') === 'true',
+  })));
+  const r = await page.evaluate(() => {
+    const chart = document.querySelector('#run svg.curves');
+    const stroke = (e) => (e ? getComputedStyle(e).stroke : null);
+    const cells = (tr) => [...tr.cells].map((c) => c.textContent);
+    return {
+      shown: true,
+      facts: Object.fromEntries([...document.querySelectorAll('#run .run-facts dt')].map((dt) => [dt.textContent, dt.nextElementSibling.textContent])),
+      notes: [...document.querySelectorAll('#run > p.muted')].map((p) => p.textContent),
+      chart: {
+        width: chart.getBoundingClientRect().width, height: chart.getBoundingClientRect().height,
+        panel: document.getElementById('run').clientWidth,
+        title: chart.parentElement.previousElementSibling.textContent,
+        axisLabels: [...chart.querySelectorAll('.axis-label')].map((t) => t.textContent),
+        ticks: [...chart.querySelectorAll('.tick')].map((t) => t.textContent),
+        tickFont: parseFloat(getComputedStyle(chart.querySelector('.tick')).fontSize),
+        curves: [...chart.querySelectorAll('path.curve')].map((p) => ({ cls: p.getAttribute('class'), points: (p.getAttribute('d').match(/[ML]/g) || []).length, stroke: stroke(p) })),
+        marker: stroke(chart.querySelector('.marker')),
+        lineageDots: chart.querySelectorAll('.lineage-dot').length,
+      },
+      legend: [...document.querySelectorAll('#run .legend .key')].map((k) => k.textContent),
+      table: [...document.querySelectorAll('#run table.gens tr')].map(cells),
+      options: [...document.querySelectorAll('#generation option')].map((o) => ({ value: o.value, text: o.textContent, disabled: o.disabled })),
+      downloadButton: document.getElementById('download-genome')?.textContent ?? null,
+    };
+  });
+  r.opened = await now();
+  r.lineage = await lineage();
+  // every playable ancestor, the oldest first: each plays, the list stays
+  r.ancestors = [];
+  for (const item of [...r.lineage].reverse()) {
+    if (!item.playable || item.current) continue;
+    await page.click(`#picker .lineage-item[data-id="${item.id}"]`);
+    r.ancestors.push({ clicked: item.id, ...(await now()), lineage: (await lineage()).map((x) => x.id),
+      current: (await lineage()).filter((x) => x.current).map((x) => x.id) });
+  }
+  await page.screenshot({ path: join(a.shots, `${a.name}_lineage.png`) });
+  // the first generation from the list
+  await page.selectOption('#generation', r.options.find((o) => o.value !== '' && !o.disabled).value);
+  r.afterSelect = { ...(await now()), lineage: (await lineage()).map((x) => x.id) };
+  // the chart's right end: the last generation
+  const chart = page.locator('#run svg.curves');
+  const box = await chart.boundingBox();
+  await chart.click({ position: { x: box.width - 12, y: box.height / 2 } }); // scrolled into view first
+  r.afterClick = await now();
+  // the shown creature's genome, as the browser saves it
+  const [download] = await Promise.all([page.waitForEvent('download'), page.click('#download-genome')]);
+  r.download = { name: download.suggestedFilename(), text: readFileSync(await download.path(), 'utf8') };
   return r;
 }
 

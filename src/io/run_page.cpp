@@ -1,0 +1,137 @@
+#include "io/run_page.h"
+
+#include <cstddef>
+#include <deque>
+#include <map>
+#include <set>
+#include <string>
+#include <utility>
+
+#include "develop/develop.h"
+#include "eval/evaluate.h"
+#include "genome/genome_json.h"
+#include "io/replay_file.h"
+
+namespace bx {
+
+namespace {
+
+// indices 0..n-1, both ends first, then the middles of the gaps breadth
+// first: every prefix is spread evenly
+std::vector<std::size_t> spread_order(std::size_t n) {
+  std::vector<std::size_t> out;
+  if (n == 0) return out;
+  out.push_back(0);
+  if (n == 1) return out;
+  out.push_back(n - 1);
+  std::deque<std::pair<std::size_t, std::size_t>> gaps{{0, n - 1}};
+  while (!gaps.empty()) {
+    auto [lo, hi] = gaps.front();
+    gaps.pop_front();
+    if (hi - lo < 2) continue;
+    std::size_t mid = lo + (hi - lo) / 2;
+    out.push_back(mid);
+    gaps.push_back({lo, mid});
+    gaps.push_back({mid, hi});
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<std::int64_t> replay_choice(std::int64_t best, const std::vector<std::int64_t>& lineage,
+                                        const std::vector<std::int64_t>& bests,
+                                        const std::vector<std::int64_t>& others, int cap) {
+  std::vector<std::int64_t> out;
+  std::set<std::int64_t> taken;
+  auto take = [&](std::int64_t id) {
+    if (static_cast<int>(out.size()) < cap && taken.insert(id).second) out.push_back(id);
+  };
+  take(best);
+  for (const auto* list : {&lineage, &bests, &others})
+    for (std::size_t i : spread_order(list->size())) take((*list)[i]);
+  return out;
+}
+
+Result<RunPage> gather_run_page(const RunStore& store, const std::string& source, const RunConfig& cfg,
+                                const SimConfig& sim, std::uint64_t master, int cap) {
+  auto gens = store.generations();
+  if (gens.empty()) return Error{"no generation finished yet"};
+  RunPage page;
+  RunView& run = page.run;
+  run.name = store.meta("name");
+  run.seed = std::to_string(master);
+  run.dialect = std::string(to_string(cfg.dialect));
+  run.algorithm = cfg.evolution.algorithm == Algorithm::Generational ? "generational" : "steady state";
+  run.population = cfg.evolution.population;
+  run.planned_generations =
+      Evolution(cfg.dialect, cfg.evolution, cfg.operators, cfg.sim.develop, master).total_generations();
+  run.replay_cap = cap;
+  // the overall best: the fittest generation best, the earliest on a tie
+  const GenerationStats* top = &gens.front();
+  for (const auto& g : gens) {
+    run.generations.push_back({g.generation, g.best, g.mean, g.median, g.best_id, g.evaluations, g.rejected,
+                               g.failed});
+    if (g.best > top->best) top = &g;
+  }
+  run.best_id = top->best_id;
+
+  // the members: each generation's best and its first parents back to
+  // generation 0. The first parent, because the child is its copy (mutated,
+  // or with the second parent's nodes spliced in: crossover's from the cut
+  // on, a graft's branch); following it gives one line of descent, where
+  // both parents would give a tree that doubles each generation back.
+  std::map<std::int64_t, Individual> members;
+  auto lineage = [&](std::int64_t id) -> Result<std::vector<std::int64_t>> {
+    std::vector<std::int64_t> chain;
+    for (std::int64_t at = id; at >= 0;) {
+      auto it = members.find(at);
+      if (it == members.end()) {
+        auto ind = store.individual(at);
+        if (!ind) return Error{"individual " + std::to_string(at) + " is missing"};
+        it = members.emplace(at, std::move(*ind)).first;
+      }
+      if (at != id) chain.push_back(at);
+      at = it->second.parent1;
+    }
+    return chain;
+  };
+  auto best_line = lineage(run.best_id);
+  if (!best_line) return Error{best_line.error()};
+  std::vector<std::int64_t> bests, others;
+  std::set<std::int64_t> named(best_line->begin(), best_line->end());
+  named.insert(run.best_id);
+  for (const auto& g : gens)
+    if (bests.empty() || bests.back() != g.best_id) bests.push_back(g.best_id);
+  for (auto b = bests.rbegin(); b != bests.rend(); ++b) {
+    auto line = lineage(*b);
+    if (!line) return Error{line.error()};
+    for (std::int64_t id : *line)
+      if (named.insert(id).second) others.push_back(id);
+  }
+
+  // the replays, each simulated as the run scored it: its config and seed
+  std::map<std::int64_t, int> replay_of;
+  for (std::int64_t id : replay_choice(run.best_id, *best_line, bests, others, cap)) {
+    const Individual& ind = members.at(id);
+    Development dev = develop(ind.genome, sim.develop);
+    if (!dev.viable()) continue;
+    Replay replay;
+    std::uint64_t seed = ind.seed;  // the seed stored with it
+    EvalResult res = evaluate(*dev.model, sim, seed, &replay);
+    ReplayInfo info{source + " individual " + std::to_string(id), seed, sim.physics.dt, sim.physics.friction};
+    replay_of[id] = static_cast<int>(page.replays.size());
+    page.replays.push_back({"individual " + std::to_string(id) + ", generation " + std::to_string(ind.generation),
+                            replay_to_string(*dev.model, replay, res, info), genome_to_string(ind.genome)});
+  }
+  if (!replay_of.count(run.best_id))
+    return Error{"the best, individual " + std::to_string(run.best_id) + ", cannot be grown"};
+  for (const auto& [id, ind] : members) {
+    auto r = replay_of.find(id);
+    run.members.push_back({id, ind.generation, ind.fitness, ind.parent1, ind.parent2, ind.op,
+                           r == replay_of.end() ? -1 : r->second});
+  }
+  return page;
+}
+
+}  // namespace bx

@@ -1,0 +1,163 @@
+// The run page's data (src/io/run_page.h): which replays a bounded page
+// keeps, and on a small real run: it opens on the overall best, names every
+// generation's best and the first-parent lineages back to generation 0, and
+// replays each creature exactly as the run scored it.
+#include "io/run_page.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <map>
+#include <set>
+
+#include "evolve/run.h"
+#include "genome/genome_json.h"
+#include "support/run_command.h"
+
+namespace {
+
+using namespace bxtest;
+using nlohmann::json;
+
+TEST(ReplayChoice, TheBestThenItsLineageThenTheGenerationsBestsThenTheRest) {
+  // the best (100), its lineage newest first back to generation 0's 0, the
+  // generations' bests (some in the lineage), two others
+  std::vector<std::int64_t> lineage = {9, 8, 7, 6, 5, 4, 3, 2, 1, 0};
+  std::vector<std::int64_t> bests = {0, 5, 100, 200, 300};
+  std::vector<std::int64_t> others = {50, 51};
+  auto all = bx::replay_choice(100, lineage, bests, others, 100);
+  EXPECT_EQ(all.size(), 15u);  // 1 + 10 + 200 and 300 + 2
+  EXPECT_EQ(std::set<std::int64_t>(all.begin(), all.end()).size(), all.size());
+  EXPECT_EQ(all.front(), 100);
+  EXPECT_EQ(std::vector<std::int64_t>(all.end() - 2, all.end()), others);
+  // a cap keeps the best, then the ends of the lineage: the parent and generation 0's ancestor
+  EXPECT_EQ(bx::replay_choice(100, lineage, bests, others, 3), (std::vector<std::int64_t>{100, 9, 0}));
+  // and its middle (index 4) before the rest of it
+  EXPECT_EQ(bx::replay_choice(100, lineage, bests, others, 4), (std::vector<std::int64_t>{100, 9, 0, 5}));
+  // once the lineage is in, the last generation's best comes first
+  auto twelve = bx::replay_choice(100, lineage, bests, others, 12);
+  EXPECT_EQ(twelve.size(), 12u);
+  EXPECT_EQ(twelve.back(), 300);
+}
+
+class RunPage : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = new fs::path(fs::temp_directory_path() / ("bx_run_page_" + std::to_string(::getpid())));
+    fs::remove_all(*dir_);
+    Outcome r = small_run(*dir_);
+    ASSERT_EQ(r.code, 0) << r.err;
+  }
+  static void TearDownTestSuite() {
+    fs::remove_all(*dir_);
+    delete dir_;
+  }
+  void SetUp() override {
+    auto store = bx::RunStore::open(bx::run_db_path(dir_->string()));
+    ASSERT_TRUE(store.ok()) << store.error();
+    store_ = std::move(*store);
+    auto cfg = bx::read_run_config(store_->meta("config"), "run config");
+    ASSERT_TRUE(cfg.ok()) << cfg.error();
+    cfg_ = *cfg;
+  }
+  bx::Result<bx::RunPage> gather(int cap = bx::kRunPageReplays) {
+    return bx::gather_run_page(*store_, dir_->string(), cfg_, cfg_.sim, 1, cap);
+  }
+  static fs::path* dir_;
+  std::unique_ptr<bx::RunStore> store_;
+  bx::RunConfig cfg_;
+};
+fs::path* RunPage::dir_ = nullptr;
+
+// the members by id
+std::map<std::int64_t, bx::RunMember> by_id(const bx::RunView& run) {
+  std::map<std::int64_t, bx::RunMember> out;
+  for (const auto& m : run.members) out[m.id] = m;
+  return out;
+}
+
+TEST_F(RunPage, OpensOnTheBestAndReplaysEachCreatureAsTheRunScoredIt) {
+  auto page = gather();
+  ASSERT_TRUE(page.ok()) << page.error();
+  const bx::RunView& run = page->run;
+  // the context
+  EXPECT_EQ(run.name, "quick");
+  EXPECT_EQ(run.seed, "1");
+  EXPECT_EQ(run.dialect, "chaumont2007");
+  EXPECT_EQ(run.population, 12);
+  EXPECT_EQ(run.planned_generations, 6);
+  auto gens = store_->generations();
+  ASSERT_EQ(run.generations.size(), gens.size());
+  for (std::size_t g = 0; g < gens.size(); ++g) {
+    EXPECT_EQ(run.generations[g].rejected, gens[g].rejected);
+    EXPECT_EQ(run.generations[g].failed, gens[g].failed);
+    EXPECT_EQ(run.generations[g].best_id, gens[g].best_id);
+  }
+  // the overall best, replayed first
+  auto members = by_id(run);
+  EXPECT_EQ(run.best_id, store_->best_individual()->id);
+  ASSERT_TRUE(members.count(run.best_id));
+  EXPECT_EQ(members[run.best_id].replay_index, 0);
+  // every generation's best is named, and every first parent back to generation 0
+  for (const auto& g : gens) EXPECT_TRUE(members.count(g.best_id)) << g.best_id;
+  for (const auto& [id, m] : members) {
+    if (m.parent1 >= 0) EXPECT_TRUE(members.count(m.parent1)) << id;
+    else EXPECT_EQ(m.gen, 0) << id;
+  }
+  int depth = 0;
+  for (std::int64_t at = run.best_id; members[at].parent1 >= 0; at = members[at].parent1) ++depth;
+  EXPECT_GE(depth, 1) << "the small run's best should descend from generation 0";
+  // all of them fit under the cap; each replay is its creature's scored evaluation
+  ASSERT_EQ(page->replays.size(), run.members.size());
+  for (const auto& [id, m] : members) {
+    ASSERT_GE(m.replay_index, 0) << id;
+    const bx::LabelledReplay& r = page->replays[m.replay_index];
+    json replay = json::parse(r.replay_json);
+    auto stored = store_->individual(id);
+    EXPECT_EQ(replay["result"]["fitness"].get<double>(), stored->fitness) << id;
+    EXPECT_EQ(m.fitness, stored->fitness) << id;
+    // (a seed beyond 2^53 is written as text)
+    const json& seed = replay["seed"];
+    EXPECT_EQ(seed.is_string() ? std::stoull(seed.get<std::string>()) : seed.get<std::uint64_t>(),
+              bx::evaluation_seed(1, id))
+        << id;
+    EXPECT_EQ(r.genome, bx::genome_to_string(stored->genome)) << id;
+    EXPECT_EQ(r.label, "individual " + std::to_string(id) + ", generation " + std::to_string(m.gen));
+  }
+}
+
+TEST_F(RunPage, ACapKeepsTheBestAndItsLineageAndSaysWhatItLeftOut) {
+  auto page = gather(2);
+  ASSERT_TRUE(page.ok()) << page.error();
+  const bx::RunView& run = page->run;
+  EXPECT_EQ(run.replay_cap, 2);
+  ASSERT_EQ(page->replays.size(), 2u);
+  auto members = by_id(run);
+  ASSERT_GT(members.size(), 2u);
+  // the best and its parent have replays; the others are named without one
+  const std::int64_t parent = members[run.best_id].parent1;
+  int without = 0;
+  for (const auto& [id, m] : members) {
+    if (id == run.best_id || id == parent) EXPECT_GE(m.replay_index, 0) << id;
+    else without += m.replay_index < 0;
+  }
+  EXPECT_EQ(without, static_cast<int>(members.size()) - 2);
+}
+
+TEST_F(RunPage, ShowWritesItAndSaysHowManyCreaturesItReplayed) {
+  fs::path page = *dir_ / "page.html";
+  Outcome s = bestiary("show " + dir_->string() + " --out " + page.string());
+  ASSERT_EQ(s.code, 0) << s.err;
+  auto data = json::parse(embedded_data(slurp(page)));
+  const json& run = data["run"];
+  EXPECT_EQ(run["best_id"], store_->best_individual()->id);
+  EXPECT_EQ(run["generations"].size(), 6u);
+  EXPECT_EQ(data["replays"].size(), run["members"].size());
+  EXPECT_NE(s.out.find("(individual " + std::to_string(store_->best_individual()->id) + "); " +
+                       std::to_string(data["replays"].size()) + " of " + std::to_string(run["members"].size()) +
+                       " creatures replayed"),
+            std::string::npos)
+      << s.out;
+}
+
+}  // namespace
