@@ -341,8 +341,13 @@ Development develop(const Genome& g, const DevelopDef& def) {
     m.joints.push_back(j);
   }
 
-  // self-intersection of parts not joined to each other
-  auto [a, b] = find_self_intersection(m, def.overlap_margin);
+  // self-intersection of parts not joined to each other (a catapult's
+  // projectile, released later, counts as not joined to its arm)
+  int released = -1;
+  if (g.catapult)
+    for (int i = 0; i < n; ++i)
+      if (inst[i].node == g.catapult->projectile) released = i;
+  auto [a, b] = find_self_intersection(m, def.overlap_margin, released);
   if (a >= 0)
     return {std::nullopt, "self-intersection: parts " + std::to_string(a) + " (gene " +
                               std::to_string(m.parts[a].gene) + ") and " + std::to_string(b) +

@@ -768,7 +768,7 @@ std::uint8_t World::contact_mask(int i) const { return impl_->contact_mask[i]; }
 double World::time() const { return impl_->t; }
 const PhysicsDef& World::def() const { return impl_->def; }
 
-std::pair<int, int> find_self_intersection(const CreatureModel& m, double margin) {
+std::pair<int, int> find_self_intersection(const CreatureModel& m, double margin, int released) {
   ensure_ode_initialized();
   int n = m.n_parts();
   std::vector<dGeomID> geoms(n);
@@ -780,8 +780,8 @@ std::pair<int, int> find_self_intersection(const CreatureModel& m, double margin
   dContactGeom contact;
   for (int i = 0; i < n && hit.first < 0; ++i) {
     for (int j = i + 1; j < n; ++j) {
-      // parts joined by a joint may touch
-      if (m.parts[j].parent == i || m.parts[i].parent == j) continue;
+      // parts joined by a joint may touch, unless the joint is released later
+      if ((m.parts[j].parent == i && j != released) || (m.parts[i].parent == j && i != released)) continue;
       if (dCollide(geoms[i], geoms[j], 1, &contact, sizeof(dContactGeom)) > 0) {
         hit = {i, j};
         break;

@@ -110,7 +110,10 @@ class World {
 
 /// Development's self-intersection test: the first pair of parts, not joined
 /// by a joint, whose shapes (each shrunk by `margin` metres on every side)
-/// overlap; {-1, -1} if none.
-std::pair<int, int> find_self_intersection(const CreatureModel& m, double margin);
+/// overlap; {-1, -1} if none. Part `released` (a catapult's projectile, whose
+/// joint breaks) may not overlap its parent either: once free, the contact
+/// would push it out at the solver's correcting speed, a launch by
+/// constraint error (docs/physics.md).
+std::pair<int, int> find_self_intersection(const CreatureModel& m, double margin, int released = -1);
 
 }  // namespace bx

@@ -129,6 +129,21 @@ TEST(Develop, SelfIntersectionIsNotViableAndNamesTheParts) {
   EXPECT_NE(d.reason.find("self-intersection: parts"), std::string::npos) << d.reason;
 }
 
+// evolved (chaumont2007-catapult-small seed 2): the projectile sits inside the
+// body it hangs from; released, the contact pushed it out at the solver's
+// correcting speed, and the throw grew as the step shrank
+TEST(Develop, ACatapultsProjectileMayNotStartInsideTheBodyItIsReleasedFrom) {
+  Genome g = load("embedded_projectile.json");
+  Development d = develop(g);
+  EXPECT_FALSE(d.viable());
+  EXPECT_EQ(d.reason, "self-intersection: parts 0 (gene 0) and 5 (gene 5) overlap");
+  // the same body without the release: parts joined for good may overlap
+  g.catapult.reset();
+  EXPECT_TRUE(develop(g).viable());
+  // a projectile that rests on its arm is fine
+  EXPECT_TRUE(develop(load("catapult.json")).viable());
+}
+
 TEST(Develop, TooManyPartsIsNotViable) {
   Genome g = load("sims_recursive.json");
   g.nodes[0].recursive_limit = 40;

@@ -211,39 +211,19 @@ TEST(ThrowingEval, TheSpeedTestDiscardsAThrowFasterThanTheThreshold) {
   EXPECT_LT(fast.seconds, fine.seconds);
 }
 
-TEST(ThrowingEval, AThrowThatStretchedAJointOnQuickStepIsShortOnTheExactSolver) {
-  // An evolved catapult (chaumont2007-catapult, seed 101, before the
-  // presets bounded joint gaps): its tiny arm whips on a hinge whose anchors
-  // drifted 0.2 m apart under QuickStep, and the stretched joint slung the
-  // projectile 35 m. The exact solver holds the joint; the throw is short.
+TEST(ThrowingEval, AnEvolvedCatapultWhoseProjectileStartsInsideItsBodyIsRefusedAtBirth) {
+  // An evolved catapult (chaumont2007-catapult, seed 101): under QuickStep its
+  // tiny arm whipped on a hinge whose anchors drifted 0.2 m apart and slung
+  // the projectile 35 m; the exact solver held the joint. Its projectile also
+  // starts inside the root it hangs from, as did the bests of the three
+  // catapult-small seeds: released, the contact pushed it out at the solver's
+  // correcting speed (their throws grew as the step shrank, docs/physics.md
+  // cause 14). Development now refuses it.
   auto g = load_genome(std::string(BESTIARY_SOURCE_DIR) + "/tests/creatures/catapult_stretched_joint.json");
   ASSERT_TRUE(g.ok()) << g.error();
-  const Preset* preset = find_preset("chaumont2007-catapult");
-  ASSERT_NE(preset, nullptr);
-  auto run = read_run_config(preset->text, preset->name);
-  ASSERT_TRUE(run.ok()) << run.error();
-  SimConfig cfg = run->sim;
-  ASSERT_EQ(cfg.physics.solver, Solver::Exact);
-  CreatureModel m = grow(*g);
-  const std::uint64_t seed = 9012069040851672854ull;  // its evaluation in that run
-  EvalResult r = evaluate(m, cfg, seed);
-  ASSERT_FALSE(r.failed) << r.failure;
-  EXPECT_LT(r.diagnostics.max_joint_gap, 0.01);
-  EXPECT_LT(r.fitness, 10.0);
-  // QuickStep's 20 iterations (and ODE's friction, as when it was evolved):
-  // the joint gives, and the joint-gap test catches it
-  cfg.physics.solver = Solver::QuickStep;
-  cfg.physics.friction_bound = FrictionBound::Ode;
-  EvalResult quick = evaluate(m, cfg, seed);
-  ASSERT_TRUE(quick.failed);
-  EXPECT_NE(quick.failure.find("above max_joint_gap 0.05"), std::string::npos) << quick.failure;
-  // unchecked, it throws far (one trial: another blows up outright)
-  cfg.physics.max_joint_gap = 100;
-  cfg.trials = 1;
-  EvalResult loose = evaluate(m, cfg, seed);
-  ASSERT_FALSE(loose.failed) << loose.failure;
-  EXPECT_GT(loose.diagnostics.max_joint_gap, 0.1);
-  EXPECT_GT(loose.fitness, 3 * r.fitness);
+  Development d = develop(*g);
+  EXPECT_FALSE(d.viable());
+  EXPECT_EQ(d.reason, "self-intersection: parts 0 (gene 0) and 3 (gene 3) overlap");
 }
 
 TEST(ThrowingEval, TrialsAverageTheThrowsOfSeveralSeeds) {
