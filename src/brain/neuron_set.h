@@ -1,4 +1,4 @@
-// Neuron function sets (SYSTEMS.md S0): the functions a dialect's neurons may
+// Neuron function sets (docs/papers.md S0): the functions a dialect's neurons may
 // compute, with their arity, parameters and per-neuron state. Pure functions
 // of (inputs, params, state, time): no engine, no genome.
 #pragma once

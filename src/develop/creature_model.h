@@ -1,6 +1,6 @@
 // CreatureModel: what development compiles a genome into. Immutable after
 // construction and shared by every evaluation of the creature; the simulation
-// reads only this, never the genome (DESIGN.md: model vs data).
+// reads only this, never the genome (docs/design.md: model vs data).
 #pragma once
 
 #include <cstdint>

@@ -1,4 +1,4 @@
-// Development: the compiler from Genome to CreatureModel (DESIGN.md).
+// Development: the compiler from Genome to CreatureModel (docs/design.md).
 #pragma once
 
 #include <optional>

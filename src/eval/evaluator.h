@@ -1,6 +1,6 @@
 // Evaluators: how a batch of genomes gets evaluated. The evolutionary
 // algorithms hand a batch to an Evaluator and never touch processes
-// themselves (DESIGN.md). Every evaluator gives identical results for the
+// themselves (docs/design.md). Every evaluator gives identical results for the
 // same jobs, because an evaluation is a pure function of (genome, config, seed).
 #pragma once
 

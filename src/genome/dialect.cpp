@@ -25,7 +25,7 @@ DialectRules sims1994_rules() {
       .max_genes = 0,      // no limit on genes: the graph grows and shrinks by mutation
       .max_parts = 100,    // our default; Sims discarded creatures above a configured maximum
                            // number of parts (as chaumont2007 sec. 5.5 recounts)
-      .tree_only = false,  // graph with multiple and reflexive edges (SYSTEMS.md S0)
+      .tree_only = false,  // graph with multiple and reflexive edges (docs/papers.md S0)
       // Sims used boxes only; spheres, capsules and cylinders are our extension
       .shapes = {Shape::Box, Shape::Sphere, Shape::Capsule, Shape::Cylinder},
       // Sims' rigid, revolute, twist, universal, bend-twist, twist-bend and spherical

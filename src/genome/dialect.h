@@ -1,4 +1,4 @@
-// Dialects: the constraints each paper puts on the genome (SYSTEMS.md S0-S2).
+// Dialects: the constraints each paper puts on the genome (docs/papers.md S0-S2).
 #pragma once
 
 #include <optional>

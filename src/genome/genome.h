@@ -1,4 +1,4 @@
-// The Sims directed-graph genome (SYSTEMS.md S0): morphology nodes joined by
+// The Sims directed-graph genome (docs/papers.md S0): morphology nodes joined by
 // connections (edges), each node carrying its part's neurons, sensors and
 // effectors. This is what evolution edits; development compiles it into an
 // immutable CreatureModel and the simulation never reads it.

@@ -1,4 +1,4 @@
-// Genetic operators per dialect (SYSTEMS.md S0-S2): random creation,
+// Genetic operators per dialect (docs/papers.md S0-S2): random creation,
 // mutation, crossover and grafting. Every constant lives in OperatorDef, with
 // its defaults in one place (default_operators); docs/operators.md describes
 // each operator, every constant's source and the repair rules.

@@ -1,5 +1,5 @@
 // Definitions of the physics world and the motors, with their defaults in one
-// place (DESIGN.md: definition structs). Config files map onto these; presets
+// place (docs/design.md: definition structs). Config files map onto these; presets
 // and dialects override them.
 #pragma once
 

@@ -417,7 +417,7 @@ World::World(const PhysicsDef& def) : impl_(std::make_unique<Impl>()) {
     dWorldSetContactMaxCorrectingVel(w.world, def.contact_max_correcting_vel);
   dWorldSetContactSurfaceLayer(w.world, def.contact_surface_layer);
   dWorldSetAutoDisableFlag(w.world, 0);
-  // each world its own threading implementation (DESIGN.md)
+  // each world its own threading implementation (docs/design.md)
   w.threading = dThreadingAllocateSelfThreadedImplementation();
   dWorldSetStepThreadingImplementation(w.world, dThreadingImplementationGetFunctions(w.threading),
                                        w.threading);
