@@ -7,14 +7,35 @@
 //   node render.mjs --html PAGE --out FILE --format mp4|gif --frames N --fps F
 //                   --width W --height H [--chromium PATH] [--ffmpeg PATH]
 //
-// Frame i shows time i / F, so the video lasts N / F seconds. Errors end in one
-// line on stderr and exit code 1.
+// Frame i shows time i / F, so the video lasts N / F seconds. Progress goes to
+// stdout, one line after each 5% of the frames or PROGRESS_SECONDS, whichever
+// comes first, and after the last: "frame 30/300 (10%)  elapsed 4s  left 37s".
+// Errors end in one line on stderr and exit code 1.
 import { spawn } from 'node:child_process';
 import { openViewer } from './tools/browser.mjs';
 import { isMain } from './tools/is_main.mjs';
 
 /** Quality of the frames' JPEG screenshots. */
 const JPEG_QUALITY = 95;
+
+/** Longest wait between two progress lines, in seconds. */
+const PROGRESS_SECONDS = 2;
+
+/** A duration as `bestiary run` writes it: 37s, 4m05s, 1h02m ("?" if unknown). */
+export function duration(s) {
+  if (!Number.isFinite(s) || s < 0) return '?';
+  const whole = Math.floor(s);
+  if (s < 60) return `${Math.round(s)}s`;
+  const two = (n) => String(n).padStart(2, '0');
+  if (s < 3600) return `${Math.floor(whole / 60)}m${two(whole % 60)}s`;
+  return `${Math.floor(whole / 3600)}h${two(Math.floor((whole % 3600) / 60))}m`;
+}
+
+/** One progress line: frames done of the total, time elapsed and, at the frames' pace so far, left. */
+export function progressLine(done, total, elapsed) {
+  const left = done > 0 ? (elapsed / done) * (total - done) : NaN;
+  return `frame ${done}/${total} (${Math.floor((100 * done) / total)}%)  elapsed ${duration(elapsed)}  left ${duration(left)}`;
+}
 
 /** ffmpeg's arguments: JPEG frames on stdin, H.264 mp4 or a palette-optimised gif out. */
 export function ffmpegArgs({ format, fps, out }) {
@@ -71,11 +92,19 @@ async function main() {
   const { browser, page } = await openViewer(a.html, { width: a.width, height: a.height, chromium: a.chromium });
   try {
     await page.evaluate(() => window.bestiary.setRenderMode(true));
+    const t0 = performance.now();
+    let shownFrame = 0, shownAt = t0;
     for (let i = 0; i < a.frames; ++i) {
       await page.evaluate((t) => window.bestiary.renderFrame(t), i / a.fps);
       const jpeg = await page.screenshot({ type: 'jpeg', quality: JPEG_QUALITY });
       if (ffmpeg.exitCode !== null) break;
       await write(ffmpeg.stdin, jpeg).catch(() => {});
+      const frames = i + 1, now = performance.now();
+      if (frames === a.frames || frames - shownFrame >= a.frames / 20 || now - shownAt >= PROGRESS_SECONDS * 1000) {
+        process.stdout.write(`${progressLine(frames, a.frames, (now - t0) / 1000)}\n`);
+        shownFrame = frames;
+        shownAt = now;
+      }
     }
   } finally {
     await browser.close();

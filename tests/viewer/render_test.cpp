@@ -1,5 +1,5 @@
 // `bestiary render`: a playable video of the requested size and length
-// (ffprobe), in mp4 and gif, and bad input as one error line, exit 2 and no
+// (ffprobe), in mp4 and gif, with progress lines, and bad input as one error line, exit 2 and no
 // file, not even a partial one.
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -59,6 +59,9 @@ TEST_F(RenderCommand, GifHasTheRequestedSizeAndLength) {
   EXPECT_EQ(s["nb_read_frames"], "15");
   double seconds = std::stod(p["format"]["duration"].get<std::string>());
   EXPECT_NEAR(seconds, 1.5, 1.0 / 10);
+  // output not a terminal: whole progress lines, at least the last one, no \r
+  EXPECT_NE(r.out.find("\nframe 15/15 (100%)  elapsed "), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find('\r'), std::string::npos) << r.out;
 }
 
 // every kind of bad input: exit 2, exactly one line on stderr, no video

@@ -1,7 +1,7 @@
-// The video encoder's command line.
+// The video encoder's command line, and the progress lines.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { ffmpegArgs } from '../render.mjs';
+import { duration, ffmpegArgs, progressLine } from '../render.mjs';
 
 test('mp4: H.264 in yuv420p, playable everywhere', () => {
   const a = ffmpegArgs({ format: 'mp4', fps: 25, out: 'x.tmp' });
@@ -18,4 +18,17 @@ test('gif: a palette made from the frames themselves', () => {
 
 test('other formats are refused', () => {
   assert.throws(() => ffmpegArgs({ format: 'avi', fps: 10, out: 'z' }), /unknown format "avi"/);
+});
+
+test('progress: frames done of the total, elapsed and left at the pace so far', () => {
+  assert.equal(progressLine(30, 300, 4.1), 'frame 30/300 (10%)  elapsed 4s  left 37s');
+  assert.equal(progressLine(300, 300, 41), 'frame 300/300 (100%)  elapsed 41s  left 0s');
+  assert.equal(progressLine(1, 3, 0.2), 'frame 1/3 (33%)  elapsed 0s  left 0s');
+});
+
+test('durations read as bestiary run writes them', () => {
+  assert.equal(duration(59.4), '59s');
+  assert.equal(duration(65), '1m05s');
+  assert.equal(duration(3725), '1h02m');
+  assert.equal(duration(NaN), '?');
 });
