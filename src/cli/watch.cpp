@@ -51,8 +51,8 @@ struct WatchArgs {
   CreatureFlags flags;
   std::string out;
   int width = 1280, height = 720;
-  int fps = 30;
-  bool quiet = false;  ///< render: no progress output
+  std::optional<int> fps;  ///< render: default 30 for mp4, 15 for gif
+  bool quiet = false;      ///< render: no progress output
 };
 
 /// What simulating gave: the page's entry and the result.
@@ -287,7 +287,8 @@ int cmd_render(const WatchArgs& a) {
     if (format == "mp4" && v % 2 != 0)
       return fail(std::string(flag) + ": an mp4 needs an even number of pixels, got " + std::to_string(v));
   }
-  const int fps = a.fps;
+  // a GIF compresses far less than H.264: half an mp4's frames keep it small and are smooth enough
+  const int fps = a.fps.value_or(format == "gif" ? 15 : 30);
   if (fps < 1 || fps > 60) return fail("--fps: expected frames per second in [1, 60], got " + std::to_string(fps));
   if (Status s = make_parent_dir("--out", a.out); !s) return fail(s.error());
   auto tools = find_tools();
@@ -427,7 +428,7 @@ void add_watch_commands(CLI::App& app) {
   r->add_option("--out", render.out, "Video file to write: .mp4 or .gif")->required();
   r->add_option("--width", render.width, "Width in pixels")->default_val(1280);
   r->add_option("--height", render.height, "Height in pixels")->default_val(720);
-  r->add_option("--fps", render.fps, "Frames per second")->default_val(30);
+  r->add_option("--fps", render.fps, "Frames per second (default 30 for mp4, 15 for gif)");
   r->add_flag("--quiet", render.quiet, "No progress output");
   r->callback([] { std::exit(cmd_render(render)); });
 

@@ -1,18 +1,24 @@
 // The video encoder's command line, and the progress lines.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { duration, ffmpegArgs, progressLine } from '../render.mjs';
+import { duration, ffmpegArgs, progressLine, screenshotType } from '../render.mjs';
 
-test('mp4: H.264 in yuv420p, playable everywhere', () => {
+test('mp4: H.264 in yuv420p, playable everywhere, from JPEG screenshots', () => {
   const a = ffmpegArgs({ format: 'mp4', fps: 25, out: 'x.tmp' });
+  assert.equal(screenshotType('mp4'), 'jpeg');
+  assert.deepEqual(a.slice(a.indexOf('-c:v'), a.indexOf('-c:v') + 2), ['-c:v', 'mjpeg']);
   assert.deepEqual(a.slice(a.indexOf('-framerate'), a.indexOf('-framerate') + 2), ['-framerate', '25']);
   for (const s of ['libx264', 'yuv420p', '+faststart']) assert.ok(a.includes(s), s);
   assert.deepEqual(a.slice(-3), ['-f', 'mp4', 'x.tmp']);
 });
 
-test('gif: a palette made from the frames themselves', () => {
+test('gif: a small palette made from the frames themselves, from lossless screenshots', () => {
   const a = ffmpegArgs({ format: 'gif', fps: 10, out: 'y.tmp' });
-  assert.ok(a.some((s) => s.includes('palettegen') && s.includes('paletteuse')));
+  assert.equal(screenshotType('gif'), 'png');
+  assert.deepEqual(a.slice(a.indexOf('-c:v'), a.indexOf('-c:v') + 2), ['-c:v', 'png']);
+  const filter = a[a.indexOf('-filter_complex') + 1];
+  for (const s of ['palettegen=max_colors=64', 'stats_mode=diff', 'paletteuse', 'diff_mode=rectangle'])
+    assert.ok(filter.includes(s), s);
   assert.deepEqual(a.slice(-3), ['-f', 'gif', 'y.tmp']);
 });
 
