@@ -295,7 +295,6 @@ int cmd_render(const WatchArgs& a) {
   if (!tools) return fail(tools.error());
 
   // simulate, and write the page into a fresh temporary folder
-  if (!c->settings.empty()) std::printf("%s\n", c->settings.c_str());
   if (!a.quiet) std::printf("simulating %s ...\n", c->label.c_str());
   std::fflush(stdout);
   auto w = simulate(*c);
