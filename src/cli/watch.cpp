@@ -4,6 +4,7 @@
 // does: same loading, config overlay, development and evaluation.
 #include <CLI/CLI.hpp>
 #include <fcntl.h>
+#include <poll.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -11,11 +12,12 @@
 #include <algorithm>
 #include <cerrno>
 #include <cctype>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
+#include <functional>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -48,7 +50,9 @@ struct WatchArgs {
   std::string genome;  ///< a genome file, a run's creature, or (show) a run
   CreatureFlags flags;
   std::string out;
-  int width = 1280, height = 720, fps = 30;
+  int width = 1280, height = 720;
+  std::optional<int> fps;  ///< render: default 30 for mp4, 15 for gif
+  bool quiet = false;      ///< render: no progress output
 };
 
 /// What simulating gave: the page's entry and the result.
@@ -182,34 +186,84 @@ Result<Tools> find_tools() {
   return t;
 }
 
-// runs argv with stdout discarded and stderr to `err_file`; the exit code, or
-// -1 if it could not start or died of a signal
-int run(const std::vector<std::string>& argv, const std::string& err_file) {
+/// How a child program ended: its exit code (-1 if it could not start or died
+/// of a signal) and the last non-empty line it wrote on stderr, its own
+/// explanation of a failure.
+struct Ended {
+  int code = -1;
+  std::string last_err;
+};
+
+// Runs argv with stdin from /dev/null, reading its stdout and stderr through
+// pipes while it runs: each stdout line goes to `on_line`. One poll loop, no
+// threads; it stops once the child has exited and its pipes are drained, even
+// if a grandchild still holds them open.
+Ended run(const std::vector<std::string>& argv, const std::function<void(const std::string&)>& on_line) {
   std::vector<char*> args;
   for (const auto& s : argv) args.push_back(const_cast<char*>(s.c_str()));
   args.push_back(nullptr);
+  int out[2], err[2];
+  if (::pipe2(out, O_CLOEXEC) != 0) return {};
+  if (::pipe2(err, O_CLOEXEC) != 0) {
+    ::close(out[0]);
+    ::close(out[1]);
+    return {};
+  }
   posix_spawn_file_actions_t fa;
   posix_spawn_file_actions_init(&fa);
   posix_spawn_file_actions_addopen(&fa, 0, "/dev/null", O_RDONLY, 0);
-  posix_spawn_file_actions_addopen(&fa, 1, "/dev/null", O_WRONLY, 0);
-  posix_spawn_file_actions_addopen(&fa, 2, err_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_adddup2(&fa, out[1], 1);
+  posix_spawn_file_actions_adddup2(&fa, err[1], 2);
   pid_t pid;
   int rc = posix_spawn(&pid, args[0], &fa, nullptr, args.data(), environ);
   posix_spawn_file_actions_destroy(&fa);
-  if (rc != 0) return -1;
-  int status = 0;
-  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  ::close(out[1]);
+  ::close(err[1]);
+  Ended end;
+  if (rc != 0) {
+    ::close(out[0]);
+    ::close(err[0]);
+    return end;
   }
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
 
-// the last non-empty line of a file: a failed child's own explanation
-std::string last_line(const std::string& path) {
-  std::ifstream in(path);
-  std::string line, last;
-  while (std::getline(in, line))
-    if (line.find_first_not_of(" \t\r") != std::string::npos) last = line;
-  return last;
+  // whole lines: stdout's to on_line, stderr's non-empty ones kept as the last
+  std::string pending[2];
+  auto take = [&](int i, const std::string& line) {
+    if (i == 0) on_line(line);
+    else if (line.find_first_not_of(" \t\r") != std::string::npos) end.last_err = line;
+  };
+  pollfd fds[2] = {{out[0], POLLIN, 0}, {err[0], POLLIN, 0}};
+  bool exited = false;
+  int status = 0;
+  while (fds[0].fd >= 0 || fds[1].fd >= 0) {
+    int n = ::poll(fds, 2, exited ? 0 : 500);
+    if (n < 0 && errno != EINTR) break;
+    if (n == 0 && exited) break;  // drained
+    for (int i = 0; i < 2 && n > 0; ++i) {
+      if (fds[i].fd < 0 || !fds[i].revents) continue;
+      char buf[4096];
+      ssize_t got = ::read(fds[i].fd, buf, sizeof buf);
+      if (got < 0 && errno == EINTR) continue;
+      if (got <= 0) {
+        ::close(fds[i].fd);
+        fds[i].fd = -1;
+        continue;
+      }
+      pending[i].append(buf, static_cast<std::size_t>(got));
+      for (std::size_t nl; (nl = pending[i].find('\n')) != std::string::npos; pending[i].erase(0, nl + 1))
+        take(i, pending[i].substr(0, nl));
+    }
+    if (!exited && ::waitpid(pid, &status, WNOHANG) == pid) exited = true;
+  }
+  for (int i = 0; i < 2; ++i) {
+    if (fds[i].fd >= 0) ::close(fds[i].fd);
+    if (!pending[i].empty()) take(i, pending[i]);
+  }
+  if (!exited)
+    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+    }
+  end.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return end;
 }
 
 std::string lower(std::string s) {
@@ -233,14 +287,15 @@ int cmd_render(const WatchArgs& a) {
     if (format == "mp4" && v % 2 != 0)
       return fail(std::string(flag) + ": an mp4 needs an even number of pixels, got " + std::to_string(v));
   }
-  if (a.fps < 1 || a.fps > 60) return fail("--fps: expected frames per second in [1, 60], got " + std::to_string(a.fps));
+  // a GIF compresses far less than H.264: half an mp4's frames keep it small and are smooth enough
+  const int fps = a.fps.value_or(format == "gif" ? 15 : 30);
+  if (fps < 1 || fps > 60) return fail("--fps: expected frames per second in [1, 60], got " + std::to_string(fps));
   if (Status s = make_parent_dir("--out", a.out); !s) return fail(s.error());
   auto tools = find_tools();
   if (!tools) return fail(tools.error());
 
   // simulate, and write the page into a fresh temporary folder
-  if (!c->settings.empty()) std::printf("%s\n", c->settings.c_str());
-  std::printf("simulating %s ...\n", c->label.c_str());
+  if (!a.quiet) std::printf("simulating %s ...\n", c->label.c_str());
   std::fflush(stdout);
   auto w = simulate(*c);
   if (!w) return fail(w.error());
@@ -259,20 +314,42 @@ int cmd_render(const WatchArgs& a) {
 
   // the page, frame by frame, through ffmpeg into OUT.tmp; renamed when whole
   double seconds = w->result.seconds;
-  long frames = std::max(1L, std::lround(seconds * a.fps));
+  long frames = std::max(1L, std::lround(seconds * fps));
   std::string tmp = a.out + ".tmp";
-  std::string err = (work / "render.err").string();
-  std::printf("rendering %ld frames (%d x %d, %d fps)...\n", frames, a.width, a.height, a.fps);
+  if (!a.quiet) std::printf("rendering %ld frames (%d x %d, %d fps)...\n", frames, a.width, a.height, fps);
   std::fflush(stdout);
-  int rc = run({tools->node, tools->script, "--html", page, "--out", tmp, "--format", format,
-                "--frames", std::to_string(frames), "--fps", std::to_string(a.fps),
-                "--width", std::to_string(a.width), "--height", std::to_string(a.height),
-                "--chromium", tools->chromium, "--ffmpeg", tools->ffmpeg},
-               err);
-  if (rc != 0) {
+
+  // render.mjs's progress lines: one updating line on a terminal, else one
+  // every PROGRESS_SECONDS and the last
+  constexpr auto PROGRESS_SECONDS = std::chrono::seconds(10);
+  const bool tty = !a.quiet && ::isatty(STDOUT_FILENO);
+  const std::string last_frame = "frame " + std::to_string(frames) + "/";
+  auto shown = std::chrono::steady_clock::now();
+  bool open_line = false;
+  auto progress = [&](const std::string& line) {
+    if (a.quiet) return;
+    auto now = std::chrono::steady_clock::now();
+    if (tty) {
+      std::printf("\r\033[K%s", line.c_str());
+      open_line = true;
+    } else if (now - shown >= PROGRESS_SECONDS || line.rfind(last_frame, 0) == 0) {
+      std::printf("%s\n", line.c_str());
+      shown = now;
+    }
+    std::fflush(stdout);
+  };
+  Ended end = run({tools->node, tools->script, "--html", page, "--out", tmp, "--format", format,
+                   "--frames", std::to_string(frames), "--fps", std::to_string(fps),
+                   "--width", std::to_string(a.width), "--height", std::to_string(a.height),
+                   "--chromium", tools->chromium, "--ffmpeg", tools->ffmpeg},
+                  progress);
+  if (open_line) std::printf("\n");
+  std::fflush(stdout);
+  if (end.code != 0) {
     std::remove(tmp.c_str());
-    std::string why = last_line(err);
-    return fail("render: " + (why.empty() ? "node " + tools->script + " failed (exit " + std::to_string(rc) + ")" : why));
+    return fail("render: " + (end.last_err.empty()
+                                  ? "node " + tools->script + " failed (exit " + std::to_string(end.code) + ")"
+                                  : end.last_err));
   }
   std::error_code ec;
   fs::rename(tmp, a.out, ec);
@@ -282,7 +359,7 @@ int cmd_render(const WatchArgs& a) {
   }
   print_result(*c, w->result);
   std::printf("video written to %s (%ld frames, %.2f s)\n", a.out.c_str(), frames,
-              static_cast<double>(frames) / a.fps);
+              static_cast<double>(frames) / fps);
   return 0;
 }
 
@@ -317,17 +394,16 @@ int cmd_plot(const WatchArgs& a) {
     fs::create_directories(tmp);
     if (Status s = write_file_atomic((tmp / "plot.svg").string(), svg); !s) return fail(s.error());
     std::string png = a.out + ".tmp.png";
-    int rc = run({*chromium, "--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
-                  "--disable-background-networking", "--disable-component-update", "--disable-sync",
-                  "--hide-scrollbars", "--user-data-dir=" + (tmp / "profile").string(),
-                  "--window-size=" + std::to_string(a.width) + "," + std::to_string(a.height),
-                  "--screenshot=" + png, "file://" + (tmp / "plot.svg").string()},
-                 (tmp / "chromium.log").string());
-    std::string why = last_line((tmp / "chromium.log").string());
+    Ended end = run({*chromium, "--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
+                     "--disable-background-networking", "--disable-component-update", "--disable-sync",
+                     "--hide-scrollbars", "--user-data-dir=" + (tmp / "profile").string(),
+                     "--window-size=" + std::to_string(a.width) + "," + std::to_string(a.height),
+                     "--screenshot=" + png, "file://" + (tmp / "plot.svg").string()},
+                    [](const std::string&) {});
     fs::remove_all(tmp);
-    if (rc != 0 || !fs::exists(png)) {
+    if (end.code != 0 || !fs::exists(png)) {
       fs::remove(png);
-      return fail("plot: chromium failed to render the PNG: " + why);
+      return fail("plot: chromium failed to render the PNG: " + end.last_err);
     }
     fs::rename(png, a.out);
   }
@@ -351,7 +427,8 @@ void add_watch_commands(CLI::App& app) {
   r->add_option("--out", render.out, "Video file to write: .mp4 or .gif")->required();
   r->add_option("--width", render.width, "Width in pixels")->default_val(1280);
   r->add_option("--height", render.height, "Height in pixels")->default_val(720);
-  r->add_option("--fps", render.fps, "Frames per second")->default_val(30);
+  r->add_option("--fps", render.fps, "Frames per second (default 30 for mp4, 15 for gif)");
+  r->add_flag("--quiet", render.quiet, "No progress output");
   r->callback([] { std::exit(cmd_render(render)); });
 
   static WatchArgs plot;

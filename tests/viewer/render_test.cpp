@@ -1,13 +1,17 @@
 // `bestiary render`: a playable video of the requested size and length
-// (ffprobe), in mp4 and gif, and bad input as one error line, exit 2 and no
-// file, not even a partial one.
+// (ffprobe), in mp4 and gif, with progress lines; a run's individual replayed
+// as scored; and bad input as one error line, exit 2 and no file, not even a
+// partial one.
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <cstdlib>
+#include <sstream>
 #include <string>
 
+#include "evolve/run.h"
+#include "io/run_store.h"
 #include "support/run_command.h"
 
 namespace {
@@ -45,10 +49,11 @@ TEST_F(RenderCommand, Mp4HasTheRequestedSizeAndLength) {
   EXPECT_NEAR(seconds, 2.0, 1.0 / 10);
 }
 
+// and 15 fps unless told otherwise
 TEST_F(RenderCommand, GifHasTheRequestedSizeAndLength) {
   fs::path out = dir / "pair.gif";
   Outcome r = bestiary("render " + creature("hinged_pair.json") + " --out " + out.string() +
-                       " --seconds 1.5 --width 200 --height 150 --fps 10");
+                       " --seconds 1 --width 200 --height 150");
   ASSERT_EQ(r.code, 0) << r.err;
   json p = probe(out);
   ASSERT_FALSE(p.is_null());
@@ -58,7 +63,46 @@ TEST_F(RenderCommand, GifHasTheRequestedSizeAndLength) {
   EXPECT_EQ(s["height"], 150);
   EXPECT_EQ(s["nb_read_frames"], "15");
   double seconds = std::stod(p["format"]["duration"].get<std::string>());
-  EXPECT_NEAR(seconds, 1.5, 1.0 / 10);
+  EXPECT_NEAR(seconds, 1.0, 1.0 / 15);
+  // output not a terminal: whole progress lines, at least the last one, no \r
+  EXPECT_NE(r.out.find("\nframe 15/15 (100%)  elapsed "), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find('\r'), std::string::npos) << r.out;
+}
+
+// a run's individual, RUN_DIR:ID: the fitness render reports is the stored one,
+// bit for bit; --quiet leaves out the progress
+TEST_F(RenderCommand, ARunsIndividualHasItsStoredFitness) {
+  fs::path run = dir / "run";
+  Outcome r = bestiary("run quick --out " + run.string() +
+                       " --set evolution.population=12 --set evolution.generations=2 --set task.seconds=1"
+                       " --workers 0 --quiet");
+  ASSERT_EQ(r.code, 0) << r.err;
+  auto store = bx::RunStore::open(bx::run_db_path(run.string()));
+  ASSERT_TRUE(store.ok()) << store.error();
+  auto gens = (*store)->generations();
+  ASSERT_EQ(gens.size(), 2u);
+  std::string id = std::to_string(gens.back().best_id);
+
+  fs::path out = dir / "one.gif";
+  r = bestiary("render " + run.string() + ":" + id + " --out " + out.string() +
+               " --width 64 --height 48 --fps 5 --quiet");
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::istringstream lines(r.out);
+  int as_scored = 0;
+  for (std::string line; std::getline(lines, line);) {
+    const std::string end = "(the stored fitness, bit for bit)";
+    if (line.size() >= end.size() && line.compare(line.size() - end.size(), end.size(), end) == 0) {
+      EXPECT_NE(line.find("individual " + id + " "), std::string::npos) << line;
+      ++as_scored;
+    }
+  }
+  EXPECT_EQ(as_scored, 1) << r.out;
+  // the settings, said once
+  EXPECT_NE(r.out.find("as scored: "), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("as scored: "), r.out.rfind("as scored: ")) << r.out;
+  EXPECT_NE(r.out.find("video written to " + out.string()), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("frame "), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("rendering"), std::string::npos) << r.out;
 }
 
 // every kind of bad input: exit 2, exactly one line on stderr, no video
