@@ -202,7 +202,10 @@ Result<Creature> from_genome(const std::string& path, const CreatureFlags& f) {
       return c;
     }
   }
-  std::string cfg_text, source = path;
+  // --config replaces the config, --seed the seed; with a provenance, the
+  // other stays the scored one
+  std::string cfg_text = scored_by.empty() ? "" : str("config");
+  std::string source = scored_by.empty() ? path : path + " (provenance.config)";
   if (!f.config.empty()) {
     auto t = read_file(f.config);
     if (!t) return Error{t.error()};
@@ -212,10 +215,11 @@ Result<Creature> from_genome(const std::string& path, const CreatureFlags& f) {
   auto cfg = genome_config(c.genome, cfg_text, source, f.set);
   if (!cfg) return Error{cfg.error()};
   c.cfg = *cfg;
-  c.seed = f.seed.value_or(1);
+  c.seed = f.seed.value_or(scored_by.empty() ? 1 : *whole<std::uint64_t>(str("seed"), 0, UINT64_MAX));
   if (!scored_by.empty())
-    c.settings = "not as scored: " + std::string(f.config.empty() ? "--seed" : "--config") + " given (" + scored_by +
-                 " was scored with its run's config and seed " + str("seed") + ")";
+    c.settings = "not as scored: " +
+                 std::string(f.config.empty() ? "--seed" : f.seed ? "--config and --seed" : "--config") + " given (" +
+                 scored_by + " was scored with its run's config and seed " + str("seed") + ")";
   if (Status s = apply_seconds(c, f.seconds); !s) return Error{s.error()};
   return c;
 }

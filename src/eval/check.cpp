@@ -12,6 +12,12 @@ namespace {
 // the stream of check seeds (evolution.cpp's streams are 1-4, trials' 5)
 constexpr std::uint64_t kCheckStream = 6;
 
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  std::size_t n = v.size();
+  return n == 0 ? 0 : n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
 std::string fixed(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.3g", v);
@@ -40,23 +46,36 @@ CheckReport check_creature(const CreatureModel& m, const SimConfig& cfg, std::ui
   std::vector<double> seeds;
   for (int k = 1; k <= def.other_seeds; ++k)
     seeds.push_back(run("seed " + std::to_string(k + 1), cfg, check_seed(seed, k)));
-  if (!seeds.empty()) {
-    std::sort(seeds.begin(), seeds.end());
-    std::size_t n = seeds.size();
-    rep.median_other_seeds = n % 2 ? seeds[n / 2] : 0.5 * (seeds[n / 2 - 1] + seeds[n / 2]);
-  }
-  // convergence: smaller steps, a better solved step
+  if (!seeds.empty()) rep.median_other_seeds = median(seeds);
+
+  // convergence: smaller steps, a better solved step; with converge_seeds > 1
+  // each by its median over those seeds against the median at dt over them
+  const int ks = std::max(1, def.converge_seeds);
+  std::vector<double> at_dt{scored};
+  for (int k = 1; k < ks; ++k)
+    at_dt.push_back(k <= def.other_seeds ? rep.variants[k - 1].result.fitness
+                                         : evaluate(m, cfg, check_seed(seed, k)).fitness);
+  const double base = median(at_dt);
   std::vector<std::pair<std::string, double>> converged;
+  auto converge = [&](const std::string& name, const SimConfig& c) {
+    if (ks == 1) return converged.push_back({name, run(name, c, seed)});
+    CheckVariant v{name + " (median of " + std::to_string(ks) + " seeds)", evaluate(m, c, seed), 0};
+    std::vector<double> f{v.result.fitness};
+    for (int k = 1; k < ks; ++k) f.push_back(evaluate(m, c, check_seed(seed, k)).fitness);
+    v.result.fitness = median(f);
+    v.ratio = base > 0 ? v.result.fitness / base : 0;
+    rep.variants.push_back(v);
+    converged.push_back({v.name, v.ratio});
+  };
   for (int div : {2, 4}) {
     SimConfig c = cfg;
     c.physics.dt /= div;
-    std::string name = "dt/" + std::to_string(div);
-    converged.push_back({name, run(name, c, seed)});
+    converge("dt/" + std::to_string(div), c);
   }
   {
     SimConfig c = cfg;
     c.physics.solver_iterations *= 2;
-    converged.push_back({"2x iterations", run("2x iterations", c, seed)});
+    converge("2x iterations", c);
   }
   // the effectors held at their means: motion without a changing signal is
   // paid for by constraint error, not by the motors

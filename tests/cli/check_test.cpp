@@ -2,6 +2,10 @@
 // more iterations and clamped effectors, with a verdict in the exit code.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <map>
+#include <vector>
+
 #include "support/run_command.h"
 #include <nlohmann/json.hpp>
 #include <unistd.h>
@@ -55,6 +59,30 @@ TEST(Check, GatesAreConfigValues) {
   Outcome r = bestiary("check " + creature("pinned.json") +
                        " --set check.max_clamped=2 --set check.min_converged=0 --json");
   EXPECT_EQ(r.code, 0) << r.out << r.err;
+}
+
+TEST(Check, ConvergenceCanCompareMediansOverSeveralSeeds) {
+  // check.converge_seeds = 3: dt/2, dt/4 and twice the iterations each by their
+  // median over the scored seed and the first two others, against the median
+  // at dt over the same three (for chaotic tasks such as throws)
+  Outcome r = bestiary("check " + creature("catapult.json") + " --set check.converge_seeds=3 --json");
+  ASSERT_TRUE(r.code == 0 || r.code == 1) << r.err;
+  auto j = nlohmann::json::parse(r.out);
+  std::vector<double> at_dt{j["fitness"].get<double>()};
+  std::map<std::string, double> ratio;
+  for (const auto& v : j["variants"]) {
+    ratio[v["name"].get<std::string>()] = v["ratio"].get<double>();
+    if (v["name"] == "seed 2" || v["name"] == "seed 3") at_dt.push_back(v["fitness"].get<double>());
+  }
+  ASSERT_EQ(at_dt.size(), 3u);
+  std::sort(at_dt.begin(), at_dt.end());
+  ASSERT_TRUE(ratio.count("dt/2 (median of 3 seeds)")) << r.out;
+  ASSERT_TRUE(ratio.count("dt/4 (median of 3 seeds)")) << r.out;
+  // the exact solver has no iterations: twice as many change nothing, seed by seed
+  EXPECT_EQ(ratio["2x iterations (median of 3 seeds)"], 1.0) << r.out;
+  for (const auto& v : j["variants"])
+    if (v["name"] == "dt/2 (median of 3 seeds)")
+      EXPECT_DOUBLE_EQ(v["ratio"].get<double>(), v["fitness"].get<double>() / at_dt[1]);
 }
 
 TEST(Check, ARunsBestIsCheckedWithItsOwnConfigAndSeed) {

@@ -232,6 +232,8 @@ TEST_F(RunCli, ACreatureNamedInARunIsEvaluatedExactlyAsScored) {
   Outcome other = bestiary("simulate " + file.string() + " --seed 5");
   ASSERT_EQ(other.code, 0) << other.err;
   EXPECT_NE(other.out.find("not as scored: --seed given"), std::string::npos) << other.out;
+  // only the seed changes: the run's config (2 s evaluations; the dialect's are 10 s) stays
+  EXPECT_NE(other.out.find("simulated 2.00 s"), std::string::npos) << other.out;
   Outcome longer = bestiary("simulate " + run.string() + ":" + some + " --seconds 3");
   EXPECT_NE(longer.out.find("not as scored"), std::string::npos) << longer.out;
   EXPECT_EQ(longer.out.find("bit for bit"), std::string::npos) << longer.out;
