@@ -80,9 +80,11 @@ TEST(Check, ConvergenceCanCompareMediansOverSeveralSeeds) {
   ASSERT_TRUE(ratio.count("dt/4 (median of 3 seeds)")) << r.out;
   // the exact solver has no iterations: twice as many change nothing, seed by seed
   EXPECT_EQ(ratio["2x iterations (median of 3 seeds)"], 1.0) << r.out;
-  for (const auto& v : j["variants"])
-    if (v["name"] == "dt/2 (median of 3 seeds)")
+  for (const auto& v : j["variants"]) {
+    if (v["name"] == "dt/2 (median of 3 seeds)") {
       EXPECT_DOUBLE_EQ(v["ratio"].get<double>(), v["fitness"].get<double>() / at_dt[1]);
+    }
+  }
 }
 
 TEST(Check, ARunsBestIsCheckedWithItsOwnConfigAndSeed) {
