@@ -57,21 +57,13 @@ std::optional<T> whole(const std::string& s, T lo, T hi) {
   return v;
 }
 
-std::string seeds_text(std::uint64_t seed) { return std::to_string(seed); }
-
 std::string joined_sets(const std::vector<std::string>& set) {
   std::string out;
   for (const auto& s : set) out += (out.empty() ? "--set " : ", --set ") + s;
   return out;
 }
 
-Status apply_seconds(Creature& c, const std::optional<double>& seconds) {
-  if (!seconds) return Ok{};
-  if (!(*seconds > 0) || !std::isfinite(*seconds) || *seconds > 1e6)
-    return Error{"--seconds: expected a number in (0, 1e6], got " + exact_number(*seconds)};
-  task_seconds(c.cfg.sim) = *seconds;
-  return Ok{};
-}
+Status apply_seconds(Creature& c, const std::optional<double>& seconds) { return set_seconds(c.cfg.sim, seconds); }
 
 Result<Creature> from_run(const RunTarget& t, const CreatureFlags& f) {
   if (!f.config.empty())
@@ -121,7 +113,7 @@ Result<Creature> from_run(const RunTarget& t, const CreatureFlags& f) {
   c.run_dir = t.dir;
   c.scored_settings = f.set.empty() && !f.seconds;
   c.settings = c.scored_settings
-                   ? "as scored: the run's config and its evaluation seed " + seeds_text(c.seed)
+                   ? "as scored: the run's config and its evaluation seed " + std::to_string(c.seed)
                    : "not as scored: the run's config and seed with " +
                          joined_sets(f.set) + (f.seconds ? std::string(f.set.empty() ? "" : ", ") + "--seconds" : "");
   if (Status s = apply_seconds(c, f.seconds); !s) return Error{s.error()};
@@ -170,13 +162,14 @@ Result<Creature> from_genome(const std::string& path, const CreatureFlags& f) {
     // the genome reader accepted it, so it parses
   }
   std::string scored_by;  // "RUN individual N"
+  std::optional<std::uint64_t> prov_seed;
   auto str = [&](const char* k) {
     return prov.contains(k) && prov[k].is_string() ? prov[k].get<std::string>() : std::string();
   };
   if (!prov.empty()) {
     // written by `best --out`: the run's config and seed travel with the genome
-    auto seed = whole<std::uint64_t>(str("seed"), 0, UINT64_MAX);
-    if (!seed || str("config").empty())
+    prov_seed = whole<std::uint64_t>(str("seed"), 0, UINT64_MAX);
+    if (!prov_seed || str("config").empty())
       return Error{path + ": provenance: expected the fields \"seed\" (a number as text) and \"config\" (TOML text)"};
     scored_by = str("run") + " individual " + (prov.contains("individual") ? prov["individual"].dump() : "?");
     bool genome_same = str("genome_hash") == fnv1a64(genome_to_string(c.genome));
@@ -185,12 +178,12 @@ Result<Creature> from_genome(const std::string& path, const CreatureFlags& f) {
       auto cfg = genome_config(c.genome, str("config"), path + " (provenance.config)", f.set);
       if (!cfg) return Error{cfg.error()};
       c.cfg = *cfg;
-      c.seed = *seed;
+      c.seed = *prov_seed;
       c.scored_settings = genome_same && config_same && f.set.empty() && !f.seconds;
       if (genome_same && prov.contains("fitness") && prov["fitness"].is_number())
         c.stored_fitness = prov["fitness"].get<double>();
       if (c.scored_settings)
-        c.settings = "as scored (" + scored_by + "): its run's config and evaluation seed " + seeds_text(c.seed);
+        c.settings = "as scored (" + scored_by + "): its run's config and evaluation seed " + std::to_string(c.seed);
       else if (!genome_same)
         c.settings = "not as scored: the genome was edited after " + scored_by + " was scored";
       else if (!config_same)
@@ -215,7 +208,7 @@ Result<Creature> from_genome(const std::string& path, const CreatureFlags& f) {
   auto cfg = genome_config(c.genome, cfg_text, source, f.set);
   if (!cfg) return Error{cfg.error()};
   c.cfg = *cfg;
-  c.seed = f.seed.value_or(scored_by.empty() ? 1 : *whole<std::uint64_t>(str("seed"), 0, UINT64_MAX));
+  c.seed = f.seed.value_or(prov_seed.value_or(1));
   if (!scored_by.empty())
     c.settings = "not as scored: " +
                  std::string(f.config.empty() ? "--seed" : f.seed ? "--config and --seed" : "--config") + " given (" +
@@ -230,6 +223,14 @@ std::string exact_number(double v) {
   char buf[32];
   auto r = std::to_chars(buf, buf + sizeof buf, v);
   return std::string(buf, r.ptr);
+}
+
+Status set_seconds(SimConfig& sim, const std::optional<double>& seconds) {
+  if (!seconds) return Ok{};
+  if (!(*seconds > 0) || !std::isfinite(*seconds) || *seconds > 1e6)
+    return Error{"--seconds: expected a number in (0, 1e6], got " + exact_number(*seconds)};
+  task_seconds(sim) = *seconds;
+  return Ok{};
 }
 
 std::string fitness_line(double fitness, const std::optional<double>& stored) {

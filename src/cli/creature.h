@@ -67,6 +67,9 @@ Result<Creature> resolve_creature(const std::string& target, const CreatureFlags
 /// text and a hash), so the file alone reproduces the scored evaluation.
 nlohmann::json provenance_json(const Creature& c, const std::string& config_text);
 
+/// Sets the task's length from --seconds (unset: unchanged); checks its range.
+Status set_seconds(SimConfig& sim, const std::optional<double>& seconds);
+
 /// "fitness F", and whether it equals the stored fitness bit for bit.
 std::string fitness_line(double fitness, const std::optional<double>& stored);
 

@@ -92,11 +92,7 @@ int cmd_show_run(WatchArgs a) {
   auto cfg = read_run_config((*store)->meta("config"), run_config_path(dir));
   if (!cfg) return fail(cfg.error());
   SimConfig sim = cfg->sim;
-  if (a.flags.seconds) {
-    if (!(*a.flags.seconds > 0) || !std::isfinite(*a.flags.seconds) || *a.flags.seconds > 1e6)
-      return fail("--seconds: expected a number in (0, 1e6], got " + exact_number(*a.flags.seconds));
-    task_seconds(sim) = *a.flags.seconds;
-  }
+  if (Status s = set_seconds(sim, a.flags.seconds); !s) return fail(s.error());
   if (a.out.empty()) a.out = (fs::path(dir) / "view.html").string();
   if (Status s = make_parent_dir("--out", a.out); !s) return fail(s.error());
 
