@@ -84,10 +84,10 @@ Result<Creature> from_run(const RunTarget& t, const CreatureFlags& f) {
     }
   }
   if (id && gen) return Error{"--id/--gen: name an individual or a generation, not both"};
-  std::optional<Individual> ind;
+  Result<Individual> ind = Error{""};
   if (id) {
     ind = (*store)->individual(*id);
-    if (!ind) return Error{t.dir + ": no individual " + std::to_string(*id)};
+    if (!ind) return Error{t.dir + ": " + ind.error()};
   } else if (gen) {
     auto gens = (*store)->generations();
     if (gens.empty()) return Error{t.dir + ": no generation finished yet"};
@@ -96,12 +96,14 @@ Result<Creature> from_run(const RunTarget& t, const CreatureFlags& f) {
       return Error{t.dir + ": no generation " + std::to_string(*gen) + " (generations " +
                    std::to_string(gens.front().generation) + " to " + std::to_string(gens.back().generation) + ")"};
     ind = (*store)->individual(g->best_id);
-    if (!ind) return Error{t.dir + ": generation " + std::to_string(*gen) + "'s best is missing"};
+    if (!ind) return Error{t.dir + ": generation " + std::to_string(*gen) + "'s best: " + ind.error()};
   } else {
     ind = (*store)->best_individual();
-    if (!ind) return Error{t.dir + ": no generation finished yet"};
+    if (!ind) return Error{t.dir + ": " + ind.error()};
   }
-  auto cfg = read_run_config((*store)->meta("config"), run_config_path(t.dir), f.set);
+  auto text = (*store)->config_text();
+  if (!text) return Error{text.error()};
+  auto cfg = read_run_config(*text, run_db_path(t.dir) + " (the run's config)", f.set);
   if (!cfg) return Error{cfg.error()};
   Creature c;
   c.genome = ind->genome;
@@ -109,7 +111,7 @@ Result<Creature> from_run(const RunTarget& t, const CreatureFlags& f) {
   c.seed = ind->seed;
   c.label = t.dir + " individual " + std::to_string(ind->id) + " (generation " + std::to_string(ind->generation) + ")";
   c.stored_fitness = ind->fitness;
-  c.individual = ind;
+  c.individual = *ind;
   c.run_dir = t.dir;
   c.scored_settings = f.set.empty() && !f.seconds;
   c.settings = c.scored_settings

@@ -89,15 +89,19 @@ int cmd_show_run(WatchArgs a) {
   const std::string dir = a.genome;
   auto store = RunStore::open(run_db_path(dir));
   if (!store) return fail(store.error());
-  auto cfg = read_run_config((*store)->meta("config"), run_config_path(dir));
+  auto text = (*store)->config_text();
+  if (!text) return fail(text.error());
+  auto cfg = read_run_config(*text, run_db_path(dir) + " (the run's config)");
   if (!cfg) return fail(cfg.error());
+  auto seed = (*store)->master_seed();
+  if (!seed) return fail(seed.error());
   SimConfig sim = cfg->sim;
   if (Status s = set_seconds(sim, a.flags.seconds); !s) return fail(s.error());
   if (a.out.empty()) a.out = (fs::path(dir) / "view.html").string();
   if (Status s = make_parent_dir("--out", a.out); !s) return fail(s.error());
 
   // the overall best, the lineages and the generations' bests (io/run_page.h)
-  auto page = gather_run_page(**store, dir, *cfg, sim, std::stoull((*store)->meta("seed")));
+  auto page = gather_run_page(**store, dir, *cfg, sim, *seed);
   if (!page) return fail(dir + ": " + page.error());
   if (Status s = save_view_html(a.out, page->replays, page->run); !s) return fail(s.error());
   const RunView& run = page->run;

@@ -3,6 +3,7 @@
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -155,7 +156,16 @@ struct ProcessPoolEvaluator::Impl {
   void spawn(Worker& w) {
     int jobs[2], results[2];
     if (::pipe(jobs) != 0 || ::pipe(results) != 0) throw std::runtime_error("pipe failed");
+    const pid_t parent = ::getpid();
+    // INT and TERM held back until the child has its own dispositions: a
+    // signal in between would run the parent's handler in the child
+    sigset_t stop, was;
+    sigemptyset(&stop);
+    sigaddset(&stop, SIGINT);
+    sigaddset(&stop, SIGTERM);
+    ::sigprocmask(SIG_BLOCK, &stop, &was);
     pid_t pid = ::fork();
+    if (pid != 0) ::sigprocmask(SIG_SETMASK, &was, nullptr);
     if (pid < 0) throw std::runtime_error("fork failed");
     if (pid == 0) {
       // the child keeps stdio and its own two ends only: no other pool's pipes
@@ -165,7 +175,14 @@ struct ProcessPoolEvaluator::Impl {
       ::close_range(3, lo - 1, 0);
       ::close_range(lo + 1, hi - 1, 0);
       ::close_range(hi + 1, ~0U, 0);
-      std::signal(SIGINT, SIG_IGN);  // Ctrl-C stops the parent; workers end when their pipe closes
+      // the parent's handlers are not the worker's: Ctrl-C or a TERM to the
+      // process group stops the parent, which says so once, and workers die
+      // with it (at once, not after their evaluation)
+      std::signal(SIGINT, SIG_IGN);
+      std::signal(SIGTERM, SIG_IGN);  // (which also drops any held back)
+      ::sigprocmask(SIG_SETMASK, &was, nullptr);
+      ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+      if (::getppid() != parent) ::_exit(0);  // the parent died before prctl
       worker_main(in, out, cfg);
     }
     ::close(jobs[0]);
@@ -222,9 +239,19 @@ std::vector<EvalOutcome> ProcessPoolEvaluator::evaluate(const std::vector<EvalJo
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return cost[a] > cost[b]; });
   std::deque<int> pending(order.begin(), order.end());
   std::size_t done = 0;
-  auto fail_job = [&](int job, const std::string& why) {
+  // a worker lost on a job (killed from outside, stopped past the timeout, or
+  // crashed by the job itself) gets the job again on a fresh worker, once: a
+  // lost worker then costs nothing and the run stays as an undisturbed one,
+  // while a job that crashes or hangs twice (it would every time: an
+  // evaluation is a pure function of its inputs) is recorded as failed
+  std::vector<int> lost(jobs.size(), 0);
+  auto lose_job = [&](int job, const std::string& why) {
+    if (++lost[job] < 2) {
+      pending.push_front(job);
+      return;
+    }
     out[job].result.failed = true;
-    out[job].result.failure = why;
+    out[job].result.failure = why + " (twice)";
     ++done;
   };
 
@@ -239,7 +266,8 @@ std::vector<EvalOutcome> ProcessPoolEvaluator::evaluate(const std::vector<EvalJo
       w.deadline = std::chrono::steady_clock::now() +
                    std::chrono::milliseconds(static_cast<long>(im.timeout * 1000));
       if (!send_message(w.to, msg.dump())) {
-        fail_job(j, "worker crashed: " + im.reap(w, true));
+        w.job = -1;
+        lose_job(j, "worker crashed: " + im.reap(w, true));
         im.spawn(w);
       }
     }
@@ -270,12 +298,14 @@ std::vector<EvalOutcome> ProcessPoolEvaluator::evaluate(const std::vector<EvalJo
           w.job = -1;
           ++done;
         } else {
-          fail_job(j, "worker crashed: " + im.reap(w, true));
+          w.job = -1;
+          lose_job(j, "worker crashed: " + im.reap(w, true));
           im.spawn(w);
         }
       } else if (now >= w.deadline) {
+        w.job = -1;
         im.reap(w, true);
-        fail_job(j, "timed out after " + std::to_string(static_cast<int>(im.timeout)) + " s");
+        lose_job(j, "timed out after " + std::to_string(static_cast<int>(im.timeout)) + " s");
         im.spawn(w);
       }
     }

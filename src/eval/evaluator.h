@@ -52,9 +52,11 @@ class SerialEvaluator : public Evaluator {
 };
 
 /// Evaluates in K worker processes, one creature at a time each (ODE's random
-/// generator is process-wide). A worker that crashes or runs past the timeout
-/// costs that one evaluation, recorded as failed with its reason; it is
-/// replaced and the batch goes on.
+/// generator is process-wide). A worker lost on a job (it crashed, was killed
+/// from outside, or ran past the timeout) is replaced and the job given again,
+/// once: a lost worker costs nothing, while a job that crashes or times out
+/// twice is recorded as failed with its reason, "(twice)"; the batch goes on.
+/// Workers ignore SIGINT and SIGTERM and die with the process that made them.
 class ProcessPoolEvaluator : public Evaluator {
  public:
   ProcessPoolEvaluator(SimConfig cfg, int workers, double timeout_seconds);

@@ -1,10 +1,15 @@
 #include "evolve/run.h"
 
+#include <fcntl.h>
+#include <signal.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 
@@ -21,38 +26,116 @@ std::string run_db_path(const std::string& dir) { return (fs::path(dir) / "run.s
 std::string run_config_path(const std::string& dir) { return (fs::path(dir) / "config.toml").string(); }
 std::string run_log_path(const std::string& dir) { return (fs::path(dir) / "run.log").string(); }
 
+namespace {
+
+// the name a run directory has while it is being created, beside where it will be
+fs::path creating_path(const fs::path& dir, long pid) {
+  return dir.parent_path() / ("." + dir.filename().string() + ".creating-" + std::to_string(pid));
+}
+
+// removes what earlier creations of `dir`, killed before they finished, left
+void remove_stale_creations(const fs::path& dir) {
+  std::error_code ec;
+  const std::string prefix = "." + dir.filename().string() + ".creating-";
+  fs::path parent = dir.parent_path().empty() ? fs::path(".") : dir.parent_path();
+  for (const auto& e : fs::directory_iterator(parent, ec)) {
+    std::string name = e.path().filename().string();
+    if (name.rfind(prefix, 0) != 0) continue;
+    long pid = std::strtol(name.c_str() + prefix.size(), nullptr, 10);
+    if (pid > 0 && (::kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM)) continue;  // still at work
+    fs::remove_all(e.path(), ec);
+  }
+}
+
+void sync_dir(const fs::path& dir) {
+  int fd = ::open(dir.empty() ? "." : dir.c_str(), O_RDONLY | O_DIRECTORY);
+  if (fd >= 0) {
+    ::fsync(fd);
+    ::close(fd);
+  }
+}
+
+}  // namespace
+
 Status create_run(const std::string& dir, const RunConfig& cfg, const std::string& config_text,
                   const std::string& name, std::uint64_t seed) {
   if (fs::exists(dir))
     return Error{dir + ": already exists (resume it with `bestiary resume " + dir +
                  "`, or choose another --out)"};
+  // built under another name and renamed into place, so that `dir` appears
+  // complete (config.toml, and the database with the config and seed) or not at
+  // all, whenever the process is killed or the disk fills
+  const fs::path target = fs::path(dir).lexically_normal();
   std::error_code ec;
-  fs::create_directories(dir, ec);
+  if (!target.parent_path().empty()) fs::create_directories(target.parent_path(), ec);
+  if (ec) return Error{target.parent_path().string() + ": cannot create directory (" + ec.message() + ")"};
+  remove_stale_creations(target);
+  const fs::path tmp = creating_path(target, static_cast<long>(::getpid()));
+  fs::create_directory(tmp, ec);
   if (ec) return Error{dir + ": cannot create directory (" + ec.message() + ")"};
+  auto fail = [&](const std::string& why) {
+    std::error_code ignored;
+    fs::remove_all(tmp, ignored);
+    return Status(Error{why});
+  };
   // the resolved config: every key, as this run will use it
   std::string resolved = "# Resolved config of this run (from " + name + ")\n" + config_to_toml(cfg);
-  if (Status s = write_file_atomic(run_config_path(dir), resolved); !s) return s;
-  auto store = RunStore::create(run_db_path(dir), {{"name", name},
-                                                   {"seed", std::to_string(seed)},
-                                                   {"config", resolved},
-                                                   {"source_config", config_text},
-                                                   {"bestiary_version", BESTIARY_VERSION},
-                                                   {"bestiary_git", BESTIARY_GIT}});
-  if (!store) return Error{store.error()};
+  if (Status s = write_file_atomic(run_config_path(tmp.string()), resolved); !s)
+    return fail(dir + ": " + s.error());
+  {
+    auto store = RunStore::create(run_db_path(tmp.string()), {{"name", name},
+                                                              {"seed", std::to_string(seed)},
+                                                              {"config", resolved},
+                                                              {"source_config", config_text},
+                                                              {"bestiary_version", BESTIARY_VERSION},
+                                                              {"bestiary_git", BESTIARY_GIT}});
+    if (!store) return fail(dir + ": " + store.error());
+  }  // closed: its journal is folded into the file before the rename
+  sync_dir(tmp);
+  if (::rename(tmp.c_str(), target.c_str()) != 0) {
+    int err = errno;
+    return fail(dir + ": cannot create directory (" + std::strerror(err) + ")");
+  }
+  sync_dir(target.parent_path());
   return Ok{};
 }
 
-Result<RunProgress> run_progress(const std::string& dir) {
+namespace {
+
+// a run's database, config and seed, each checked: a database that lacks what a
+// run needs is refused with what it lacks, never run with defaults
+struct OpenRun {
+  std::unique_ptr<RunStore> store;
+  RunConfig cfg;
+  std::uint64_t seed = 0;
+};
+
+Result<OpenRun> open_run(const std::string& dir, const std::vector<std::string>& overrides = {}) {
   auto store = RunStore::open(run_db_path(dir));
   if (!store) return Error{store.error()};
-  auto cfg = read_run_config((*store)->meta("config"), run_config_path(dir));
+  auto text = (*store)->config_text();
+  if (!text) return Error{text.error()};
+  auto cfg = read_run_config(*text, run_db_path(dir) + " (the run's config)", overrides);
   if (!cfg) return Error{cfg.error()};
-  Evolution evo(cfg->dialect, cfg->evolution, cfg->operators, cfg->sim.develop, 0);
+  auto seed = (*store)->master_seed();
+  if (!seed) return Error{seed.error()};
+  return OpenRun{std::move(*store), std::move(*cfg), *seed};
+}
+
+}  // namespace
+
+Result<RunProgress> run_progress(const std::string& dir) {
+  auto run = open_run(dir);
+  if (!run) return Error{run.error()};
+  if (Status s = run->store->check_integrity(); !s) return Error{s.error()};
+  Evolution evo(run->cfg.dialect, run->cfg.evolution, run->cfg.operators, run->cfg.sim.develop, run->seed);
   RunProgress p;
   EvolutionState state;
-  if (auto cp = (*store)->checkpoint()) {
-    state.generation = cp->generation;
-    state.evaluations = cp->evaluations;
+  auto cp = run->store->checkpoint();
+  if (!cp) return Error{cp.error()};
+  if (*cp) {
+    state.generation = (*cp)->generation;
+    state.evaluations = (*cp)->evaluations;
   }
   p.generations_done = state.generation + 1;
   p.generations_total = evo.total_generations();
@@ -62,18 +145,21 @@ Result<RunProgress> run_progress(const std::string& dir) {
 }
 
 Status extend_run(const std::string& dir, const std::vector<std::string>& overrides) {
-  auto store = RunStore::open(run_db_path(dir));
-  if (!store) return Error{store.error()};
-  auto old = read_run_config((*store)->meta("config"), run_config_path(dir));
-  if (!old) return Error{old.error()};
+  auto run = open_run(dir);
+  if (!run) return Error{run.error()};
+  if (run->store->read_only()) return Error{dir + ": read-only here (permission denied): cannot lengthen the run"};
+  RunStore* store = run->store.get();
+  const RunConfig* old = &run->cfg;
   const bool generational = old->evolution.algorithm == Algorithm::Generational;
   const std::string allowed = generational ? "evolution.generations" : "evolution.evaluations";
   for (const auto& o : overrides)
     if (o.rfind(allowed + "=", 0) != 0)
       return Error{"--set " + o + ": resume can only lengthen a run (" + allowed + "=N); the rest of its config stays"};
-  auto cfg = read_run_config((*store)->meta("config"), run_config_path(dir), overrides);
+  auto cfg = read_run_config(*store->config_text(), run_db_path(dir) + " (the run's config)", overrides);
   if (!cfg) return Error{cfg.error()};
-  auto cp = (*store)->checkpoint();
+  auto cp_r = store->checkpoint();
+  if (!cp_r) return Error{cp_r.error()};
+  const auto& cp = *cp_r;
   const int done = cp ? cp->generation + 1 : 0;
   const long evaluations = cp ? cp->evaluations : 0;
   const EvolutionDef &was = old->evolution, &now = cfg->evolution;
@@ -93,10 +179,10 @@ Status extend_run(const std::string& dir, const std::vector<std::string>& overri
   }
   std::string extended;
   for (const auto& o : overrides) extended += " --set " + o;
-  std::string text = (*store)->meta("config");
+  std::string text = *store->config_text();
   std::string head = text.substr(0, text.find('\n'));
   std::string resolved = head + " (lengthened by resume" + extended + ")\n" + config_to_toml(*cfg);
-  if (Status s = (*store)->set_meta("config", resolved); !s) return Error{run_db_path(dir) + ": " + s.error()};
+  if (Status s = store->set_meta("config", resolved); !s) return Error{run_db_path(dir) + ": " + s.error()};
   return write_file_atomic(run_config_path(dir), resolved);
 }
 
@@ -114,25 +200,37 @@ std::string duration(double s) {
 }  // namespace
 
 Status drive_run(const std::string& dir, const RunOptions& opt) {
-  auto store_r = RunStore::open(run_db_path(dir));
-  if (!store_r) return Error{store_r.error()};
-  RunStore& store = **store_r;
   // the run's own config and seed, as stored when it was created
-  auto cfg_r = read_run_config(store.meta("config"), run_config_path(dir));
-  if (!cfg_r) return Error{cfg_r.error()};
-  const RunConfig& cfg = *cfg_r;
-  std::uint64_t seed = std::stoull(store.meta("seed"));
-  Evolution evo(cfg.dialect, cfg.evolution, cfg.operators, cfg.sim.develop, seed);
+  auto run = open_run(dir);
+  if (!run) return Error{run.error()};
+  RunStore& store = *run->store;
+  if (store.read_only()) return Error{dir + ": read-only here (permission denied): cannot continue the run"};
+  if (Status s = store.check_integrity(); !s) return s;
+  const RunConfig& cfg = run->cfg;
+  Evolution evo(cfg.dialect, cfg.evolution, cfg.operators, cfg.sim.develop, run->seed);
+  // config.toml is the run's config for people to read: the stored one rules
+  std::string note;
+  const std::string stored = *store.config_text();
+  if (!fs::exists(run_config_path(dir))) {
+    if (Status s = write_file_atomic(run_config_path(dir), stored); !s) return s;
+    note = run_config_path(dir) + " was missing: written again from the run's database";
+  } else if (auto text = read_file(run_config_path(dir)); !text || *text != stored) {
+    note = run_config_path(dir) + " differs from the config stored in the run's database, which the run uses "
+           "(edits to it change nothing; lengthen a run with `resume DIR --set evolution.generations=N`)";
+  }
+  if (!note.empty()) std::fprintf(stderr, "note: %s\n", note.c_str());
 
   // where it stands: the last checkpoint, or the start
   EvolutionState state;
-  if (auto cp = store.checkpoint()) {
-    state.generation = cp->generation;
-    state.evaluations = cp->evaluations;
-    state.next_id = cp->next_id;
-    for (std::int64_t id : cp->population) {
+  auto cp = store.checkpoint();
+  if (!cp) return Error{cp.error()};
+  if (*cp) {
+    state.generation = (*cp)->generation;
+    state.evaluations = (*cp)->evaluations;
+    state.next_id = (*cp)->next_id;
+    for (std::int64_t id : (*cp)->population) {
       auto ind = store.individual(id);
-      if (!ind) return Error{run_db_path(dir) + ": checkpoint names individual " + std::to_string(id) + ", which is missing"};
+      if (!ind) return Error{run_db_path(dir) + ": the checkpoint's " + ind.error()};
       state.population.push_back(std::move(*ind));
     }
   }
@@ -144,6 +242,7 @@ Status drive_run(const std::string& dir, const RunOptions& opt) {
   const int total = evo.total_generations();
   auto t0 = std::chrono::steady_clock::now();
   long evals_this_session = 0;
+  if (!note.empty()) log << "note: " << note << std::endl;
   log << "session: resuming at generation " << state.generation + 1 << " with " << evaluator->workers()
       << " workers" << std::endl;
 

@@ -20,7 +20,8 @@ struct RunOptions {
   int stop_after = 0;
 };
 
-/// Where a run stands, for what `resume` says before it goes on.
+/// Where a run stands, for what `resume` says before it goes on; an error
+/// names what is missing or damaged in its database (checked whole).
 struct RunProgress {
   int generations_done = 0;   ///< generations stored (steady state: report intervals)
   int generations_total = 0;  ///< as configured

@@ -88,7 +88,7 @@ Result<RunPage> gather_run_page(const RunStore& store, const std::string& source
       auto it = members.find(at);
       if (it == members.end()) {
         auto ind = store.individual(at);
-        if (!ind) return Error{"individual " + std::to_string(at) + " is missing"};
+        if (!ind) return Error{ind.error()};
         it = members.emplace(at, std::move(*ind)).first;
       }
       if (at != id) chain.push_back(at);

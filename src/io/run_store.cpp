@@ -2,7 +2,10 @@
 
 #include <sqlite3.h>
 
+#include <unistd.h>
+
 #include <filesystem>
+#include <optional>
 #include <nlohmann/json.hpp>
 
 #include "genome/genome_json.h"
@@ -50,6 +53,7 @@ class Stmt {
     return p ? reinterpret_cast<const char*>(p) : "";
   }
   bool ok() const { return s_ != nullptr; }
+  sqlite3_stmt* raw() const { return s_; }
 
  private:
   sqlite3_stmt* s_ = nullptr;
@@ -76,6 +80,29 @@ Result<sqlite3*> open_db(const std::string& path, int flags) {
   return db;
 }
 
+// a whole number, or nothing (no sign, no space, no trailing text)
+std::optional<std::uint64_t> whole_number(const std::string& text) {
+  if (text.empty() || text.size() > 20) return std::nullopt;
+  std::uint64_t v = 0;
+  for (char c : text) {
+    if (c < '0' || c > '9') return std::nullopt;
+    std::uint64_t d = static_cast<std::uint64_t>(c - '0');
+    if (v > (UINT64_MAX - d) / 10) return std::nullopt;
+    v = v * 10 + d;
+  }
+  return v;
+}
+
+// a column that must hold a number: an error names the field and what it holds
+Status number_column(sqlite3_stmt* s, int c, const std::string& what) {
+  int t = sqlite3_column_type(s, c);
+  if (t == SQLITE_INTEGER || t == SQLITE_FLOAT) return Ok{};
+  auto* p = sqlite3_column_text(s, c);
+  std::string v = p ? reinterpret_cast<const char*>(p) : "NULL";
+  if (v.size() > 40) v = v.substr(0, 40) + "...";
+  return Error{what + " is not a number (\"" + v + "\")"};
+}
+
 }  // namespace
 
 Result<std::unique_ptr<RunStore>> RunStore::create(
@@ -83,7 +110,7 @@ Result<std::unique_ptr<RunStore>> RunStore::create(
   if (std::filesystem::exists(path)) return Error{path + ": run database already exists"};
   auto db = open_db(path, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE);
   if (!db) return Error{db.error()};
-  std::unique_ptr<RunStore> store(new RunStore(*db));
+  std::unique_ptr<RunStore> store(new RunStore(*db, path));
   if (Status s = exec(*db, kSchema); !s) return Error{path + ": " + s.error()};
   for (const auto& [k, v] : meta)
     if (Status s = store->set_meta(k, v); !s) return Error{s.error()};
@@ -91,18 +118,70 @@ Result<std::unique_ptr<RunStore>> RunStore::create(
 }
 
 Result<std::unique_ptr<RunStore>> RunStore::open(const std::string& path) {
-  if (!std::filesystem::exists(path)) return Error{path + ": no run database here"};
-  auto db = open_db(path, SQLITE_OPEN_READWRITE);
+  namespace fs = std::filesystem;
+  if (!fs::exists(path)) return Error{path + ": no run database here"};
+  // a run this user may only read (a shared folder, an archive) opens read-only;
+  // a clean copy has no -wal/-shm files and a read-only folder cannot hold
+  // them, so it is opened as immutable
+  std::string dir = fs::path(path).parent_path().string();
+  const bool writable = ::access(path.c_str(), W_OK) == 0 && ::access(dir.empty() ? "." : dir.c_str(), W_OK) == 0;
+  const std::string uri = "file:" + path + (writable ? "" : "?immutable=1");
+  auto db = open_db(writable ? path : uri, writable ? SQLITE_OPEN_READWRITE
+                                                    : SQLITE_OPEN_READONLY | SQLITE_OPEN_URI);
   if (!db) return Error{db.error()};
-  std::unique_ptr<RunStore> store(new RunStore(*db));
+  std::unique_ptr<RunStore> store(new RunStore(*db, path));
+  store->read_only_ = !writable;
   Stmt check(*db, "SELECT count(*) FROM run");
-  if (!check.ok() || check.step() != SQLITE_ROW) return Error{path + ": not a Bestiary run database"};
+  if (!check.ok() || check.step() != SQLITE_ROW)
+    return Error{path + ": not a Bestiary run database (" + sqlite3_errmsg(*db) + ")"};
   // databases written before individuals kept their evaluation seed get the
   // column (empty: the seed is derived, see individual()); read-only, they stay as they are
   Stmt has_seed(*db, "SELECT count(*) FROM pragma_table_info('individual') WHERE name = 'seed'");
   if (has_seed.ok() && has_seed.step() == SQLITE_ROW && has_seed.i64(0) == 0)
-    store->seed_column_ = exec(*db, "ALTER TABLE individual ADD COLUMN seed TEXT").ok();
+    store->seed_column_ = writable && exec(*db, "ALTER TABLE individual ADD COLUMN seed TEXT").ok();
   return store;
+}
+
+Result<std::uint64_t> RunStore::master_seed() const {
+  std::string text = meta("seed");
+  if (text.empty()) return Error{path_ + ": the run's seed is missing (no complete run)"};
+  auto v = whole_number(text);
+  if (!v) return Error{path_ + ": the run's seed is not a whole number (\"" + text.substr(0, 40) + "\")"};
+  return *v;
+}
+
+Result<std::string> RunStore::config_text() const {
+  std::string text = meta("config");
+  if (text.empty()) return Error{path_ + ": the run's config is missing (no complete run)"};
+  return text;
+}
+
+Status RunStore::check_integrity() const {
+  Stmt s(db_, "PRAGMA quick_check");
+  std::string problems;
+  int n = 0;
+  int rc;
+  while ((rc = s.step()) == SQLITE_ROW) {
+    std::string line = s.text(0);
+    if (line == "ok") continue;
+    if (n++ < 3) problems += (problems.empty() ? "" : "; ") + line;
+  }
+  if (rc != SQLITE_DONE && problems.empty()) problems = sqlite3_errmsg(db_);
+  if (!problems.empty()) return Error{path_ + ": the database is damaged (" + problems + (n > 3 ? "; ..." : "") + ")"};
+  // every number a number: SQLite stores what it is given, and a text reads as 0
+  const char* numeric[][2] = {
+      {"generation", "evaluations"}, {"generation", "best"}, {"generation", "mean"}, {"generation", "median"},
+      {"generation", "best_id"},     {"generation", "rejected"}, {"generation", "failed"},
+      {"individual", "gen"},         {"individual", "fitness"}, {"individual", "distance"}};
+  for (const auto& [table, column] : numeric) {
+    std::string sql = std::string("SELECT rowid, ") + column + " FROM " + table + " WHERE typeof(" + column +
+                      ") NOT IN ('integer', 'real') LIMIT 1";
+    Stmt q(db_, sql.c_str());
+    if (q.ok() && q.step() == SQLITE_ROW)
+      return Error{path_ + ": " + table + " " + std::to_string(q.i64(0)) + "'s " + column + " is not a number (\"" +
+                   q.text(1).substr(0, 40) + "\")"};
+  }
+  return Ok{};
 }
 
 RunStore::~RunStore() { sqlite3_close(db_); }
@@ -162,16 +241,36 @@ Status RunStore::write_generation(const GenerationStats& st, const std::vector<I
   return Ok{};
 }
 
-std::optional<Checkpoint> RunStore::checkpoint() const {
+Result<std::optional<Checkpoint>> RunStore::checkpoint() const {
   Stmt s(db_, "SELECT gen, state FROM checkpoint WHERE id = 1");
-  if (s.step() != SQLITE_ROW) return std::nullopt;
+  if (s.step() != SQLITE_ROW) return std::optional<Checkpoint>{};
+  const std::string where = path_ + ": the checkpoint ";
+  if (Status t = number_column(s.raw(), 0, "its generation"); !t) return Error{where + t.error()};
   Checkpoint cp;
   cp.generation = static_cast<int>(s.i64(0));
-  json state = json::parse(s.text(1));
-  cp.evaluations = state.at("evaluations");
-  cp.next_id = state.at("next_id");
-  cp.population = state.at("population").get<std::vector<std::int64_t>>();
-  return cp;
+  json state = json::parse(s.text(1), nullptr, false);
+  if (state.is_discarded() || !state.is_object()) return Error{where + "is not a JSON object"};
+  auto count = [&](const char* key, auto& out, std::int64_t lo) -> Status {
+    auto it = state.find(key);
+    if (it == state.end()) return Error{where + "lacks \"" + key + "\""};
+    if (!it->is_number_integer() || it->template get<std::int64_t>() < lo)
+      return Error{where + "has \"" + key + "\" = " + it->dump().substr(0, 40) + ", not a whole number"};
+    out = it->template get<std::int64_t>();
+    return Ok{};
+  };
+  std::int64_t evaluations = 0;
+  if (Status t = count("evaluations", evaluations, 0); !t) return Error{t.error()};
+  if (Status t = count("next_id", cp.next_id, 0); !t) return Error{t.error()};
+  cp.evaluations = static_cast<long>(evaluations);
+  auto pop = state.find("population");
+  if (pop == state.end() || !pop->is_array()) return Error{where + "lacks its population (an array of ids)"};
+  for (const auto& id : *pop) {
+    if (!id.is_number_integer() || id.get<std::int64_t>() < 0)
+      return Error{where + "names an individual " + id.dump().substr(0, 40) + ", not an id"};
+    cp.population.push_back(id.get<std::int64_t>());
+  }
+  if (cp.generation < 0 || cp.population.empty()) return Error{where + "is empty (generation " + std::to_string(cp.generation) + ")"};
+  return std::optional<Checkpoint>(std::move(cp));
 }
 
 std::vector<GenerationStats> RunStore::generations() const {
@@ -192,15 +291,21 @@ std::vector<GenerationStats> RunStore::generations() const {
   return out;
 }
 
-std::optional<Individual> RunStore::individual(std::int64_t id) const {
+Result<Individual> RunStore::individual(std::int64_t id) const {
   Stmt s(db_, seed_column_ ? "SELECT id, gen, genome, fitness, distance, parent1, parent2, operator, failure, seed "
                              "FROM individual WHERE id = ?"
                            : "SELECT id, gen, genome, fitness, distance, parent1, parent2, operator, failure, '' "
                              "FROM individual WHERE id = ?");
   s.bind(1, id);
-  if (s.step() != SQLITE_ROW) return std::nullopt;
-  auto g = genome_from_string(s.text(2), "individual " + std::to_string(id));
-  if (!g) return std::nullopt;
+  const std::string who = "individual " + std::to_string(id);
+  if (s.step() != SQLITE_ROW) return Error{"no " + who};
+  for (auto [c, field] : {std::pair{1, "generation"}, {3, "fitness"}, {4, "distance"}})
+    if (Status t = number_column(s.raw(), c, who + "'s " + field); !t) return Error{t.error()};
+  for (auto [c, field] : {std::pair{5, "parent1"}, {6, "parent2"}})
+    if (!s.null(c))
+      if (Status t = number_column(s.raw(), c, who + "'s " + field); !t) return Error{t.error()};
+  auto g = genome_from_string(s.text(2), who);
+  if (!g) return Error{g.error()};
   Individual ind;
   ind.id = s.i64(0);
   ind.generation = static_cast<int>(s.i64(1));
@@ -214,21 +319,27 @@ std::optional<Individual> RunStore::individual(std::int64_t id) const {
   // the stored evaluation seed; an older database's individual was evaluated
   // with the seed derived from the run's master seed and its id
   const std::string seed = s.text(9);
-  try {
-    ind.seed = seed.empty() ? evaluation_seed(std::stoull(meta("seed")), ind.id) : std::stoull(seed);
-  } catch (const std::exception&) {
-    return std::nullopt;
+  if (seed.empty()) {
+    auto master = master_seed();
+    if (!master) return Error{master.error()};
+    ind.seed = evaluation_seed(*master, ind.id);
+  } else {
+    auto v = whole_number(seed);
+    if (!v) return Error{who + "'s seed is not a whole number (\"" + seed.substr(0, 40) + "\")"};
+    ind.seed = *v;
   }
   return ind;
 }
 
-std::optional<Individual> RunStore::best_individual() const {
+Result<Individual> RunStore::best_individual() const {
   std::optional<Individual> best;
   for (const auto& g : generations()) {
     auto ind = individual(g.best_id);
-    if (ind && (!best || ind->fitness > best->fitness)) best = ind;
+    if (!ind) return Error{path_ + ": generation " + std::to_string(g.generation) + "'s best: " + ind.error()};
+    if (!best || ind->fitness > best->fitness) best = std::move(*ind);
   }
-  return best;
+  if (!best) return Error{"no generation finished yet"};
+  return std::move(*best);
 }
 
 }  // namespace bx

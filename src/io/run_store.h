@@ -32,7 +32,8 @@ class RunStore {
   /// Creates `path` (which must not exist) with the run's metadata.
   static Result<std::unique_ptr<RunStore>> create(const std::string& path,
                                                   const std::vector<std::pair<std::string, std::string>>& meta);
-  /// Opens an existing database.
+  /// Opens an existing database: read-write, or read-only where this user
+  /// may not write it (the file or its directory).
   static Result<std::unique_ptr<RunStore>> open(const std::string& path);
   ~RunStore();
 
@@ -40,22 +41,39 @@ class RunStore {
   /// the checkpoint after it, all or nothing.
   Status write_generation(const GenerationStats& stats, const std::vector<Individual>& born,
                           const Checkpoint& cp);
-  /// The last checkpoint, if any generation was stored.
-  std::optional<Checkpoint> checkpoint() const;
+  /// The last checkpoint, if any generation was stored; an error names a
+  /// malformed one.
+  Result<std::optional<Checkpoint>> checkpoint() const;
   /// Statistics of every stored generation, in order.
   std::vector<GenerationStats> generations() const;
-  /// One individual by id.
-  std::optional<Individual> individual(std::int64_t id) const;
-  /// The fittest of the generations' bests so far (nullopt before any generation).
-  std::optional<Individual> best_individual() const;
+  /// One individual by id; an error says it is missing, or names the field
+  /// that does not read as its type.
+  Result<Individual> individual(std::int64_t id) const;
+  /// The fittest of the generations' bests so far (an error before any
+  /// generation finished, or naming a best that does not read).
+  Result<Individual> best_individual() const;
   /// A metadata value ("" if absent).
   std::string meta(const std::string& key) const;
   /// Sets a metadata value.
   Status set_meta(const std::string& key, const std::string& value);
 
+  /// The run's master seed, as stored ("seed"); an error if it is missing or
+  /// not a whole number.
+  Result<std::uint64_t> master_seed() const;
+  /// The run's config text, as stored ("config"); an error if it is missing
+  /// (a database that lacks it is no complete run).
+  Result<std::string> config_text() const;
+  /// SQLite's quick check of the whole file, and every stored number a
+  /// number: an error names what is damaged.
+  Status check_integrity() const;
+  /// Opened read-only (this user may not write the run).
+  bool read_only() const { return read_only_; }
+
  private:
-  explicit RunStore(sqlite3* db) : db_(db) {}
+  explicit RunStore(sqlite3* db, std::string path) : db_(db), path_(std::move(path)) {}
   sqlite3* db_;
+  std::string path_;
+  bool read_only_ = false;
   bool seed_column_ = true;  ///< false: an older database opened read-only, without individual.seed
 };
 

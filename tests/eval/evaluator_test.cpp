@@ -64,7 +64,7 @@ TEST(Evaluator, AWorkerThatAbortsCostsOnlyItsJob) {
   for (std::size_t i = 0; i < got.size(); ++i) {
     if (i == 1) {
       EXPECT_TRUE(got[i].result.failed);
-      EXPECT_EQ(got[i].result.failure, "worker crashed: signal 6 (Aborted)");
+      EXPECT_EQ(got[i].result.failure, "worker crashed: signal 6 (Aborted) (twice)");
       EXPECT_EQ(got[i].result.fitness, 0);
     } else {
       EXPECT_FALSE(got[i].result.failed) << got[i].result.failure;
@@ -85,7 +85,7 @@ TEST(Evaluator, AWorkerThatHangsTimesOutAndTheBatchGoesOn) {
   ::unsetenv("BESTIARY_TEST_HANG_SEED");
   auto got = pool.evaluate(jobs);
   EXPECT_TRUE(got[2].result.failed);
-  EXPECT_EQ(got[2].result.failure, "timed out after 1 s");
+  EXPECT_EQ(got[2].result.failure, "timed out after 1 s (twice)");
   for (std::size_t i : {0u, 1u, 3u}) EXPECT_FALSE(got[i].result.failed) << got[i].result.failure;
 }
 
