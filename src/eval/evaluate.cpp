@@ -94,6 +94,7 @@ class Simulation {
       ++driven_steps_;
     }
     world_.apply_effectors(m_, cfg_.motor, signals);
+    if (!controller_on && cfg_.motor.off_brake > 0) world_.brake_effectors(m_, cfg_.motor);
     world_.step();
     ++physics_steps_;
     ++res.steps;

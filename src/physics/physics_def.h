@@ -114,6 +114,12 @@ struct MotorDef {
   /// inductance and rotor cannot follow a command that flips every brain
   /// step; docs/physics.md cause 13). 0: the motor takes each signal at once.
   double response_time = 0;
+  /// While a task holds the controller off (chaumont2007's settling), each
+  /// motor brakes its joint with this share of its full force (Servo:
+  /// max_force; Saturation, Torque: strength x cross-section), against any
+  /// motion: a joint's friction. 0: limp, frictionless joints (the papers'
+  /// ODE), where a limb left swinging never stops (docs/physics.md cause 15).
+  double off_brake = 0;
   double kp = 0.25;       ///< PD gain
   double kd = 0.175;      ///< PD damping
 };

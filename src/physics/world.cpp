@@ -227,6 +227,20 @@ struct World::Impl {
     return g;
   }
 
+  // ODE's velocity motor of one degree of freedom: pushes with up to `force`
+  // towards `speed` (through the joint's own motor, or its angular motor
+  // beside the stops)
+  void drive(const Joint& j, int dof, double speed, double force) const {
+    if (j.motor) {
+      if (j.broken) return;
+      dJointSetAMotorParam(j.motor, dParamVel + dParamGroup * dof, speed);
+      dJointSetAMotorParam(j.motor, dParamFMax + dParamGroup * dof, force);
+      return;
+    }
+    set_param(j, dof, dParamVel, speed);
+    set_param(j, dof, dParamFMax, force);
+  }
+
   // joint parameter of one degree of freedom
   void set_param(const Joint& j, int dof, int param, double v) const {
     if (j.broken) return;
@@ -572,21 +586,19 @@ void World::fix_part_to_world(int i) {
   dJointSetFixed(j);
 }
 
+void World::brake_effectors(const CreatureModel& m, const MotorDef& motor) {
+  auto& w = *impl_;
+  for (const EffectorModel& em : m.effectors) {
+    const double full = motor.model == MotorModel::Servo ? motor.max_force : motor.strength * em.cross_section;
+    w.drive(w.joints[em.joint], em.dof, 0, motor.off_brake * full);
+  }
+}
+
 void World::apply_effectors(const CreatureModel& m, const MotorDef& motor,
                             std::span<const double> signals) {
   auto& w = *impl_;
   bool torques = false;
-  // ODE's velocity motor: pushes with up to `force` towards `speed`
-  auto drive = [&w](const Impl::Joint& j, int dof, double speed, double force) {
-    if (j.motor) {
-      if (j.broken) return;
-      dJointSetAMotorParam(j.motor, dParamVel + dParamGroup * dof, speed);
-      dJointSetAMotorParam(j.motor, dParamFMax + dParamGroup * dof, force);
-      return;
-    }
-    w.set_param(j, dof, dParamVel, speed);
-    w.set_param(j, dof, dParamFMax, force);
-  };
+  auto drive = [&w](const Impl::Joint& j, int dof, double speed, double force) { w.drive(j, dof, speed, force); };
   // the motors' first-order lag: the share of the gap closed in one step
   const double lag = motor_lag_share(w.def.dt, motor.response_time);
   if (lag > 0 && w.motor_signal.size() != m.effectors.size()) w.motor_signal.assign(m.effectors.size(), 0);

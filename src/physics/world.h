@@ -68,6 +68,10 @@ class World {
   void apply_effectors(const CreatureModel& m, const MotorDef& motor,
                        std::span<const double> signals);
 
+  /// Brakes every motor (MotorDef::off_brake): speed 0 with that share of its
+  /// full force, in place of what apply_effectors set.
+  void brake_effectors(const CreatureModel& m, const MotorDef& motor);
+
   /// Advances one step: contacts, solver, then the contact flags of sensors.
   void step();
 

@@ -123,6 +123,33 @@ TEST(FrictionBound, ACreatureThatGlidedOnOdesFrictionPyramidRests) {
   EXPECT_LT(lagged.travel, kMostTravel);
 }
 
+TEST(JointFriction, ALimbLeftSwingingAfterTheBurstStopsWhenMotorsBrake) {
+  // swinger.json: the best of `run chaumont2007-walker-small --seed 1`
+  // (33 parts). With frictionless limp joints, as in the paper's ODE, at
+  // 1/480 s its 80 g limb 11 swings stop to stop after the 1 s burst and never
+  // stops, so the activation sequence scores it 0; at its own 1/240 s it came
+  // to rest (docs/physics.md cause 15)
+  Dialect d;
+  CreatureModel m = canonical("swinger.json", &d);
+  SimConfig c = default_run_config(d).sim;
+  ASSERT_EQ(c.task.activation, Activation::Chaumont2007);
+  c.task.seconds = 1;
+  const std::uint64_t seed = 2213218683792410103ULL;  // its evaluation seed in that run
+  c.physics.dt = 1.0 / 480;
+  EXPECT_EQ(evaluate(m, c, seed).note, "never settled within settle_timeout");
+  // a motor that brakes with 1% of its force while the controller is off:
+  // the limb stops, at every step
+  c.motor.off_brake = 0.01;
+  for (double dt : {1.0 / 240, 1.0 / 480, 1.0 / 960}) {
+    c.physics.dt = dt;
+    EvalResult r = evaluate(m, c, seed);
+    EXPECT_EQ(r.note, "") << "dt " << dt;
+    EXPECT_FALSE(r.failed) << r.failure;
+    // settled twice and measured: the measured second ends before 5 s
+    EXPECT_LT(r.seconds, 5) << "dt " << dt;
+  }
+}
+
 TEST(SelfCollision, Miconi2006LimbsWedgedIntoEachOtherNoLongerCarryTheCreature) {
   // wedger.json: the best of `run miconi2006-small --seed 1` on self-colliding
   // limbs (84.7 m in 100 s). Its servos press a 33 g foot 24 mm deep into
