@@ -89,6 +89,20 @@ void place_geom(dGeomID g, Shape shape, const Pose& pose) {
   dGeomSetRotation(g, m);
 }
 
+// mass and inertia of a part's body (capsules and cylinders along ODE's z:
+// the geom is turned to x by its offset rotation)
+dMass part_mass(Shape shape, Vec3 s, double total) {
+  dMass mass;
+  dMassSetZero(&mass);
+  switch (shape) {
+    case Shape::Box: dMassSetBoxTotal(&mass, total, s.x, s.y, s.z); break;
+    case Shape::Sphere: dMassSetSphereTotal(&mass, total, s.x / 2); break;
+    case Shape::Capsule: dMassSetCapsuleTotal(&mass, total, 1, s.y / 2, std::max(s.x - s.y, 0.0)); break;
+    case Shape::Cylinder: dMassSetCylinderTotal(&mass, total, 1, s.y / 2, s.x); break;
+  }
+  return mass;
+}
+
 bool def_stop(double v) { return v >= 0; }
 
 // spheres, capsules and cylinders: the shapes that roll
@@ -453,16 +467,8 @@ void World::add_creature(const CreatureModel& m, const Pose& placement) {
     const PartModel& part = m.parts[i];
     Pose pose{placement.apply(part.pose.p), placement.R * part.pose.R};
     dBodyID b = dBodyCreate(w.world);
-    dMass mass;
     const Vec3& s = part.size;
-    switch (part.shape) {
-      case Shape::Box: dMassSetBoxTotal(&mass, part.mass, s.x, s.y, s.z); break;
-      case Shape::Sphere: dMassSetSphereTotal(&mass, part.mass, s.x / 2); break;
-      case Shape::Capsule:
-        dMassSetCapsuleTotal(&mass, part.mass, 1, s.y / 2, std::max(s.x - s.y, 0.0));
-        break;
-      case Shape::Cylinder: dMassSetCylinderTotal(&mass, part.mass, 1, s.y / 2, s.x); break;
-    }
+    dMass mass = part_mass(part.shape, s, part.mass);
     dBodySetMass(b, &mass);
     dBodySetPosition(b, pose.p.x, pose.p.y, pose.p.z);
     dMatrix3 R;
@@ -772,24 +778,79 @@ std::pair<int, int> find_self_intersection(const CreatureModel& m, double margin
   ensure_ode_initialized();
   int n = m.n_parts();
   std::vector<dGeomID> geoms(n);
+  std::vector<std::array<double, 6>> box(n);  // AABB: min x, max x, min y, max y, min z, max z
   for (int i = 0; i < n; ++i) {
     geoms[i] = make_geom(nullptr, m.parts[i].shape, m.parts[i].size, margin);
     place_geom(geoms[i], m.parts[i].shape, m.parts[i].pose);
+    dGeomGetAABB(geoms[i], box[i].data());
+    // widened a little: colliders may report touching within rounding
+    for (int a = 0; a < 3; ++a) {
+      double pad = 1e-9 * (1 + box[i][2 * a + 1] - box[i][2 * a]);
+      box[i][2 * a] -= pad;
+      box[i][2 * a + 1] += pad;
+    }
+  }
+  // sweep along the axis where the parts spread most
+  int axis = 0;
+  double best = -1;
+  for (int a = 0; a < 3; ++a) {
+    double lo = 1e300, hi = -1e300;
+    for (const auto& b : box) lo = std::min(lo, b[2 * a]), hi = std::max(hi, b[2 * a + 1]);
+    if (hi - lo > best) best = hi - lo, axis = a;
+  }
+  std::vector<int> order(n);
+  for (int i = 0; i < n; ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](int a, int b) {
+    return box[a][2 * axis] < box[b][2 * axis] || (box[a][2 * axis] == box[b][2 * axis] && a < b);
+  });
+  auto overlap = [&](int i, int j) {
+    for (int a = 0; a < 3; ++a)
+      if (box[i][2 * a] > box[j][2 * a + 1] || box[j][2 * a] > box[i][2 * a + 1]) return false;
+    return true;
+  };
+  // parts joined by a joint may touch, unless the joint is released later
+  auto joined = [&](int i, int j) {
+    return (m.parts[j].parent == i && j != released) || (m.parts[i].parent == j && i != released);
+  };
+  dContactGeom contact;
+  auto collide = [&](int i, int j) { return dCollide(geoms[i], geoms[j], 1, &contact, sizeof(dContactGeom)) > 0; };
+  // candidate pairs (i < j) whose boxes overlap, tested in all-pairs order;
+  // parts piled up in one place (more pairs to look at than the budget) are
+  // tested pair by pair instead, where the first few usually overlap
+  const std::size_t budget = 64 * static_cast<std::size_t>(n) + 4096;
+  std::size_t looked = 0;
+  std::vector<std::pair<int, int>> pairs;
+  for (int s = 0; s < n && looked <= budget; ++s) {
+    int i = order[s];
+    for (int t = s + 1; t < n && box[order[t]][2 * axis] <= box[i][2 * axis + 1]; ++t) {
+      int j = order[t];
+      ++looked;
+      if (overlap(i, j) && !joined(i, j)) pairs.push_back({std::min(i, j), std::max(i, j)});
+    }
   }
   std::pair<int, int> hit{-1, -1};
-  dContactGeom contact;
-  for (int i = 0; i < n && hit.first < 0; ++i) {
-    for (int j = i + 1; j < n; ++j) {
-      // parts joined by a joint may touch, unless the joint is released later
-      if ((m.parts[j].parent == i && j != released) || (m.parts[i].parent == j && i != released)) continue;
-      if (dCollide(geoms[i], geoms[j], 1, &contact, sizeof(dContactGeom)) > 0) {
+  if (looked <= budget) {
+    std::sort(pairs.begin(), pairs.end());
+    for (auto [i, j] : pairs)
+      if (collide(i, j)) {
         hit = {i, j};
         break;
       }
-    }
+  } else {
+    for (int i = 0; i < n && hit.first < 0; ++i)
+      for (int j = i + 1; j < n; ++j)
+        if (!joined(i, j) && collide(i, j)) {
+          hit = {i, j};
+          break;
+        }
   }
   for (dGeomID g : geoms) dGeomDestroy(g);
   return hit;
+}
+
+Vec3 principal_inertia(Shape shape, Vec3 size, double mass) {
+  dMass ms = part_mass(shape, size, mass);
+  return {ms.I[0], ms.I[5], ms.I[10]};
 }
 
 }  // namespace bx
