@@ -311,8 +311,9 @@ Status apply_config_toml(RunConfig& cfg, std::string_view text, std::string_view
     root = toml::parse(text, source);
   } catch (const toml::parse_error& e) {
     const auto& b = e.source().begin;
+    // toml++ quotes what it saw, a newline included
     return Error{std::string(source) + ":" + std::to_string(b.line) + ":" + std::to_string(b.column) +
-                 ": " + std::string(e.description())};
+                 ": " + one_line(e.description(), 200)};
   }
   RunConfig out = cfg;  // apply all or nothing
   for (auto&& [sec_key, sec_node] : root) {

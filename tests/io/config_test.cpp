@@ -124,6 +124,9 @@ TEST(Config, QuotedStringsStayOnOneLine) {
   RunConfig cfg = default_run_config(Dialect::Sims1994);
   Status s = apply_config_toml(cfg, "[motor]\nmodel = \"a\\nb\"\n", "x.toml");
   EXPECT_EQ(s.error(), "x.toml: motor.model: expected one of servo, saturation, torque, pd, got \"a\\nb\"");
+  // toml++ quotes the text it stopped at, a newline included (found by fuzz_config)
+  s = apply_config_toml(cfg, "metric = [t\n", "x.toml");
+  EXPECT_EQ(s.error(), "x.toml:1:12: Error while parsing boolean: expected 'true', saw 't\\n'");
   s = apply_config_toml(cfg, "[motor]\n\"mo\\ndel\" = 1\n", "x.toml");
   EXPECT_EQ(s.error(), "x.toml: motor.mo\\ndel: unknown key (did you mean \"model\"?)");
 }
