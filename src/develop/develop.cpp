@@ -357,12 +357,6 @@ Development develop(const Genome& g, const DevelopDef& def) {
     if (!(p.mass >= kMinPartMass && p.mass <= kMaxPartMass))
       return {std::nullopt, part_name() + ": mass " + num_text(p.mass) + " kg, must lie in [" +
                                 num_text(kMinPartMass) + ", " + num_text(kMaxPartMass) + "] kg"};
-    Vec3 inertia = principal_inertia(p.shape, p.size, p.mass);
-    for (int a = 0; a < 3; ++a)
-      if (!(inertia[a] >= kMinPartInertia && inertia[a] <= kMaxPartInertia))
-        return {std::nullopt, part_name() + ": moment of inertia " + vec_text(inertia) +
-                                  " kg m^2, each must lie in [" + num_text(kMinPartInertia) + ", " +
-                                  num_text(kMaxPartInertia) + "] kg m^2"};
   }
   if (def.max_body_length > 0) {
     double length = m.body_length();

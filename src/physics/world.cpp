@@ -89,20 +89,6 @@ void place_geom(dGeomID g, Shape shape, const Pose& pose) {
   dGeomSetRotation(g, m);
 }
 
-// mass and inertia of a part's body (capsules and cylinders along ODE's z:
-// the geom is turned to x by its offset rotation)
-dMass part_mass(Shape shape, Vec3 s, double total) {
-  dMass mass;
-  dMassSetZero(&mass);
-  switch (shape) {
-    case Shape::Box: dMassSetBoxTotal(&mass, total, s.x, s.y, s.z); break;
-    case Shape::Sphere: dMassSetSphereTotal(&mass, total, s.x / 2); break;
-    case Shape::Capsule: dMassSetCapsuleTotal(&mass, total, 1, s.y / 2, std::max(s.x - s.y, 0.0)); break;
-    case Shape::Cylinder: dMassSetCylinderTotal(&mass, total, 1, s.y / 2, s.x); break;
-  }
-  return mass;
-}
-
 bool def_stop(double v) { return v >= 0; }
 
 // spheres, capsules and cylinders: the shapes that roll
@@ -467,8 +453,16 @@ void World::add_creature(const CreatureModel& m, const Pose& placement) {
     const PartModel& part = m.parts[i];
     Pose pose{placement.apply(part.pose.p), placement.R * part.pose.R};
     dBodyID b = dBodyCreate(w.world);
+    dMass mass;
     const Vec3& s = part.size;
-    dMass mass = part_mass(part.shape, s, part.mass);
+    switch (part.shape) {
+      case Shape::Box: dMassSetBoxTotal(&mass, part.mass, s.x, s.y, s.z); break;
+      case Shape::Sphere: dMassSetSphereTotal(&mass, part.mass, s.x / 2); break;
+      case Shape::Capsule:
+        dMassSetCapsuleTotal(&mass, part.mass, 1, s.y / 2, std::max(s.x - s.y, 0.0));
+        break;
+      case Shape::Cylinder: dMassSetCylinderTotal(&mass, part.mass, 1, s.y / 2, s.x); break;
+    }
     dBodySetMass(b, &mass);
     dBodySetPosition(b, pose.p.x, pose.p.y, pose.p.z);
     dMatrix3 R;
@@ -846,11 +840,6 @@ std::pair<int, int> find_self_intersection(const CreatureModel& m, double margin
   }
   for (dGeomID g : geoms) dGeomDestroy(g);
   return hit;
-}
-
-Vec3 principal_inertia(Shape shape, Vec3 size, double mass) {
-  dMass ms = part_mass(shape, size, mass);
-  return {ms.I[0], ms.I[5], ms.I[10]};
 }
 
 }  // namespace bx

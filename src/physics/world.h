@@ -120,8 +120,4 @@ class World {
 /// that is not piled up in one place.
 std::pair<int, int> find_self_intersection(const CreatureModel& m, double margin, int released = -1);
 
-/// Principal moments of inertia (kg m^2) of a part of this shape, full
-/// extents and mass, as the world gives its body (ODE's dMassSet*Total).
-Vec3 principal_inertia(Shape shape, Vec3 size, double mass);
-
 }  // namespace bx

@@ -196,6 +196,20 @@ TEST(Develop, PartsOutsideThePhysicalRangesAreNotViable) {
   EXPECT_EQ(d.reason.rfind("part 3 (gene 0): size [300000, ", 0), 0u) << d.reason;
 }
 
+// Mass is checked too, for any mass rule: a genome that skipped validation
+// (density 1e-25) grows a part ODE's mass check would assert on
+TEST(Develop, AMassOutsideItsRangeIsNotViable) {
+  Genome g = load("box.json");
+  g.nodes[0].density = 1e-25;  // 0.064 m^3: 6.4e-27 kg
+  Development d = develop(g);
+  EXPECT_FALSE(d.viable());
+  EXPECT_EQ(d.reason, "part 0 (gene 0): mass 6.4e-27 kg, must lie in [1e-20, 1e+20] kg");
+  g.nodes[0].density = 1e25;
+  EXPECT_EQ(develop(g).reason, "part 0 (gene 0): mass 6.4e+23 kg, must lie in [1e-20, 1e+20] kg");
+  g.nodes[0].density = kMaxDensity;
+  EXPECT_TRUE(develop(g).viable());
+}
+
 // A recursive edge that scales by 1.5 grows giants: the body-length limit
 // makes them non-viable, and leaves creatures within it alone.
 TEST(Develop, BodyLongerThanTheLimitIsNotViable) {

@@ -620,17 +620,5 @@ TEST(World, SelfIntersectionOfALongChainIsQuick) {
   EXPECT_EQ(find_self_intersection(m, 0.001), std::make_pair(0, 49999));
 }
 
-TEST(World, PrincipalInertiaIsODEsForEachShape) {
-  // a 1 kg box 1 x 2 x 3 m: m (b^2 + c^2) / 12, ...
-  Vec3 I = principal_inertia(Shape::Box, {1, 2, 3}, 1);
-  EXPECT_NEAR(I.x, 13.0 / 12, 1e-12);
-  EXPECT_NEAR(I.y, 10.0 / 12, 1e-12);
-  EXPECT_NEAR(I.z, 5.0 / 12, 1e-12);
-  // a sphere of diameter 2: 2/5 m r^2 about every axis
-  I = principal_inertia(Shape::Sphere, {2, 2, 2}, 5);
-  EXPECT_NEAR(I.x, 2.0, 1e-12);
-  EXPECT_NEAR(I.z, 2.0, 1e-12);
-}
-
 }  // namespace
 }  // namespace bx
