@@ -4,6 +4,7 @@
 #include "genome/genome_json.h"
 
 #include "core/files.h"
+#include "core/text.h"
 
 #include <unistd.h>
 
@@ -121,8 +122,11 @@ struct ParseFailure {
   throw ParseFailure{msg + ", got " + json_one_line(got, 120)};
 }
 
+// a key of the input as a path shows it: one line, at most 100 characters
+// (a JSON key may hold an escaped newline, and be of any length)
 std::string field_path(const std::string& path, std::string_view key) {
-  return path.empty() ? std::string(key) : path + "." + std::string(key);
+  std::string k = one_line(key, 100);
+  return path.empty() ? k : path + "." + k;
 }
 std::string index_path(const std::string& path, std::size_t i) {
   return path + "[" + std::to_string(i) + "]";

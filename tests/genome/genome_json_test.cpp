@@ -432,6 +432,17 @@ TEST(GenomeJsonLimits, QuotedValuesAreBoundedInLengthAndDepth) {
   EXPECT_EQ(json_one_line(v, 20), "[[[[[[[[[[[[[[[[[...");
 }
 
+// found by fuzz_genome: a key with an escaped newline made a message of two lines
+TEST(GenomeJsonLimits, KeysAreQuotedOnOneLine) {
+  EXPECT_EQ(err(edit(kSims, R"("version": 1,)", R"("version": 1, "dia\nlect": 1,)")),
+            "t.json: dia\\nlect: unknown field (expected one of format, version, dialect, nodes, "
+            "global_neurons, catapult, provenance), got 1");
+  EXPECT_EQ(err(edit(kSims, R"("version": 1,)", R"("version": 1, "a\tb": 1, "a\tb": 2,)")),
+            "t.json: a\\tb: field given twice");
+  std::string e = err(edit(kSims, R"("version": 1,)", R"("version": 1, ")" + std::string(100000, 'k') + R"(": 1,)"));
+  EXPECT_LT(e.size(), 300u);
+}
+
 TEST(GenomeJsonLimits, TextAboveTheSizeLimitIsRefusedUnread) {
   std::string text(kMaxGenomeBytes + 1, ' ');
   EXPECT_EQ(err(text), "t.json: too large for a genome: " + std::to_string(kMaxGenomeBytes + 1) +
