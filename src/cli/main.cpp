@@ -13,7 +13,8 @@
 namespace bx {
 
 int fail(const std::string& message) {
-  std::fprintf(stderr, "bestiary: %s\n", message.c_str());
+  // one line whatever the input quoted in it (a newline in a value, a huge key)
+  std::fprintf(stderr, "bestiary: %s\n", one_line(message, 4000).c_str());
   return 2;
 }
 

@@ -1,4 +1,5 @@
-// Small text helpers for messages: "did you mean" suggestions.
+// Small text helpers for messages: "did you mean" suggestions, user text
+// quoted on one line.
 #pragma once
 
 #include <algorithm>
@@ -37,6 +38,30 @@ inline std::string did_you_mean(std::string_view word, const std::vector<std::st
   std::size_t near = word.size() < 4 ? 1 : std::max<std::size_t>(2, word.size() / 3);
   if (!best || best_d == 0 || best_d > near) return "";
   return " (did you mean \"" + *best + "\"?)";
+}
+
+/// `text` as one line of a message: control characters (a newline, a tab,
+/// ...) written as escapes (\n, \t, \x01), and cut to `max_chars` bytes
+/// (if nonzero) ending in "...". User input quoted in an error can then
+/// neither end the error's line nor make it unbounded.
+inline std::string one_line(std::string_view text, std::size_t max_chars = 0) {
+  std::string out;
+  for (unsigned char c : text) {
+    if (max_chars > 3 && out.size() > max_chars) break;
+    if (c == '\n') out += "\\n";
+    else if (c == '\r') out += "\\r";
+    else if (c == '\t') out += "\\t";
+    else if (c < 0x20 || c == 0x7f) {
+      const char* hex = "0123456789abcdef";
+      out += "\\x";
+      out += hex[c >> 4];
+      out += hex[c & 15];
+    } else {
+      out += static_cast<char>(c);
+    }
+  }
+  if (max_chars > 3 && out.size() > max_chars) out = out.substr(0, max_chars - 3) + "...";
+  return out;
 }
 
 }  // namespace bx

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <unordered_set>
 
 #include "genome/dialect.h"
 #include "genome/genome_edit.h"  // face_frame: the edge frame on a face
@@ -92,6 +93,20 @@ double cross_section(Shape shape, Vec3 s) {
   return shape == Shape::Box ? s.y * s.z : kPi * std::pow((shape == Shape::Sphere ? s.x : s.y) / 2, 2);
 }
 
+// a number as %g prints it, for reasons
+std::string num_text(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
+std::string vec_text(Vec3 v) {
+  // appended piecewise: GCC 12 at -O3 warns falsely (-Wrestrict) on "[" + string&&
+  std::string s = "[";
+  s.append(num_text(v.x)).append(", ").append(num_text(v.y)).append(", ").append(num_text(v.z)).append("]");
+  return s;
+}
+
 // unit vector perpendicular to a, as close to b as possible
 Vec3 orthogonalize(Vec3 a, Vec3 b) {
   Vec3 r = b - dot(a, b) * a;
@@ -104,48 +119,65 @@ class Grower {
   Grower(const Genome& g, int max_parts) : g_(g), max_parts_(max_parts) {}
 
   /// The instances in depth-first order; empty if more than max_parts.
+  /// Iterative, with the count of each node on the current root-to-part path
+  /// kept up to date, so growing n parts takes O(n) time and no stack (a node
+  /// with an edge to itself grows a chain as long as max_parts allows).
   std::vector<Instance> grow() {
     Instance root;
     root.node = 0;
     root.size = g_.nodes[0].size;
     root.children.resize(g_.nodes[0].edges.size());
     out_.push_back(root);
-    expand(0);
-    if (overflow_) return {};
+    on_path_.assign(g_.nodes.size(), 0);
+    enter(0);
+    while (!stack_.empty()) {
+      Frame& f = stack_.back();
+      const NodeGene& node = g_.nodes[out_[f.instance].node];
+      if (f.edge >= node.edges.size()) {
+        // every edge done: leave this part
+        --on_path_[out_[f.instance].node];
+        stack_.pop_back();
+        continue;
+      }
+      const EdgeGene& e = node.edges[f.edge];
+      // one instance per combination of reflections: 2^n
+      int copies = 1 << e.reflect.size();
+      if (f.mask == 0 && ((e.terminal_only && !f.at_limit) ||
+                          on_path_[e.to] >= g_.nodes[e.to].recursive_limit)) {
+        ++f.edge;
+        continue;
+      }
+      if (f.mask >= copies) {
+        ++f.edge;
+        f.mask = 0;
+        continue;
+      }
+      Vec3 flip{1, 1, 1};
+      for (std::size_t r = 0; r < e.reflect.size(); ++r)
+        if (f.mask & (1 << r)) flip[e.reflect[r]] = -1;
+      if (static_cast<int>(out_.size()) >= max_parts_) return {};
+      int i = f.instance, k = static_cast<int>(f.edge);
+      ++f.mask;  // `f` is not used after enter(), which may move the stack
+      int c = add_child(i, k, Mat3::diag(flip.x, flip.y, flip.z));
+      out_[i].children[k].push_back(c);
+      enter(c);
+    }
     return std::move(out_);
   }
 
  private:
-  // times node n occurs on the path from the root to instance i (inclusive)
-  int occurrences(int i, int n) const {
-    int k = 0;
-    for (; i >= 0; i = out_[i].parent) k += out_[i].node == n;
-    return k;
-  }
+  // a part being grown: the next edge and reflection to follow
+  struct Frame {
+    int instance;
+    std::size_t edge = 0;
+    int mask = 0;
+    bool at_limit = false;  // its node is at its recursive limit on this path
+  };
 
-  void expand(int i) {
-    if (overflow_) return;
-    const NodeGene& node = g_.nodes[out_[i].node];
-    bool at_limit = occurrences(i, out_[i].node) >= node.recursive_limit;
-    for (std::size_t k = 0; k < node.edges.size(); ++k) {
-      const EdgeGene& e = node.edges[k];
-      if (e.terminal_only && !at_limit) continue;
-      if (occurrences(i, e.to) >= g_.nodes[e.to].recursive_limit) continue;
-      // one instance per combination of reflections: 2^n
-      int copies = 1 << e.reflect.size();
-      for (int mask = 0; mask < copies; ++mask) {
-        Vec3 flip{1, 1, 1};
-        for (std::size_t r = 0; r < e.reflect.size(); ++r)
-          if (mask & (1 << r)) flip[e.reflect[r]] = -1;
-        if (static_cast<int>(out_.size()) >= max_parts_) {
-          overflow_ = true;
-          return;
-        }
-        int c = add_child(i, static_cast<int>(k), Mat3::diag(flip.x, flip.y, flip.z));
-        out_[i].children[k].push_back(c);
-        expand(c);
-      }
-    }
+  void enter(int i) {
+    int n = out_[i].node;
+    ++on_path_[n];
+    stack_.push_back({i, 0, 0, on_path_[n] >= g_.nodes[n].recursive_limit});
   }
 
   int add_child(int i, int edge, const Mat3& mirror) {
@@ -179,8 +211,9 @@ class Grower {
  private:
   const Genome& g_;
   int max_parts_;
-  bool overflow_ = false;
   std::vector<Instance> out_;
+  std::vector<int> on_path_;  // per node: its parts on the path from the root to the current one
+  std::vector<Frame> stack_;  // that path
 };
 
 // Resolves one input gene of instance `inst` to a value slot (-1: reads 0).
@@ -222,16 +255,14 @@ class Wiring {
 
  private:
   int missing(const std::string& where) {
-    if (std::find(reported_.begin(), reported_.end(), where) == reported_.end()) {
-      reported_.push_back(where);
+    if (reported_.insert(where).second)
       m_.warnings.push_back(where + ": its source does not exist in this body; it reads 0");
-    }
     return -1;
   }
   const Genome& g_;
   const std::vector<Instance>& inst_;
   CreatureModel& m_;
-  std::vector<std::string> reported_;
+  std::unordered_set<std::string> reported_;
 };
 
 // compiles one neuron (or global neuron) into the brain arrays
@@ -309,6 +340,23 @@ Development develop(const Genome& g, const DevelopDef& def) {
     part.mirrored = flipped[i];
     part.depth = in.parent < 0 ? 0 : m.parts[in.parent].depth + 1;
     m.parts.push_back(part);
+  }
+  // physical ranges (genome/dialect.h): a part's size compounds the scales of
+  // the edges that grew it, so genes within range can still grow parts that
+  // are not; checked before ODE sees them
+  for (int i = 0; i < n; ++i) {
+    const PartModel& p = m.parts[i];
+    auto part_name = [&] {
+      return "part " + std::to_string(i) + " (gene " + std::to_string(p.gene) + ")";
+    };
+    for (int a = 0; a < 3; ++a)
+      if (!(p.size[a] >= kMinPartSize && p.size[a] <= kMaxPartSize))
+        return {std::nullopt, part_name() + ": size " + vec_text(p.size) + " m, each extent must lie in [" +
+                                  num_text(kMinPartSize) + ", " + num_text(kMaxPartSize) +
+                                  "] m (edge scales compound along the body)"};
+    if (!(p.mass >= kMinPartMass && p.mass <= kMaxPartMass))
+      return {std::nullopt, part_name() + ": mass " + num_text(p.mass) + " kg, must lie in [" +
+                                num_text(kMinPartMass) + ", " + num_text(kMaxPartMass) + "] kg"};
   }
   if (def.max_body_length > 0) {
     double length = m.body_length();

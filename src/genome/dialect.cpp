@@ -116,7 +116,7 @@ using Problem = std::optional<std::string>;
 constexpr double kTol = 1e-9;
 
 std::string problem(const std::string& path, std::string_view what, const json& got) {
-  return path + ": " + std::string(what) + ", got " + json_one_line(got);
+  return path + ": " + std::string(what) + ", got " + json_one_line(got, 120);
 }
 
 std::string in_dialect(const DialectRules& r) {
@@ -384,8 +384,16 @@ class Validator {
           std::string(to_string(node.shape)));
     if (!finite(node.size) || !(node.size.x > 0 && node.size.y > 0 && node.size.z > 0))
       return problem(path + ".size", "each dimension must be > 0", vec_json(node.size));
+    for (int a = 0; a < 3; ++a)
+      if (node.size[a] < kMinPartSize || node.size[a] > kMaxPartSize)
+        return problem(path + ".size",
+                       "each dimension must lie in " + range_text(kMinPartSize, kMaxPartSize) + " m",
+                       vec_json(node.size));
     if (!std::isfinite(node.density) || !(node.density > 0))
       return problem(path + ".density", "must be > 0", node.density);
+    if (node.density < kMinDensity || node.density > kMaxDensity)
+      return problem(path + ".density",
+                     "must lie in " + range_text(kMinDensity, kMaxDensity) + " kg/m^3", node.density);
     // a catapult's projectile hangs by a fixed joint (checked by check_catapult)
     bool projectile = g_.catapult && g_.catapult->projectile == i;
     if (auto p = check_joint(node.joint, path + ".joint", projectile)) return p;
@@ -513,10 +521,11 @@ class Validator {
     return std::nullopt;
   }
 
-  static std::string range_text(double bound) {
+  static std::string range_text(double bound) { return range_text(-bound, bound); }
+  static std::string range_text(double lo, double hi) {
     // appended piecewise: GCC 12 at -O3 warns falsely (-Wrestrict) on "[" + string&&
     std::string s = "[";
-    s.append(json(-bound).dump()).append(", ").append(json(bound).dump()).append("]");
+    s.append(json(lo).dump()).append(", ").append(json(hi).dump()).append("]");
     return s;
   }
 
@@ -655,6 +664,9 @@ class Validator {
       }
     if (!std::isfinite(e.scale) || !(e.scale > 0))
       return problem(path + ".scale", "must be > 0", e.scale);
+    if (e.scale < kMinEdgeScale || e.scale > kMaxEdgeScale)
+      return problem(path + ".scale", "must lie in " + range_text(kMinEdgeScale, kMaxEdgeScale),
+                     e.scale);
     for (std::size_t a = 0; a < e.reflect.size(); ++a) {
       int axis = e.reflect[a];
       if (!contains(r_.reflect_axes, axis))

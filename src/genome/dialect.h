@@ -58,9 +58,32 @@ std::optional<Dialect> parse_dialect(std::string_view name);
 inline constexpr int kMinReleaseDelaySteps = 2;
 inline constexpr int kMaxReleaseDelaySteps = 1001;
 
+/// Ranges of a part's physical values, checked by validate() on the genes and
+/// by develop() on every grown part (whose size compounds its edges' scales).
+/// Physically generous (a 0.1 mm grain to a 10 km block, aerogel to ten times
+/// the densest metal) and far inside double precision: they keep masses
+/// within about [5e-16, 1e18] kg and moments of inertia within about
+/// [5e-25, 1e26] kg m^2, while ODE's mass check and its quaternion
+/// normalisation assert on values near the ends of double precision (sizes
+/// 1e-308 or 1e308, densities 5e-324 or 1e200 did; docs/fuzzing.md).
+inline constexpr double kMinPartSize = 1e-4;     ///< m, each extent
+inline constexpr double kMaxPartSize = 1e4;      ///< m, each extent
+inline constexpr double kMinDensity = 1e-3;      ///< kg/m^3
+inline constexpr double kMaxDensity = 1e6;       ///< kg/m^3
+inline constexpr double kMinEdgeScale = 1e-3;    ///< an edge's size factor
+inline constexpr double kMaxEdgeScale = 1e3;
+/// A grown part's mass (kg) must lie within these, or it is not viable: a
+/// guard for every mass rule (the ranges above keep density x volume well
+/// inside). With extents in [kMinPartSize, kMaxPartSize] its principal
+/// moments of inertia (mass x (a^2 + b^2) / 12 for a box, 2/5 mass r^2 for a
+/// sphere) then lie within [1e-29, 2e27] kg m^2: positive and finite, as
+/// ODE's mass check needs, so they need no check of their own.
+inline constexpr double kMinPartMass = 1e-20, kMaxPartMass = 1e20;
+
 /// Checks a genome against its dialect and against itself (edge targets,
 /// source indices, neuron functions and parameter ranges, sensor and
-/// effector degrees of freedom). The error names the field as a path such as
+/// effector degrees of freedom, sizes, densities and edge scales within the
+/// ranges above). The error names the field as a path such as
 /// `nodes[2].joint.limits[0]` and the bad value. A catapult (Genome::catapult,
 /// chaumont2007 only) also needs: a projectile node other than the root, a
 /// box with a fixed joint (the one exception to the dialect's joint types),

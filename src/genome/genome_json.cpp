@@ -4,6 +4,7 @@
 #include "genome/genome_json.h"
 
 #include "core/files.h"
+#include "core/text.h"
 
 #include <unistd.h>
 
@@ -16,7 +17,6 @@
 #include <cstring>
 #include <fstream>
 #include <initializer_list>
-#include <set>
 #include <sstream>
 
 #include "genome/dialect.h"
@@ -45,26 +45,34 @@ std::string key_text(const std::string& key) {
   return J(key).dump(-1, ' ', false, J::error_handler_t::replace);
 }
 
-// one line, ", " and ": " separators
+// one line, ", " and ": " separators; stops once `out` is longer than
+// `limit`, and shows containers deeper than kMaxGenomeDepth as [...] or {...}
+// (error messages quote values from any input: neither size nor depth of
+// what they print may depend on it)
 template <class J>
-void write_compact(const J& v, std::string& out) {
-  if (v.is_array()) {
+void write_compact(const J& v, std::string& out, std::size_t limit = SIZE_MAX, int depth = 0) {
+  if (out.size() > limit) return;
+  if (v.is_structured() && depth >= kMaxGenomeDepth) {
+    out += v.is_array() ? "[...]" : "{...}";
+  } else if (v.is_array()) {
     out += '[';
     bool first = true;
     for (const auto& e : v) {
+      if (out.size() > limit) return;
       if (!first) out += ", ";
       first = false;
-      write_compact(e, out);
+      write_compact(e, out, limit, depth + 1);
     }
     out += ']';
   } else if (v.is_object()) {
     out += '{';
     bool first = true;
     for (auto it = v.begin(); it != v.end(); ++it) {
+      if (out.size() > limit) return;
       if (!first) out += ", ";
       first = false;
       out += key_text<J>(it.key()) + ": ";
-      write_compact(it.value(), out);
+      write_compact(it.value(), out, limit, depth + 1);
     }
     out += '}';
   } else {
@@ -114,8 +122,11 @@ struct ParseFailure {
   throw ParseFailure{msg + ", got " + json_one_line(got, 120)};
 }
 
+// a key of the input as a path shows it: one line, at most 100 characters
+// (a JSON key may hold an escaped newline, and be of any length)
 std::string field_path(const std::string& path, std::string_view key) {
-  return path.empty() ? std::string(key) : path + "." + std::string(key);
+  std::string k = one_line(key, 100);
+  return path.empty() ? k : path + "." + k;
 }
 std::string index_path(const std::string& path, std::size_t i) {
   return path + "[" + std::to_string(i) + "]";
@@ -452,55 +463,104 @@ Genome parse_genome(const json& j) {
   return g;
 }
 
-// JSON keeps the last of two equal keys; a genome file must not have them.
-// Tracks the path of the value being parsed to name the field given twice.
-class DuplicateKeyCheck {
+// Builds the JSON value from the parser's events (nlohmann's SAX interface),
+// refusing what a genome file must not have: a key given twice in one object
+// (JSON would keep the last) and nesting deeper than kMaxGenomeDepth. Each
+// event costs O(log keys): nlohmann's callback parser, used before, scanned
+// the whole parent array at every object's end (quadratic in its length).
+class StrictBuilder {
  public:
-  struct Found {
-    std::string path;
-  };
+  using number_integer_t = json::number_integer_t;
+  using number_unsigned_t = json::number_unsigned_t;
+  using number_float_t = json::number_float_t;
+  using string_t = json::string_t;
+  using binary_t = json::binary_t;
 
-  bool operator()(int /*depth*/, json::parse_event_t event, json& parsed) {
-    using E = json::parse_event_t;
-    switch (event) {
-      case E::object_start:
-      case E::array_start:
-        next_element();
-        frames_.push_back({event == E::object_start, "", -1, {}});
-        break;
-      case E::object_end:
-      case E::array_end: frames_.pop_back(); break;
-      case E::key: {
-        Frame& f = frames_.back();
-        f.key = parsed.get<std::string>();
-        if (!f.keys.insert(f.key).second) throw Found{path()};
-        break;
-      }
-      case E::value: next_element(); break;
+  json root;
+  std::string error;          // our refusal (path and what), empty if none
+  std::size_t error_byte = 0; // parser errors: where the parser stopped
+  int error_id = 0;           // parser errors: nlohmann's exception id
+  std::string parser_error;   // parser errors: nlohmann's message
+
+  bool null() { return value(nullptr); }
+  bool boolean(bool v) { return value(v); }
+  bool number_integer(number_integer_t v) { return value(v); }
+  bool number_unsigned(number_unsigned_t v) { return value(v); }
+  bool number_float(number_float_t v, const string_t&) { return value(v); }
+  bool string(string_t& v) { return value(std::move(v)); }
+  bool binary(binary_t& v) { return value(json::binary(std::move(v))); }
+
+  bool start_object(std::size_t) { return open(json::object()); }
+  bool start_array(std::size_t) { return open(json::array()); }
+  bool end_object() { return close(); }
+  bool end_array() { return close(); }
+
+  bool key(string_t& k) {
+    Frame& f = stack_.back();
+    f.key = std::move(k);
+    if (f.value->contains(f.key)) {
+      error = path() + ": field given twice";
+      return false;
     }
     return true;
   }
 
- private:
-  struct Frame {
-    bool object;
-    std::string key;
-    int index;
-    std::set<std::string> keys;
-  };
-
-  void next_element() {
-    if (!frames_.empty() && !frames_.back().object) ++frames_.back().index;
+  bool parse_error(std::size_t position, const std::string&, const nlohmann::detail::exception& e) {
+    error_byte = position;
+    error_id = e.id;
+    parser_error = e.what();
+    return false;
   }
 
+ private:
+  struct Frame {
+    json* value;      // the array or object being filled
+    std::string key;  // objects: the key of the value being read
+  };
+
+  // the slot the next value goes into
+  json* slot() {
+    if (stack_.empty()) return &root;
+    Frame& f = stack_.back();
+    if (f.value->is_array()) {
+      f.value->push_back(nullptr);
+      return &f.value->back();
+    }
+    return &(*f.value)[f.key];
+  }
+
+  bool value(json v) {
+    *slot() = std::move(v);
+    return true;
+  }
+
+  bool open(json container) {
+    json* at = slot();
+    if (static_cast<int>(stack_.size()) >= kMaxGenomeDepth) {
+      error = path() + ": nested deeper than " + std::to_string(kMaxGenomeDepth) +
+              " levels of arrays and objects (a genome needs 6)";
+      return false;
+    }
+    *at = std::move(container);
+    stack_.push_back({at, {}});
+    return true;
+  }
+
+  bool close() {
+    stack_.pop_back();
+    return true;
+  }
+
+  // the path of the value being read: nodes[1].effectors[0].dof
   std::string path() const {
     std::string p;
-    for (const Frame& f : frames_)
-      p = f.object ? field_path(p, f.key) : index_path(p, static_cast<std::size_t>(f.index));
+    for (const Frame& f : stack_)
+      p = f.value->is_object() ? field_path(p, f.key)
+                               : index_path(p, f.value->empty() ? 0 : f.value->size() - 1);
     return p;
   }
 
-  std::vector<Frame> frames_;
+  std::vector<Frame> stack_;
 };
 
 std::string with_source(std::string_view source, const std::string& message) {
@@ -644,7 +704,7 @@ J genome_json(const Genome& g) {
 
 std::string json_one_line(const nlohmann::json& v, std::size_t max_chars) {
   std::string out;
-  write_compact(v, out);
+  write_compact(v, out, max_chars > 0 ? max_chars : SIZE_MAX);
   if (max_chars > 3 && out.size() > max_chars) out = out.substr(0, max_chars - 3) + "...";
   return out;
 }
@@ -661,16 +721,18 @@ Result<Genome> genome_from_json(const nlohmann::json& j, std::string_view source
 }
 
 Result<Genome> genome_from_string(std::string_view text, std::string_view source) {
-  json j;
-  try {
-    j = json::parse(text.begin(), text.end(), DuplicateKeyCheck());
-  } catch (const DuplicateKeyCheck::Found& d) {
-    return Error{with_source(source, d.path + ": field given twice")};
-  } catch (const json::parse_error& e) {
+  if (text.size() > kMaxGenomeBytes)
+    return Error{with_source(source, "too large for a genome: " + std::to_string(text.size()) +
+                                         " bytes, above " + std::to_string(kMaxGenomeBytes))};
+  StrictBuilder b;
+  if (!json::sax_parse(text.begin(), text.end(), &b)) {
+    if (!b.error.empty()) return Error{with_source(source, b.error)};
     // "[json.exception.parse_error.101] parse error at line 3, column 5: syntax error ..."
-    std::string what = e.what();
+    std::string what = b.parser_error;
     if (auto p = what.find("] "); p != std::string::npos) what = what.substr(p + 2);
-    std::string where = "byte " + std::to_string(e.byte);
+    if (b.error_id < 101 || b.error_id > 199)  // e.g. out_of_range 406: a number too large
+      return Error{with_source(source, "invalid JSON: " + what)};
+    std::string where = "byte " + std::to_string(b.error_byte);
     int line = 0, column = 0, used = 0;
     if (std::sscanf(what.c_str(), "parse error at line %d, column %d: %n", &line, &column, &used) ==
             2 &&
@@ -680,13 +742,8 @@ Result<Genome> genome_from_string(std::string_view text, std::string_view source
       what = what.substr(static_cast<std::size_t>(used));
     }
     return Error{with_source(source, where + ": invalid JSON: " + what)};
-  } catch (const json::exception& e) {
-    // e.g. out_of_range 406: a number too large for a double
-    std::string what = e.what();
-    if (auto p = what.find("] "); p != std::string::npos) what = what.substr(p + 2);
-    return Error{with_source(source, "invalid JSON: " + what)};
   }
-  return genome_from_json(j, source);
+  return genome_from_json(b.root, source);
 }
 
 Result<Genome> load_genome(const std::string& path) {

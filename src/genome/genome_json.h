@@ -19,12 +19,22 @@ inline constexpr std::string_view kGenomeFormat = "bestiary-genome";
 /// The "version" this build reads and writes.
 inline constexpr int kGenomeVersion = 1;
 
+/// Largest genome text read (bytes): a 300,000-neuron genome in canonical form
+/// is about 20 MB, and the parsed JSON takes roughly ten times its text in memory.
+inline constexpr std::size_t kMaxGenomeBytes = 64u << 20;
+/// Deepest nesting of arrays and objects read. A genome nests 6 deep
+/// (nodes[].neurons[].inputs[]); the rest is room for a provenance. Checked
+/// while parsing, before anything that recurses sees the value.
+inline constexpr int kMaxGenomeDepth = 64;
+
 /// Genome from its JSON form, checked by validate(). Errors read
 /// "<source>: <path>: <what is wrong>, got <value>".
 Result<Genome> genome_from_json(const nlohmann::json& j, std::string_view source);
 
 /// Genome from JSON text; a syntax error names `source`, the line, column and
-/// byte where the parser stopped.
+/// byte where the parser stopped. Text longer than kMaxGenomeBytes, nesting
+/// deeper than kMaxGenomeDepth and a field given twice are errors. Linear in
+/// the text's length.
 Result<Genome> genome_from_string(std::string_view text, std::string_view source);
 
 /// Genome from a file; errors name the path.
@@ -47,7 +57,8 @@ Status save_genome(const std::string& path, const Genome& g);
 
 /// A JSON value on one line as error messages quote it ([1.0, -2.0],
 /// {"to": 1}); non-finite numbers as nan, inf, -inf. Longer than `max_chars`
-/// (if nonzero) is cut and ends in "...".
+/// (if nonzero) is cut and ends in "..." (the rest is not rendered); values
+/// nested deeper than kMaxGenomeDepth show as [...] or {...}.
 std::string json_one_line(const nlohmann::json& v, std::size_t max_chars = 0);
 
 }  // namespace bx

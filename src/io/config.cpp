@@ -150,7 +150,7 @@ std::string show(const toml::node& n) {
   if (n.is_floating_point())
     ss << num(*n.value<double>());
   else if (n.is_string())
-    ss << '"' << *n.value<std::string>() << '"';
+    ss << '"' << one_line(*n.value<std::string>(), 200) << '"';
   else if (n.is_table())
     ss << "a table";
   else if (const toml::array* a = n.as_array()) {
@@ -240,6 +240,61 @@ Status set_field(const Field& f, RunConfig& cfg, const toml::node& n, const std:
   return Ok{};
 }
 
+// a TOML basic string: "text" with quotes and backslashes escaped (control
+// characters are refused before)
+std::string toml_quote(std::string_view text) {
+  std::string q = "\"";
+  for (char c : text) {
+    if (c == '"' || c == '\\') q += '\\';
+    q += c;
+  }
+  return q + "\"";
+}
+
+bool name_char(char c) {
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' || c == '-';
+}
+
+// One `--set section.key=value` as a line of TOML that sets that key and no
+// other: the key is a bare section.key, the value one line of TOML (a bare
+// word is a string). A newline in the value could otherwise start a new line
+// that sets any key.
+Result<std::string> override_toml(const std::string& o) {
+  std::string shown = "\"";  // appended piecewise: GCC 12 warns falsely (-Wrestrict) on "x" + string&&
+  shown.append(one_line(o, 200)).append("\"");
+  for (unsigned char c : o)
+    if (c < 0x20 || c == 0x7f)
+      return Error{"--set: a control character (newline, tab, ...) in " + shown +
+                   " (one section.key=value per --set)"};
+  auto eq = o.find('=');
+  std::string key = eq == std::string::npos ? o : o.substr(0, eq);
+  while (!key.empty() && key.back() == ' ') key.pop_back();
+  while (!key.empty() && key.front() == ' ') key.erase(0, 1);
+  auto dot = key.find('.');
+  bool key_ok = eq != std::string::npos && dot != std::string::npos && dot > 0 && dot + 1 < key.size();
+  for (std::size_t i = 0; key_ok && i < key.size(); ++i) key_ok = i == dot || name_char(key[i]);
+  if (!key_ok) return Error{"--set: expected section.key=value, got " + shown};
+  std::string section = key.substr(0, dot), name = key.substr(dot + 1), value = o.substr(eq + 1);
+  // a bare word is a string; anything else is read as TOML
+  std::string line = key + " = " + value;
+  toml::table parsed;
+  try {
+    parsed = toml::parse(line);
+  } catch (const toml::parse_error&) {
+    line = key + " = " + toml_quote(value);
+    try {
+      parsed = toml::parse(line);
+    } catch (const toml::parse_error& e) {
+      return Error{"--set " + one_line(o, 200) + ": " + one_line(e.description(), 200)};
+    }
+  }
+  // exactly the one key, whatever the value held
+  const toml::table* sec = parsed[section].as_table();
+  if (parsed.size() != 1 || !sec || sec->size() != 1 || !sec->contains(name))
+    return Error{"--set: " + shown + " sets more than " + key};
+  return line;
+}
+
 }  // namespace
 
 RunConfig default_run_config(Dialect d) {
@@ -257,12 +312,13 @@ Status apply_config_toml(RunConfig& cfg, std::string_view text, std::string_view
     root = toml::parse(text, source);
   } catch (const toml::parse_error& e) {
     const auto& b = e.source().begin;
+    // toml++ quotes what it saw, a newline included
     return Error{std::string(source) + ":" + std::to_string(b.line) + ":" + std::to_string(b.column) +
-                 ": " + std::string(e.description())};
+                 ": " + one_line(e.description(), 200)};
   }
   RunConfig out = cfg;  // apply all or nothing
   for (auto&& [sec_key, sec_node] : root) {
-    std::string sec(sec_key.str());
+    std::string sec = one_line(sec_key.str(), 100);  // as messages quote it
     auto* table = sec_node.as_table();
     bool known = false;
     for (const auto& f : fields()) known |= f.section == sec;
@@ -273,7 +329,7 @@ Status apply_config_toml(RunConfig& cfg, std::string_view text, std::string_view
     }
     if (!table) return Error{std::string(source) + ": " + sec + ": expected a table, got " + show(sec_node)};
     for (auto&& [key, node] : *table) {
-      std::string where = std::string(source) + ": " + sec + "." + std::string(key.str());
+      std::string where = std::string(source) + ": " + sec + "." + one_line(key.str(), 100);
       const Field* field = nullptr;
       for (const auto& f : fields())
         if (f.section == sec && f.key == key.str()) field = &f;
@@ -285,7 +341,7 @@ Status apply_config_toml(RunConfig& cfg, std::string_view text, std::string_view
         std::vector<std::string> keys;
         for (const auto& f : fields())
           if (f.section == sec) keys.emplace_back(f.key);
-        return Error{where + ": unknown key" + did_you_mean(key.str(), keys)};
+        return Error{where + ": unknown key" + did_you_mean(one_line(key.str(), 100), keys)};
       }
       if (Status s = set_field(*field, out, node, where); !s) return s;
     }
@@ -305,20 +361,9 @@ Result<RunConfig> read_run_config(std::string_view text, std::string_view source
   Dialect d = Dialect::Sims1994;
   std::vector<std::pair<std::string, std::string>> layers = {{std::string(text), std::string(source)}};
   for (const auto& o : overrides) {
-    auto eq = o.find('=');
-    if (eq == std::string::npos || eq == 0)
-      return Error{"--set: expected section.key=value, got \"" + o + "\""};
-    std::string key = o.substr(0, eq), value = o.substr(eq + 1);
-    if (key.find('.') == std::string::npos)
-      return Error{"--set: expected section.key=value, got \"" + o + "\""};
-    // a bare word is a string; anything else is read as TOML
-    std::string line = key + " = " + value;
-    try {
-      (void)toml::parse(line);
-    } catch (const toml::parse_error&) {
-      line = key + " = \"" + value + "\"";
-    }
-    layers.push_back({line, "--set " + o});
+    auto line = override_toml(o);
+    if (!line) return Error{line.error()};
+    layers.push_back({*line, "--set " + o});
   }
   for (const auto& [t, src] : layers) {
     try {

@@ -154,6 +154,62 @@ TEST(Develop, TooManyPartsIsNotViable) {
   EXPECT_EQ(d.reason, "too many parts: more than 10");
 }
 
+// A node with an edge to itself: a chain as long as max_parts allows. At the
+// largest max_parts (100,000) the recursive growth overflowed the stack and
+// the path scan made refusing quadratic in the limit (issue 13)
+TEST(Develop, ASelfChainGrowsWithoutRecursionUpToMaxParts) {
+  Genome g;
+  g.dialect = Dialect::Sims1994;
+  NodeGene n;
+  n.size = {0.1, 0.1, 0.1};
+  n.recursive_limit = 1000000000;
+  n.edges.push_back(EdgeGene{});
+  g.nodes = {n};
+  ASSERT_TRUE(validate(g).ok()) << validate(g).error();
+  DevelopDef def;
+  def.max_parts = 100000;
+  Development d = develop(g, def);
+  EXPECT_FALSE(d.viable());
+  EXPECT_EQ(d.reason, "too many parts: more than 100000");
+  // a limit the chain meets: 99,999 parts in a line, viable
+  g.nodes[0].recursive_limit = 99999;
+  d = develop(g, def);
+  ASSERT_TRUE(d.viable()) << d.reason;
+  EXPECT_EQ(d.model->n_parts(), 99999);
+  EXPECT_EQ(d.model->parts.back().parent, 99997);
+  EXPECT_NEAR(d.model->parts.back().pose.p.x, 0.1 * 99998, 1e-6);
+}
+
+// Edge scales compound: genes within range can grow parts that are not
+TEST(Develop, PartsOutsideThePhysicalRangesAreNotViable) {
+  Genome g = load("sims_recursive.json");
+  g.nodes[0].edges[0].scale = 0.01;  // 0.3 m, 3 mm, 0.03 mm: below 0.1 mm
+  ASSERT_TRUE(validate(g).ok()) << validate(g).error();
+  Development d = develop(g);
+  EXPECT_FALSE(d.viable());
+  EXPECT_EQ(d.reason,
+            "part 2 (gene 0): size [3e-05, 2e-05, 1.5e-05] m, each extent must lie in [0.0001, 10000] m "
+            "(edge scales compound along the body)");
+  g.nodes[0].edges[0].scale = 100;  // 0.3 m, 30 m, 3 km, 300 km
+  d = develop(g);
+  EXPECT_FALSE(d.viable());
+  EXPECT_EQ(d.reason.rfind("part 3 (gene 0): size [300000, ", 0), 0u) << d.reason;
+}
+
+// Mass is checked too, for any mass rule: a genome that skipped validation
+// (density 1e-25) grows a part ODE's mass check would assert on
+TEST(Develop, AMassOutsideItsRangeIsNotViable) {
+  Genome g = load("box.json");
+  g.nodes[0].density = 1e-25;  // 0.064 m^3: 6.4e-27 kg
+  Development d = develop(g);
+  EXPECT_FALSE(d.viable());
+  EXPECT_EQ(d.reason, "part 0 (gene 0): mass 6.4e-27 kg, must lie in [1e-20, 1e+20] kg");
+  g.nodes[0].density = 1e25;
+  EXPECT_EQ(develop(g).reason, "part 0 (gene 0): mass 6.4e+23 kg, must lie in [1e-20, 1e+20] kg");
+  g.nodes[0].density = kMaxDensity;
+  EXPECT_TRUE(develop(g).viable());
+}
+
 // A recursive edge that scales by 1.5 grows giants: the body-length limit
 // makes them non-viable, and leaves creatures within it alone.
 TEST(Develop, BodyLongerThanTheLimitIsNotViable) {

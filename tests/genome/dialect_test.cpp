@@ -172,6 +172,35 @@ TEST(Validate, MessagesHavePathsAndValues) {
             "(expected one of x, y, z), got [3]");
 }
 
+// values ODE's asserts met (issue 13): refused by validation, naming the field and the value
+TEST(Validate, PhysicalRangesKeepTheEngineInsideDoublePrecision) {
+  Genome g = pair(Dialect::Sims1994);
+  g.nodes[1].size.x = 1e-308;
+  EXPECT_EQ(error_of(g), "nodes[1].size: each dimension must lie in [0.0001, 10000.0] m, got [1e-308, 0.5, 0.5]");
+  g.nodes[1].size.x = 5e-324;
+  EXPECT_EQ(error_of(g), "nodes[1].size: each dimension must lie in [0.0001, 10000.0] m, got [5e-324, 0.5, 0.5]");
+  g.nodes[1].size.x = 1e308;
+  EXPECT_EQ(error_of(g), "nodes[1].size: each dimension must lie in [0.0001, 10000.0] m, got [1e+308, 0.5, 0.5]");
+
+  g = pair(Dialect::Sims1994);
+  g.nodes[0].density = 1e200;
+  EXPECT_EQ(error_of(g), "nodes[0].density: must lie in [0.001, 1000000.0] kg/m^3, got 1e+200");
+  g.nodes[0].density = 5e-324;
+  EXPECT_EQ(error_of(g), "nodes[0].density: must lie in [0.001, 1000000.0] kg/m^3, got 5e-324");
+
+  g = pair(Dialect::Sims1994);
+  g.nodes[0].edges[0].scale = 1e15;
+  EXPECT_EQ(error_of(g), "nodes[0].edges[0].scale: must lie in [0.001, 1000.0], got 1e+15");
+
+  // the ends of each range are fine
+  g = pair(Dialect::Sims1994);
+  g.nodes[1].size = {kMinPartSize, kMaxPartSize, 1};
+  g.nodes[0].density = kMaxDensity;
+  g.nodes[1].density = kMinDensity;
+  g.nodes[0].edges[0].scale = kMaxEdgeScale;
+  EXPECT_TRUE(validate(g).ok()) << validate(g).error();
+}
+
 TEST(Validate, SliderLimitsAreNotAngles) {
   Genome g = pair(Dialect::Sims1994);
   g.nodes[1].joint = {JointType::Slider, {1, 0, 0}, {0, 1, 0}, {{-5, 5}}};

@@ -397,6 +397,75 @@ TEST(GenomeJsonErrors, DuplicateField) {
   EXPECT_TRUE(genome_from_string(kSims, "t.json").ok());
 }
 
+// ---------------------------------------------------------------- hostile input (issue 13)
+
+// `depth` nested arrays as a field's value: [[[...]]]
+std::string nested(int depth) { return std::string(depth, '[') + std::string(depth, ']'); }
+
+TEST(GenomeJsonLimits, DeepNestingIsRefusedBeforeAnythingRecurses) {
+  // 10,000 deep crashed the error printer (20 KB of text); a document 64
+  // levels deep passes the reader (a genome needs 6), 65 do not. Here the
+  // genome object, "nodes" and the node take 3 levels
+  std::string deep = sims_nodes(R"([{"size": [1, 1, 1], "shape": )" + nested(10000) + "}]");
+  std::string at = "t.json: nodes[0].shape";
+  for (int i = 0; i < kMaxGenomeDepth - 3; ++i) at += "[0]";
+  EXPECT_EQ(err(deep), at + ": nested deeper than 64 levels of arrays and objects (a genome needs 6)");
+  std::string ok_depth = err(sims_nodes(R"([{"size": [1, 1, 1], "shape": )" + nested(kMaxGenomeDepth - 3) + "}]"));
+  EXPECT_EQ(ok_depth.rfind("t.json: nodes[0].shape: expected a string, got [[[[[[", 0), 0u) << ok_depth;
+  EXPECT_EQ(err(nested(100000)).substr(0, 15), "t.json: [0][0][");
+}
+
+TEST(GenomeJsonLimits, QuotedValuesAreBoundedInLengthAndDepth) {
+  // a 100,000-element array where a string belongs: the message quotes its start
+  std::string many = "[";
+  for (int i = 0; i < 100000; ++i) many += (i ? ", " : "") + std::to_string(i);
+  many += "]";
+  std::string e = err(sims_nodes(R"([{"size": [1, 1, 1], "shape": )" + many + "}]"));
+  EXPECT_LT(e.size(), 200u) << e;
+  EXPECT_EQ(e.substr(e.size() - 3), "...");
+  // json_one_line on a value deeper than the reader allows (built in code)
+  json v = json::array();
+  for (int i = 0; i < 100000; ++i) v = json::array({std::move(v)});
+  std::string line = json_one_line(v);
+  EXPECT_NE(line.find("[...]"), std::string::npos);
+  EXPECT_LT(line.size(), 200u);
+  EXPECT_EQ(json_one_line(v, 20), "[[[[[[[[[[[[[[[[[...");
+}
+
+// found by fuzz_genome: a key with an escaped newline made a message of two lines
+TEST(GenomeJsonLimits, KeysAreQuotedOnOneLine) {
+  EXPECT_EQ(err(edit(kSims, R"("version": 1,)", R"("version": 1, "dia\nlect": 1,)")),
+            "t.json: dia\\nlect: unknown field (expected one of format, version, dialect, nodes, "
+            "global_neurons, catapult, provenance), got 1");
+  EXPECT_EQ(err(edit(kSims, R"("version": 1,)", R"("version": 1, "a\tb": 1, "a\tb": 2,)")),
+            "t.json: a\\tb: field given twice");
+  std::string e = err(edit(kSims, R"("version": 1,)", R"("version": 1, ")" + std::string(100000, 'k') + R"(": 1,)"));
+  EXPECT_LT(e.size(), 300u);
+}
+
+TEST(GenomeJsonLimits, TextAboveTheSizeLimitIsRefusedUnread) {
+  std::string text(kMaxGenomeBytes + 1, ' ');
+  EXPECT_EQ(err(text), "t.json: too large for a genome: " + std::to_string(kMaxGenomeBytes + 1) +
+                           " bytes, above " + std::to_string(kMaxGenomeBytes));
+}
+
+TEST(GenomeJsonLimits, ALongArrayParsesInOnePass) {
+  // 300,000 global neurons (9 MB) took 12.5 s: the parser's callback mode scanned
+  // the whole array at each element's end. Read now in one pass; a duplicate key
+  // at the end of the array is still found and named
+  const int n = 300000;
+  std::string neurons;
+  neurons.reserve(n * 32);
+  for (int i = 0; i < n; ++i) neurons += std::string(i ? "," : "") + R"({"fn": "sum", "inputs": []})";
+  std::string text = R"({"format": "bestiary-genome", "version": 1, "dialect": "sims1994",
+    "nodes": [{"size": [1, 1, 1]}], "global_neurons": [)" + neurons + "]}";
+  auto g = genome_from_string(text, "t.json");
+  ASSERT_TRUE(g.ok()) << g.error();
+  EXPECT_EQ(g->global_neurons.size(), static_cast<std::size_t>(n));
+  text.insert(text.size() - 3, R"(, "fn": "sum")");
+  EXPECT_EQ(err(text), "t.json: global_neurons[299999].fn: field given twice");
+}
+
 // ---------------------------------------------------------------- errors: values and structure
 
 TEST(GenomeJsonErrors, BadValues) {

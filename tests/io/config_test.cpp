@@ -94,6 +94,43 @@ TEST(Config, RunConfigTakesTheDialectsDefaultsThenTheTextThenTheOverrides) {
             "r.toml: genome.dialect: expected one of sims1994, miconi2006, chaumont2007, got \"sims\"");
 }
 
+// A --set is one key: the value was spliced into TOML text, so a newline in
+// it could start a line that set any other key (issue 13)
+TEST(Config, AnOverrideSetsItsKeyAndNoOther) {
+  EXPECT_EQ(read_run_config("", "r.toml", {"task.seconds=1\nphysics.gravity=5"}).error(),
+            "--set: a control character (newline, tab, ...) in \"task.seconds=1\\nphysics.gravity=5\" "
+            "(one section.key=value per --set)");
+  EXPECT_FALSE(read_run_config("", "r.toml", {"task.seconds=1\r\n[physics]\ngravity=5"}).ok());
+  EXPECT_FALSE(read_run_config("", "r.toml", {"task.seconds\n=1"}).ok());
+  // a key is section.key, nothing more
+  EXPECT_EQ(read_run_config("", "r.toml", {"physics.gravity.x=1"}).error(),
+            "--set: expected section.key=value, got \"physics.gravity.x=1\"");
+  EXPECT_EQ(read_run_config("", "r.toml", {"physics.\"gravity\"=1"}).error(),
+            "--set: expected section.key=value, got \"physics.\"gravity\"=1\"");
+  // quotes and backslashes in a bare-word value stay inside the string
+  EXPECT_EQ(read_run_config("", "r.toml", {"genome.dialect=sims\"1994"}).error(),
+            "--set genome.dialect=sims\"1994: genome.dialect: expected one of sims1994, miconi2006, "
+            "chaumont2007, got \"sims\"1994\"");
+  EXPECT_EQ(read_run_config("", "r.toml", {"genome.dialect=a\\"}).error(),
+            "--set genome.dialect=a\\: genome.dialect: expected one of sims1994, miconi2006, chaumont2007, got \"a\\\"");
+  // spaces around the key and the value are fine, as before
+  auto c = read_run_config("", "r.toml", {" physics.gravity = -3.5"});
+  ASSERT_TRUE(c.ok()) << c.error();
+  EXPECT_EQ(c->sim.physics.gravity, -3.5);
+}
+
+// A string a config holds is quoted on one line in errors: a message is one line
+TEST(Config, QuotedStringsStayOnOneLine) {
+  RunConfig cfg = default_run_config(Dialect::Sims1994);
+  Status s = apply_config_toml(cfg, "[motor]\nmodel = \"a\\nb\"\n", "x.toml");
+  EXPECT_EQ(s.error(), "x.toml: motor.model: expected one of servo, saturation, torque, pd, got \"a\\nb\"");
+  // toml++ quotes the text it stopped at, a newline included (found by fuzz_config)
+  s = apply_config_toml(cfg, "metric = [t\n", "x.toml");
+  EXPECT_EQ(s.error(), "x.toml:1:12: Error while parsing boolean: expected 'true', saw 't\\n'");
+  s = apply_config_toml(cfg, "[motor]\n\"mo\\ndel\" = 1\n", "x.toml");
+  EXPECT_EQ(s.error(), "x.toml: motor.mo\\ndel: unknown key (did you mean \"model\"?)");
+}
+
 TEST(Config, BadInputChangesNothing) {
   RunConfig cfg = default_run_config(Dialect::Sims1994);
   std::string before = config_to_toml(cfg);
