@@ -112,7 +112,9 @@ class RobustRun : public ::testing::Test {
   // an undisturbed run of the small config
   fs::path whole() {
     fs::path w = dir / "whole";
-    if (!fs::exists(w)) EXPECT_EQ(bestiary("run " + cfg + " --out " + w.string() + " --workers 2 --quiet").code, 0);
+    if (!fs::exists(w)) {
+      EXPECT_EQ(bestiary("run " + cfg + " --out " + w.string() + " --workers 2 --quiet").code, 0);
+    }
     return w;
   }
 

@@ -80,10 +80,11 @@ TEST(Evaluator, AWorkerThatAbortsCostsOnlyItsJob) {
 TEST(Evaluator, AWorkerThatHangsTimesOutAndTheBatchGoesOn) {
   auto gs = creatures();
   auto jobs = jobs_for(gs);
+  // (set while the pool works: the worker that takes the job again hangs too)
   ::setenv("BESTIARY_TEST_HANG_SEED", "102", 1);
   ProcessPoolEvaluator pool(short_config(), 2, 1.0);
-  ::unsetenv("BESTIARY_TEST_HANG_SEED");
   auto got = pool.evaluate(jobs);
+  ::unsetenv("BESTIARY_TEST_HANG_SEED");
   EXPECT_TRUE(got[2].result.failed);
   EXPECT_EQ(got[2].result.failure, "timed out after 1 s (twice)");
   for (std::size_t i : {0u, 1u, 3u}) EXPECT_FALSE(got[i].result.failed) << got[i].result.failure;
