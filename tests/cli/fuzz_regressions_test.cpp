@@ -15,6 +15,7 @@
 #include <thread>
 #include <vector>
 
+#include "../../fuzz/fuzz_input.h"
 #include "support/run_command.h"
 
 namespace bxtest {
@@ -77,23 +78,13 @@ void expect_outcome(const Ran& r, const std::string& what) {
   }
 }
 
-/// A regression file: the text, then any `--set` overrides, each after a NUL (fuzz/fuzz_input.h).
-struct Input {
-  std::string text;
-  std::vector<std::string> overrides;
-};
-
+// a regression file: the text, then any `--set` overrides, each after a NUL,
+// split as the fuzz targets split their input
+using bxfuzz::Input;
+using bxfuzz::split;
 Input read_input(const fs::path& p) {
   std::string all = slurp(p);
-  Input in;
-  auto nul = all.find('\0');
-  in.text = all.substr(0, nul);
-  while (nul != std::string::npos) {
-    auto next = all.find('\0', nul + 1);
-    in.overrides.push_back(all.substr(nul + 1, next == std::string::npos ? next : next - nul - 1));
-    nul = next;
-  }
-  return in;
+  return split(reinterpret_cast<const std::uint8_t*>(all.data()), all.size());
 }
 
 std::vector<fs::path> regressions(const std::string& kind) {

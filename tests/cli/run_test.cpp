@@ -24,26 +24,7 @@ namespace fs = std::filesystem;
 using bxtest::Outcome;
 using bxtest::bestiary;
 
-std::string query(const fs::path& db_path, const char* sql) {
-  sqlite3* db = nullptr;
-  std::string out;
-  if (sqlite3_open_v2(db_path.c_str(), &db, SQLITE_OPEN_READONLY, nullptr) == SQLITE_OK) {
-    sqlite3_stmt* s = nullptr;
-    if (sqlite3_prepare_v2(db, sql, -1, &s, nullptr) == SQLITE_OK) {
-      while (sqlite3_step(s) == SQLITE_ROW) {
-        for (int c = 0; c < sqlite3_column_count(s); ++c) {
-          auto* t = sqlite3_column_text(s, c);
-          out += t ? reinterpret_cast<const char*>(t) : "NULL";
-          out += '|';
-        }
-        out += '\n';
-      }
-    }
-    sqlite3_finalize(s);
-  }
-  sqlite3_close(db);
-  return out;
-}
+using bxtest::query;
 
 std::string dump(const fs::path& dir) {
   fs::path db = dir / "run.sqlite";
