@@ -37,6 +37,7 @@
 #include "develop/develop.h"
 #include "eval/evaluate.h"
 #include "eval/evaluator.h"
+#include "geometry/ode.h"
 #include "genome/genome_json.h"
 #include "genome/operators.h"
 #include "io/config.h"

@@ -30,6 +30,7 @@
 #include "develop/develop.h"
 #include "eval/evaluate.h"
 #include "eval/sim_config.h"
+#include "geometry/ode.h"
 #include "genome/genome_json.h"
 #include "physics/world.h"
 #include "raw_ode.h"

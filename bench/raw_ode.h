@@ -203,12 +203,12 @@ struct RawWorld {
       dBodySetMass(b, &mass);
       dBodySetPosition(b, pose.p.x, pose.p.y, pose.p.z);
       dMatrix3 R;
-      to_ode(pose.R, R);
+      bench::to_ode(pose.R, R);
       dBodySetRotation(b, R);
       dGeomSetBody(g, b);
       if (part.shape == Shape::Capsule || part.shape == Shape::Cylinder) {
         dMatrix3 off;
-        to_ode(z_to_x, off);
+        bench::to_ode(z_to_x, off);
         dGeomSetOffsetRotation(g, off);
       }
       bodies.push_back(b);

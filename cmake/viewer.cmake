@@ -23,7 +23,7 @@ add_custom_command(
   COMMENT "Bundling the viewer page (three.js + viewer/src)"
   VERBATIM)
 add_library(bx_viewer_page STATIC ${BX_VIEWER_OUT}/viewer_page.cpp)
-target_link_libraries(bx_sim PUBLIC bx_viewer_page)
+target_link_libraries(bx_io PUBLIC bx_viewer_page)
 
 # render finds render.mjs and node_modules here unless $BESTIARY_VIEWER_DIR says otherwise
 target_compile_definitions(bestiary PRIVATE BESTIARY_VIEWER_DIR="${BX_VIEWER_DIR}")

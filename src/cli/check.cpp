@@ -14,7 +14,7 @@
 #include "core/files.h"
 #include "develop/develop.h"
 #include "eval/check.h"
-#include "evolve/run.h"
+#include "run/run.h"
 #include "genome/genome_json.h"
 #include "io/config.h"
 #include "io/run_store.h"

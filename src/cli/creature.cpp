@@ -11,7 +11,7 @@
 
 #include "cli/commands.h"
 #include "core/files.h"
-#include "evolve/run.h"
+#include "run/run.h"
 #include "genome/dialect.h"
 #include "genome/genome_json.h"
 #include "io/run_store.h"

@@ -15,7 +15,7 @@
 #include "cli/creature.h"
 #include "core/text.h"
 #include "core/files.h"
-#include "evolve/run.h"
+#include "run/run.h"
 #include "genome/genome_json.h"
 #include "io/config.h"
 #include "io/presets.h"

@@ -9,6 +9,7 @@
 
 #include "cli/commands.h"
 #include "core/text.h"
+#include "core/version.h"
 
 namespace bx {
 
@@ -65,7 +66,7 @@ int main(int argc, char** argv) {
   bx::set_program(argc > 0 ? argv[0] : nullptr);
   CLI::App app{"Bestiary: evolve virtual creatures, bodies and brains together, in 3D physics"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", std::string(BESTIARY_VERSION) + " (" + BESTIARY_GIT + ")");
+  app.set_version_flag("--version", std::string(bx::bestiary_version()) + " (" + bx::bestiary_git() + ")");
   bx::add_simulate_commands(app);
   bx::add_evolve_commands(app);
   bx::add_watch_commands(app);

@@ -35,7 +35,7 @@
 #include "io/replay_file.h"
 #include "io/run_page.h"
 #include "io/run_store.h"
-#include "evolve/run.h"
+#include "run/run.h"
 
 extern char** environ;
 

@@ -10,7 +10,7 @@
 
 #include "genome/dialect.h"
 #include "genome/genome_edit.h"  // face_frame: the edge frame on a face
-#include "physics/world.h"
+#include "geometry/overlap.h"
 
 namespace bx {
 
@@ -488,6 +488,16 @@ Development develop(const Genome& g, const DevelopDef& def) {
     }
   }
   return {std::move(m), {}};
+}
+
+std::pair<int, int> find_self_intersection(const CreatureModel& m, double margin, int released) {
+  std::vector<Solid> solids(m.parts.size());
+  for (std::size_t i = 0; i < solids.size(); ++i) {
+    const PartModel& p = m.parts[i];
+    bool free = static_cast<int>(i) == released;
+    solids[i] = {p.shape, p.size, p.pose, free ? -1 : p.parent};
+  }
+  return first_overlap(solids, margin);
 }
 
 }  // namespace bx

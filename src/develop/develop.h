@@ -3,6 +3,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 
 #include "develop/creature_model.h"
 #include "genome/genome.h"
@@ -38,5 +39,13 @@ struct Development {
 /// more than max_parts parts, when two parts not joined to each other overlap,
 /// or when its body is longer than max_body_length.
 Development develop(const Genome& g, const DevelopDef& def = {});
+
+/// Development's self-intersection test: the first pair of parts, not joined
+/// by a joint, whose shapes (each shrunk by `margin` metres on every side)
+/// overlap at the initial pose; {-1, -1} if none (geometry/overlap.h). Part
+/// `released` (a catapult's projectile, whose joint breaks) may not overlap
+/// its parent either: once free, the contact would push it out at the
+/// solver's correcting speed, a launch by constraint error (docs/physics.md).
+std::pair<int, int> find_self_intersection(const CreatureModel& m, double margin, int released = -1);
 
 }  // namespace bx

@@ -5,6 +5,7 @@
 
 #include "brain/brain_model.h"
 #include "core/rng.h"
+#include "geometry/ode.h"  // PhysicsFault
 #include "physics/world.h"
 
 namespace bx {

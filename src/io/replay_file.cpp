@@ -8,6 +8,7 @@
 
 #include "brain/neuron_set.h"
 #include "core/files.h"
+#include "core/version.h"
 
 namespace bx {
 
@@ -54,7 +55,7 @@ std::string replay_to_string(const CreatureModel& m, const Replay& r, const Eval
   json j;
   j["format"] = "bestiary-replay";
   j["version"] = 1;
-  j["bestiary"] = std::string(BESTIARY_VERSION);
+  j["bestiary"] = std::string(bestiary_version());
   j["genome"] = info.genome_source;
   j["dialect"] = std::string(to_string(m.dialect));
   // a JSON number above 2^53 loses digits in JavaScript (the viewer): such a

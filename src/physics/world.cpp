@@ -1,123 +1,28 @@
 // ODE implementation of the physics world.
 #include "physics/world.h"
-#include "physics/mechanisms.h"
 
 #include <ode/ode.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdarg>
 #include <cstdio>
 #include <string>
-#include <mutex>
+
+#include "geometry/ode.h"
+#include "physics/mechanisms.h"
 
 namespace bx {
 
 namespace {
 
-std::once_flag g_ode_once;
-
-// ODE's error and debug handlers must not return (ODE aborts if they do)
-// set by a fault: ODE's threading implementation of the faulted step is left
-// mid-job and asserts if freed, so the world that faulted leaks it (rare)
-thread_local bool g_faulted = false;
-
-// ODE's messages (dMessage) report a step it could not solve: the exact
-// solver's "LCP internal error", after which it leaves the rows it did not
-// reach at zero force. Counted here, reported by the world that stepped.
-thread_local long g_messages = 0;
-thread_local char g_last_message[200] = "";
-
-void ode_message(int num, const char* msg, va_list ap) {
-  ++g_messages;
-  std::vsnprintf(g_last_message, sizeof g_last_message, msg, ap);
-}
-
-[[noreturn]] void ode_fault(int num, const char* msg, va_list ap) {
-  g_faulted = true;
-  char buf[256];
-  std::vsnprintf(buf, sizeof buf, msg, ap);
-  throw PhysicsFault("ODE internal error " + std::to_string(num) + ": " + buf);
-}
-
-// ODE matrices are 3x4 row-major
-void to_ode(const Mat3& R, dMatrix3 out) {
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) out[i * 4 + j] = R.m[i][j];
-    out[i * 4 + 3] = 0;
-  }
-}
-
-Mat3 from_ode(const dReal* r) {
-  Mat3 R;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) R.m[i][j] = r[i * 4 + j];
-  return R;
-}
-
-Vec3 vec(const dReal* v) { return {v[0], v[1], v[2]}; }
-
-// rotation taking ODE's z-aligned capsules and cylinders to our x-aligned ones
-Mat3 z_to_x() { return Mat3::rotation({0, 1, 0}, kPi / 2); }
-
-// geometry of one part, sizes shrunk by `margin` on every side
-dGeomID make_geom(dSpaceID space, Shape shape, Vec3 size, double margin) {
-  auto shrink = [&](double full) { return std::max(full - 2 * margin, 1e-4); };
-  switch (shape) {
-    case Shape::Box:
-      return dCreateBox(space, shrink(size.x), shrink(size.y), shrink(size.z));
-    case Shape::Sphere:
-      return dCreateSphere(space, shrink(size.x) / 2);
-    case Shape::Capsule: {
-      double r = shrink(size.y) / 2;
-      return dCreateCapsule(space, r, std::max(shrink(size.x) - 2 * r, 0.0));
-    }
-    case Shape::Cylinder:
-      return dCreateCylinder(space, shrink(size.y) / 2, shrink(size.x));
-  }
-  return nullptr;
-}
-
-// sets a geom's world pose, turning z-aligned ODE primitives to lie along x
-void place_geom(dGeomID g, Shape shape, const Pose& pose) {
-  dGeomSetPosition(g, pose.p.x, pose.p.y, pose.p.z);
-  Mat3 R = pose.R;
-  if (shape == Shape::Capsule || shape == Shape::Cylinder) R = R * z_to_x();
-  dMatrix3 m;
-  to_ode(R, m);
-  dGeomSetRotation(g, m);
-}
-
 bool def_stop(double v) { return v >= 0; }
-
-// spheres, capsules and cylinders: the shapes that roll
-bool round_geom(dGeomID g) {
-  int c = dGeomGetClass(g);
-  return c == dSphereClass || c == dCapsuleClass || c == dCylinderClass;
-}
 
 bool is_linear_dof(JointType t, int dof) {
   return t == JointType::Slider || (t == JointType::Cylindrical && dof == 0);
 }
 
 }  // namespace
-
-void ensure_ode_initialized() {
-  std::call_once(g_ode_once, [] {
-    dInitODE2(0);
-    // ODE prints and aborts on internal errors: failed steps are counted,
-    // internal errors throw
-    dSetMessageHandler(ode_message);
-    dSetErrorHandler(ode_fault);
-    dSetDebugHandler(ode_fault);
-  });
-  static thread_local bool thread_ready = false;
-  if (!thread_ready) {
-    dAllocateODEDataForThread(dAllocateMaskAll);
-    thread_ready = true;
-  }
-}
 
 void reseed_physics(std::uint64_t seed) {
   ensure_ode_initialized();
@@ -447,8 +352,8 @@ World::~World() {
   dJointGroupDestroy(w.contact_group);
   dSpaceDestroy(w.space);  // destroys its geoms
   dWorldDestroy(w.world);  // destroys bodies and joints
-  if (g_faulted)
-    g_faulted = false;  // after a PhysicsFault: leak the threading implementation
+  if (ode_thread_log().faulted)
+    ode_thread_log().faulted = false;  // after a PhysicsFault: leak the threading implementation
   else
     dThreadingFreeImplementation(w.threading);
 }
@@ -653,14 +558,15 @@ void World::step() {
   w.contacts.clear();
   dSpaceCollide(w.space, &w, &Impl::near_callback);
   w.attach_contacts();
-  long messages = g_messages;
+  OdeThreadLog& log = ode_thread_log();
+  long messages = log.messages;
   if (w.def.solver == Solver::Exact)
     dWorldStep(w.world, w.def.dt);
   else
     dWorldQuickStep(w.world, w.def.dt);
-  if (g_messages != messages && w.solver_failure.empty()) {
+  if (log.messages != messages && w.solver_failure.empty()) {
     char buf[300];
-    std::snprintf(buf, sizeof buf, "ODE could not solve the step at t=%.4g s (%s)", w.t, g_last_message);
+    std::snprintf(buf, sizeof buf, "ODE could not solve the step at t=%.4g s (%s)", w.t, log.last_message);
     w.solver_failure = buf;
   }
   w.remember_contacts();
@@ -780,78 +686,5 @@ std::uint8_t World::contact_mask(int i) const { return impl_->contact_mask[i]; }
 double World::time() const { return impl_->t; }
 const PhysicsDef& World::def() const { return impl_->def; }
 
-std::pair<int, int> find_self_intersection(const CreatureModel& m, double margin, int released) {
-  ensure_ode_initialized();
-  int n = m.n_parts();
-  std::vector<dGeomID> geoms(n);
-  std::vector<std::array<double, 6>> box(n);  // AABB: min x, max x, min y, max y, min z, max z
-  for (int i = 0; i < n; ++i) {
-    geoms[i] = make_geom(nullptr, m.parts[i].shape, m.parts[i].size, margin);
-    place_geom(geoms[i], m.parts[i].shape, m.parts[i].pose);
-    dGeomGetAABB(geoms[i], box[i].data());
-    // widened a little: colliders may report touching within rounding
-    for (int a = 0; a < 3; ++a) {
-      double pad = 1e-9 * (1 + box[i][2 * a + 1] - box[i][2 * a]);
-      box[i][2 * a] -= pad;
-      box[i][2 * a + 1] += pad;
-    }
-  }
-  // sweep along the axis where the parts spread most
-  int axis = 0;
-  double best = -1;
-  for (int a = 0; a < 3; ++a) {
-    double lo = 1e300, hi = -1e300;
-    for (const auto& b : box) lo = std::min(lo, b[2 * a]), hi = std::max(hi, b[2 * a + 1]);
-    if (hi - lo > best) best = hi - lo, axis = a;
-  }
-  std::vector<int> order(n);
-  for (int i = 0; i < n; ++i) order[i] = i;
-  std::sort(order.begin(), order.end(), [&](int a, int b) {
-    return box[a][2 * axis] < box[b][2 * axis] || (box[a][2 * axis] == box[b][2 * axis] && a < b);
-  });
-  auto overlap = [&](int i, int j) {
-    for (int a = 0; a < 3; ++a)
-      if (box[i][2 * a] > box[j][2 * a + 1] || box[j][2 * a] > box[i][2 * a + 1]) return false;
-    return true;
-  };
-  // parts joined by a joint may touch, unless the joint is released later
-  auto joined = [&](int i, int j) {
-    return (m.parts[j].parent == i && j != released) || (m.parts[i].parent == j && i != released);
-  };
-  dContactGeom contact;
-  auto collide = [&](int i, int j) { return dCollide(geoms[i], geoms[j], 1, &contact, sizeof(dContactGeom)) > 0; };
-  // candidate pairs (i < j) whose boxes overlap, tested in all-pairs order;
-  // parts piled up in one place (more pairs to look at than the budget) are
-  // tested pair by pair instead, where the first few usually overlap
-  const std::size_t budget = 64 * static_cast<std::size_t>(n) + 4096;
-  std::size_t looked = 0;
-  std::vector<std::pair<int, int>> pairs;
-  for (int s = 0; s < n && looked <= budget; ++s) {
-    int i = order[s];
-    for (int t = s + 1; t < n && box[order[t]][2 * axis] <= box[i][2 * axis + 1]; ++t) {
-      int j = order[t];
-      ++looked;
-      if (overlap(i, j) && !joined(i, j)) pairs.push_back({std::min(i, j), std::max(i, j)});
-    }
-  }
-  std::pair<int, int> hit{-1, -1};
-  if (looked <= budget) {
-    std::sort(pairs.begin(), pairs.end());
-    for (auto [i, j] : pairs)
-      if (collide(i, j)) {
-        hit = {i, j};
-        break;
-      }
-  } else {
-    for (int i = 0; i < n && hit.first < 0; ++i)
-      for (int j = i + 1; j < n; ++j)
-        if (!joined(i, j) && collide(i, j)) {
-          hit = {i, j};
-          break;
-        }
-  }
-  for (dGeomID g : geoms) dGeomDestroy(g);
-  return hit;
-}
 
 }  // namespace bx

@@ -16,18 +16,6 @@
 
 namespace bx {
 
-/// An internal error of ODE (a failed assertion, e.g. a singular matrix in
-/// the exact solver's factorisation): thrown out of the ODE call instead of
-/// ODE's abort, so that one evaluation fails, not the process. The world it
-/// came from must be destroyed, not stepped again.
-struct PhysicsFault : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
-/// Initialises ODE for this process (once) and this thread; ODE's internal
-/// errors throw PhysicsFault.
-void ensure_ode_initialized();
-
 /// Reseeds ODE's process-wide random generator (QuickStep's constraint
 /// order). Call before every evaluation for reproducible results.
 void reseed_physics(std::uint64_t seed);
@@ -111,17 +99,5 @@ class World {
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
-
-/// Development's self-intersection test: the first pair of parts, not joined
-/// by a joint, whose shapes (each shrunk by `margin` metres on every side)
-/// overlap; {-1, -1} if none. Part `released` (a catapult's projectile, whose
-/// joint breaks) may not overlap its parent either: once free, the contact
-/// would push it out at the solver's correcting speed, a launch by
-/// constraint error (docs/physics.md).
-/// Sorts parts along their longest spread axis and tests only pairs whose
-/// bounding boxes overlap there, in the order of the all-pairs loop, so the
-/// pair found is the all-pairs loop's first; about O(n log n) for a creature
-/// that is not piled up in one place.
-std::pair<int, int> find_self_intersection(const CreatureModel& m, double margin, int released = -1);
 
 }  // namespace bx

@@ -1,6 +1,7 @@
 // Physics against closed forms: free fall, a physical pendulum's period, a box
 // at rest, motors, limits, contact sensing and the explosion tests.
 #include "physics/world.h"
+#include "develop/develop.h"  // find_self_intersection
 
 #include <gtest/gtest.h>
 

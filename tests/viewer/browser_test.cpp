@@ -13,7 +13,7 @@
 #include <set>
 #include <string>
 
-#include "evolve/run.h"
+#include "run/run.h"
 #include "genome/genome_json.h"
 #include "io/html_view.h"
 #include "io/run_page.h"

@@ -10,7 +10,7 @@
 #include <sstream>
 #include <string>
 
-#include "evolve/run.h"
+#include "run/run.h"
 #include "io/run_store.h"
 #include "support/run_command.h"
 

@@ -10,7 +10,7 @@
 #include <map>
 #include <set>
 
-#include "evolve/run.h"
+#include "run/run.h"
 #include "genome/genome_json.h"
 #include "support/run_command.h"
 

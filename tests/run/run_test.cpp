@@ -1,13 +1,14 @@
 // Runs on disk: the database does not depend on the number of workers, and a
 // run stopped after any generation and resumed ends exactly as one never
 // stopped.
-#include "evolve/run.h"
+#include "run/run.h"
 
 #include <gtest/gtest.h>
 #include <sqlite3.h>
 
 #include <filesystem>
 
+#include "core/version.h"
 #include "io/run_store.h"
 
 namespace bx {
@@ -96,7 +97,7 @@ TEST_F(Runs, DatabaseIsTheSameForOneOrTwoWorkers) {
   ASSERT_TRUE(store.ok());
   EXPECT_EQ((*store)->generations().size(), 4u);
   EXPECT_EQ((*store)->meta("seed"), "9");
-  EXPECT_EQ((*store)->meta("bestiary_version"), BESTIARY_VERSION);
+  EXPECT_EQ((*store)->meta("bestiary_version"), bx::bestiary_version());
 }
 
 TEST_F(Runs, StoppedAfterAnyGenerationAndResumedEndsTheSame) {

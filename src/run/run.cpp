@@ -1,4 +1,4 @@
-#include "evolve/run.h"
+#include "run/run.h"
 
 #include <fcntl.h>
 #include <signal.h>
@@ -14,6 +14,7 @@
 #include <fstream>
 
 #include "core/files.h"
+#include "core/version.h"
 #include "eval/evaluator.h"
 #include "evolve/evolution.h"
 #include "io/run_store.h"
@@ -87,8 +88,8 @@ Status create_run(const std::string& dir, const RunConfig& cfg, const std::strin
                                                               {"seed", std::to_string(seed)},
                                                               {"config", resolved},
                                                               {"source_config", config_text},
-                                                              {"bestiary_version", BESTIARY_VERSION},
-                                                              {"bestiary_git", BESTIARY_GIT}});
+                                                              {"bestiary_version", bestiary_version()},
+                                                              {"bestiary_git", bestiary_git()}});
     if (!store) return fail(dir + ": " + store.error());
   }  // closed: its journal is folded into the file before the rename
   sync_dir(tmp);
