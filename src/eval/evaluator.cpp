@@ -110,29 +110,19 @@ EvalOutcome outcome_from_json(const json& j) {
   return o;
 }
 
-// test-only triggers: a worker aborts, or hangs, on the job with this seed
-std::uint64_t env_seed(const char* name) {
-  const char* v = std::getenv(name);
-  return v ? std::strtoull(v, nullptr, 10) : 0;
-}
-
 // the worker's life: read a job, evaluate it, answer; until the pipe closes
-[[noreturn]] void worker_main(int in, int out, const SimConfig& cfg) {
-  const std::uint64_t abort_seed = env_seed("BESTIARY_TEST_ABORT_SEED");
-  const std::uint64_t hang_seed = env_seed("BESTIARY_TEST_HANG_SEED");
+[[noreturn]] void worker_main(int in, int out, const SimConfig& cfg, const WorkerJob& work) {
   std::string msg;
   while (receive_message(in, msg)) {
     json job = json::parse(msg);
     std::uint64_t seed = job.at("seed");
-    if (abort_seed && seed == abort_seed) std::abort();
-    if (hang_seed && seed == hang_seed) ::pause();
     auto g = genome_from_json(job.at("genome"), "job");
     EvalOutcome o;
     if (!g) {
       o.result.failed = true;
       o.result.failure = "worker could not read the genome: " + g.error();
     } else {
-      o = evaluate_genome(*g, cfg, seed);
+      o = work(*g, cfg, seed);
     }
     if (!send_message(out, outcome_to_json(o).dump())) break;
   }
@@ -150,6 +140,7 @@ struct ProcessPoolEvaluator::Impl {
   };
 
   SimConfig cfg;
+  WorkerJob work;
   double timeout;
   std::vector<Worker> workers;
 
@@ -183,7 +174,7 @@ struct ProcessPoolEvaluator::Impl {
       ::sigprocmask(SIG_SETMASK, &was, nullptr);
       ::prctl(PR_SET_PDEATHSIG, SIGKILL);
       if (::getppid() != parent) ::_exit(0);  // the parent died before prctl
-      worker_main(in, out, cfg);
+      worker_main(in, out, cfg, work);
     }
     ::close(jobs[0]);
     ::close(results[1]);
@@ -209,10 +200,12 @@ struct ProcessPoolEvaluator::Impl {
   }
 };
 
-ProcessPoolEvaluator::ProcessPoolEvaluator(SimConfig cfg, int workers, double timeout_seconds)
+ProcessPoolEvaluator::ProcessPoolEvaluator(SimConfig cfg, int workers, double timeout_seconds,
+                                           WorkerJob work)
     : impl_(std::make_unique<Impl>()) {
   ::signal(SIGPIPE, SIG_IGN);  // a dead worker shows as a failed write, not a dead parent
   impl_->cfg = std::move(cfg);
+  impl_->work = work ? std::move(work) : WorkerJob(evaluate_genome);
   impl_->timeout = timeout_seconds;
   impl_->workers.resize(std::max(workers, 1));
   for (auto& w : impl_->workers) impl_->spawn(w);

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -57,9 +58,12 @@ class SerialEvaluator : public Evaluator {
 /// once: a lost worker costs nothing, while a job that crashes or times out
 /// twice is recorded as failed with its reason, "(twice)"; the batch goes on.
 /// Workers ignore SIGINT and SIGTERM and die with the process that made them.
+/// `work` is what a worker does with a job: evaluate_genome unless a test
+/// passes one that crashes or hangs on purpose.
+using WorkerJob = std::function<EvalOutcome(const Genome&, const SimConfig&, std::uint64_t seed)>;
 class ProcessPoolEvaluator : public Evaluator {
  public:
-  ProcessPoolEvaluator(SimConfig cfg, int workers, double timeout_seconds);
+  ProcessPoolEvaluator(SimConfig cfg, int workers, double timeout_seconds, WorkerJob work = {});
   ~ProcessPoolEvaluator() override;
   std::vector<EvalOutcome> evaluate(const std::vector<EvalJob>& jobs) override;
   int workers() const override;

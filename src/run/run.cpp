@@ -30,14 +30,22 @@ std::string run_log_path(const std::string& dir) { return (fs::path(dir) / "run.
 namespace {
 
 // the name a run directory has while it is being created, beside where it will be
+// (built by appending: GCC 12 warns falsely, -Wrestrict, on "." + string)
+std::string creating_prefix(const fs::path& dir) {
+  std::string p = ".";
+  p += dir.filename().string();
+  p += ".creating-";
+  return p;
+}
+
 fs::path creating_path(const fs::path& dir, long pid) {
-  return dir.parent_path() / ("." + dir.filename().string() + ".creating-" + std::to_string(pid));
+  return dir.parent_path() / (creating_prefix(dir) + std::to_string(pid));
 }
 
 // removes what earlier creations of `dir`, killed before they finished, left
 void remove_stale_creations(const fs::path& dir) {
   std::error_code ec;
-  const std::string prefix = "." + dir.filename().string() + ".creating-";
+  const std::string prefix = creating_prefix(dir);
   fs::path parent = dir.parent_path().empty() ? fs::path(".") : dir.parent_path();
   for (const auto& e : fs::directory_iterator(parent, ec)) {
     std::string name = e.path().filename().string();

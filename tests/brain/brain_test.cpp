@@ -110,6 +110,15 @@ TEST(Brain, FreshStateIsSizedAndZero) {
   EXPECT_TRUE(empty.effector_out.empty());
 }
 
+// Assertions are on in every build, the tested one included (CMakeLists.txt
+// removes NDEBUG): a state that does not belong to the model stops the process
+// where the brain reads it, instead of reading past its arrays.
+TEST(BrainDeathTest, AStateOfAnotherModelIsCaughtByAnAssertion) {
+  BrainModel m = loop_model();
+  BrainState wrong = make_brain_state(BrainModel{});
+  EXPECT_DEATH(brain_step(m, wrong, 0.01), "values.size");
+}
+
 TEST(Brain, HandComputedSteps) {
   BrainModel m = loop_model();
   BrainState s = make_brain_state(m);

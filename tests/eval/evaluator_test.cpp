@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <cstdlib>
 
 #include "genome/genome_json.h"
@@ -56,10 +58,12 @@ TEST(Evaluator, PoolGivesBitIdenticalResultsToSerialForAnyWorkerCount) {
 TEST(Evaluator, AWorkerThatAbortsCostsOnlyItsJob) {
   auto gs = creatures();
   auto jobs = jobs_for(gs);
-  ::setenv("BESTIARY_TEST_ABORT_SEED", "101", 1);
-  ProcessPoolEvaluator pool(short_config(), 2, 60);
+  // the worker aborts on the job with seed 101
+  ProcessPoolEvaluator pool(short_config(), 2, 60, [](const Genome& g, const SimConfig& c, std::uint64_t seed) {
+    if (seed == 101) std::abort();
+    return evaluate_genome(g, c, seed);
+  });
   auto got = pool.evaluate(jobs);
-  ::unsetenv("BESTIARY_TEST_ABORT_SEED");
   auto serial = SerialEvaluator(short_config()).evaluate(jobs);
   for (std::size_t i = 0; i < got.size(); ++i) {
     if (i == 1) {
@@ -80,11 +84,12 @@ TEST(Evaluator, AWorkerThatAbortsCostsOnlyItsJob) {
 TEST(Evaluator, AWorkerThatHangsTimesOutAndTheBatchGoesOn) {
   auto gs = creatures();
   auto jobs = jobs_for(gs);
-  // (set while the pool works: the worker that takes the job again hangs too)
-  ::setenv("BESTIARY_TEST_HANG_SEED", "102", 1);
-  ProcessPoolEvaluator pool(short_config(), 2, 1.0);
+  // the worker hangs on the job with seed 102 (and so does the one given it again)
+  ProcessPoolEvaluator pool(short_config(), 2, 1.0, [](const Genome& g, const SimConfig& c, std::uint64_t seed) {
+    if (seed == 102) ::pause();
+    return evaluate_genome(g, c, seed);
+  });
   auto got = pool.evaluate(jobs);
-  ::unsetenv("BESTIARY_TEST_HANG_SEED");
   EXPECT_TRUE(got[2].result.failed);
   EXPECT_EQ(got[2].result.failure, "timed out after 1 s (twice)");
   for (std::size_t i : {0u, 1u, 3u}) EXPECT_FALSE(got[i].result.failed) << got[i].result.failure;
