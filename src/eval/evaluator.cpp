@@ -18,6 +18,7 @@
 #include <thread>
 
 #include "develop/develop.h"
+#include "eval/outcome_json.h"
 #include "genome/genome_edit.h"
 #include "genome/genome_json.h"
 
@@ -81,33 +82,6 @@ bool receive_message(int fd, std::string& s) {
   if (!read_all(fd, &n, sizeof n)) return false;
   s.resize(n);
   return read_all(fd, s.data(), n);
-}
-
-json outcome_to_json(const EvalOutcome& o) {
-  const EvalResult& r = o.result;
-  return {{"viable", o.viable}, {"reason", o.reason},   {"fitness", r.fitness},
-          {"distance", r.distance}, {"failed", r.failed}, {"failure", r.failure},
-          {"release_time", r.release_time}, {"target_miss", r.target_miss},
-          {"note", r.note},       {"seconds", r.seconds}, {"steps", r.steps},
-          {"warnings", r.warnings}};
-}
-
-EvalOutcome outcome_from_json(const json& j) {
-  EvalOutcome o;
-  o.viable = j.at("viable");
-  o.reason = j.at("reason");
-  EvalResult& r = o.result;
-  r.fitness = j.at("fitness");
-  r.distance = j.at("distance");
-  r.release_time = j.at("release_time");
-  r.target_miss = j.at("target_miss");
-  r.failed = j.at("failed");
-  r.failure = j.at("failure");
-  r.note = j.at("note");
-  r.seconds = j.at("seconds");
-  r.steps = j.at("steps");
-  r.warnings = j.at("warnings").get<std::vector<std::string>>();
-  return o;
 }
 
 // the worker's life: read a job, evaluate it, answer; until the pipe closes
@@ -287,7 +261,13 @@ std::vector<EvalOutcome> ProcessPoolEvaluator::evaluate(const std::vector<EvalJo
       if (fds[k].revents & (POLLIN | POLLHUP | POLLERR)) {
         std::string msg;
         if (receive_message(w.from, msg)) {
-          out[j] = outcome_from_json(json::parse(msg));
+          auto o = outcome_from_json(json::parse(msg, nullptr, false));
+          if (o) {
+            out[j] = std::move(o.value());
+          } else {  // not expected: both ends run this program's serialiser
+            out[j].result.failed = true;
+            out[j].result.failure = "worker sent an unreadable result (" + o.error() + ")";
+          }
           w.job = -1;
           ++done;
         } else {

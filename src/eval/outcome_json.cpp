@@ -1,0 +1,115 @@
+// The JSON form of an evaluation's outcome (eval/outcome_json.h).
+#include "eval/outcome_json.h"
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace bx {
+
+namespace {
+
+using json = nlohmann::json;
+
+json num(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
+
+json nums(const std::vector<double>& v) {
+  json a = json::array();
+  for (double x : v) a.push_back(num(x));
+  return a;
+}
+
+// readers that name the field they could not read
+const json& field(const json& j, const char* name) {
+  if (!j.contains(name)) throw std::runtime_error(std::string("no field ") + name);
+  return j.at(name);
+}
+
+double read_num(const json& v, const char* name) {
+  if (v.is_null()) return std::numeric_limits<double>::quiet_NaN();
+  if (!v.is_number()) throw std::runtime_error(std::string(name) + " is not a number");
+  return v.get<double>();
+}
+
+double get_num(const json& j, const char* name) { return read_num(field(j, name), name); }
+
+std::vector<double> get_nums(const json& j, const char* name) {
+  const json& a = field(j, name);
+  if (!a.is_array()) throw std::runtime_error(std::string(name) + " is not an array");
+  std::vector<double> v;
+  for (const json& x : a) v.push_back(read_num(x, name));
+  return v;
+}
+
+template <class T>
+T get(const json& j, const char* name) {
+  try {
+    return field(j, name).get<T>();
+  } catch (const json::exception&) {
+    throw std::runtime_error(std::string(name) + " has the wrong type");
+  }
+}
+
+}  // namespace
+
+json outcome_to_json(const EvalOutcome& o) {
+  const EvalResult& r = o.result;
+  const EvalDiagnostics& d = r.diagnostics;
+  return {{"viable", o.viable},
+          {"reason", o.reason},
+          {"failed", r.failed},
+          {"failure", r.failure},
+          {"note", r.note},
+          {"fitness", num(r.fitness)},
+          {"distance", num(r.distance)},
+          {"release_time", num(r.release_time)},
+          {"target_miss", num(r.target_miss)},
+          {"seconds", num(r.seconds)},
+          {"steps", r.steps},
+          {"brain_steps", r.brain_steps},
+          {"warnings", r.warnings},
+          {"trial_fitness", nums(r.trial_fitness)},
+          {"diagnostics",
+           {{"max_joint_gap", num(d.max_joint_gap)},
+            {"worst_joint", d.worst_joint},
+            {"max_stop_overshoot", num(d.max_stop_overshoot)},
+            {"max_penetration", num(d.max_penetration)},
+            {"effector_mean", nums(d.effector_mean)},
+            {"effector_sd", nums(d.effector_sd)}}}};
+}
+
+Result<EvalOutcome> outcome_from_json(const json& j) {
+  try {
+    if (!j.is_object()) throw std::runtime_error("not a JSON object");
+    EvalOutcome o;
+    o.viable = get<bool>(j, "viable");
+    o.reason = get<std::string>(j, "reason");
+    EvalResult& r = o.result;
+    r.failed = get<bool>(j, "failed");
+    r.failure = get<std::string>(j, "failure");
+    r.note = get<std::string>(j, "note");
+    r.fitness = get_num(j, "fitness");
+    r.distance = get_num(j, "distance");
+    r.release_time = get_num(j, "release_time");
+    r.target_miss = get_num(j, "target_miss");
+    r.seconds = get_num(j, "seconds");
+    r.steps = get<long>(j, "steps");
+    r.brain_steps = get<long>(j, "brain_steps");
+    r.warnings = get<std::vector<std::string>>(j, "warnings");
+    r.trial_fitness = get_nums(j, "trial_fitness");
+    const json& d = field(j, "diagnostics");
+    if (!d.is_object()) throw std::runtime_error("diagnostics is not an object");
+    EvalDiagnostics& g = r.diagnostics;
+    g.max_joint_gap = get_num(d, "max_joint_gap");
+    g.worst_joint = get<int>(d, "worst_joint");
+    g.max_stop_overshoot = get_num(d, "max_stop_overshoot");
+    g.max_penetration = get_num(d, "max_penetration");
+    g.effector_mean = get_nums(d, "effector_mean");
+    g.effector_sd = get_nums(d, "effector_sd");
+    return o;
+  } catch (const std::exception& e) {
+    return Error{std::string("evaluation outcome: ") + e.what()};
+  }
+}
+
+}  // namespace bx

@@ -1,0 +1,117 @@
+// The evaluation outcome's one serialiser (eval/outcome_json.h): every field
+// round-trips, bit for bit, and the process pool returns what the serial
+// evaluator computes, field for field (it used to drop trial_fitness,
+// brain_steps and the diagnostics).
+#include "eval/outcome_json.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+
+#include "eval/evaluator.h"
+#include "genome/genome_json.h"
+
+namespace bx {
+namespace {
+
+bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+void expect_same_nums(const std::vector<double>& a, const std::vector<double>& b, const char* what) {
+  ASSERT_EQ(a.size(), b.size()) << what;
+  for (std::size_t i = 0; i < a.size(); ++i) EXPECT_TRUE(same_bits(a[i], b[i])) << what << "[" << i << "]";
+}
+
+// every field of two outcomes, doubles by their bits
+void expect_same(const EvalOutcome& a, const EvalOutcome& b) {
+  EXPECT_EQ(a.viable, b.viable);
+  EXPECT_EQ(a.reason, b.reason);
+  const EvalResult &x = a.result, &y = b.result;
+  EXPECT_EQ(x.failed, y.failed);
+  EXPECT_EQ(x.failure, y.failure);
+  EXPECT_EQ(x.note, y.note);
+  EXPECT_TRUE(same_bits(x.fitness, y.fitness)) << x.fitness << " " << y.fitness;
+  EXPECT_TRUE(same_bits(x.distance, y.distance));
+  EXPECT_TRUE(same_bits(x.release_time, y.release_time));
+  EXPECT_TRUE(same_bits(x.target_miss, y.target_miss));
+  EXPECT_TRUE(same_bits(x.seconds, y.seconds));
+  EXPECT_EQ(x.steps, y.steps);
+  EXPECT_EQ(x.brain_steps, y.brain_steps);
+  EXPECT_EQ(x.warnings, y.warnings);
+  expect_same_nums(x.trial_fitness, y.trial_fitness, "trial_fitness");
+  const EvalDiagnostics &d = x.diagnostics, &e = y.diagnostics;
+  EXPECT_TRUE(same_bits(d.max_joint_gap, e.max_joint_gap));
+  EXPECT_EQ(d.worst_joint, e.worst_joint);
+  EXPECT_TRUE(same_bits(d.max_stop_overshoot, e.max_stop_overshoot));
+  EXPECT_TRUE(same_bits(d.max_penetration, e.max_penetration));
+  expect_same_nums(d.effector_mean, e.effector_mean, "effector_mean");
+  expect_same_nums(d.effector_sd, e.effector_sd, "effector_sd");
+}
+
+TEST(OutcomeJson, EveryFieldRoundTripsBitForBit) {
+  EvalOutcome o;
+  o.viable = false;
+  o.reason = "self-intersection: parts 1 and 2 \"overlap\"\n";
+  EvalResult& r = o.result;
+  r.failed = true;
+  r.failure = "numerical explosion at t=0.1 s";
+  r.note = "never settled";
+  r.fitness = 0.1 + 0.2;  // not the double nearest 0.3
+  r.distance = -1e-300;
+  r.release_time = 0.4999999999999999;
+  r.target_miss = 12345.678901234567;
+  r.seconds = 1.0 / 3.0;
+  r.steps = 1L << 40;
+  r.brain_steps = 7;
+  r.warnings = {"a", "b\tc"};
+  r.trial_fitness = {0.3, 2.0 / 3.0, 5e-324};
+  r.diagnostics = {0.038123, 21, 0.138, 0.0335, {-1, 0.25, 1.0 / 7.0}, {0, 0.899, 0.57}};
+  auto back = outcome_from_json(nlohmann::json::parse(outcome_to_json(o).dump()));
+  ASSERT_TRUE(back.ok()) << back.error();
+  expect_same(o, *back);
+}
+
+TEST(OutcomeJson, ANonFiniteNumberComesBackAsNaNAndAMissingFieldIsNamed) {
+  EvalOutcome o;
+  o.result.fitness = std::nan("");
+  o.result.diagnostics.max_penetration = INFINITY;
+  auto back = outcome_from_json(nlohmann::json::parse(outcome_to_json(o).dump()));
+  ASSERT_TRUE(back.ok()) << back.error();
+  EXPECT_TRUE(std::isnan(back->result.fitness));
+  EXPECT_TRUE(std::isnan(back->result.diagnostics.max_penetration));
+
+  auto j = outcome_to_json(EvalOutcome{});
+  j.erase("brain_steps");
+  auto missing = outcome_from_json(j);
+  ASSERT_FALSE(missing.ok());
+  EXPECT_EQ(missing.error(), "evaluation outcome: no field brain_steps");
+  j = outcome_to_json(EvalOutcome{});
+  j["diagnostics"]["effector_sd"] = "x";
+  auto typed = outcome_from_json(j);
+  ASSERT_FALSE(typed.ok());
+  EXPECT_EQ(typed.error(), "evaluation outcome: effector_sd is not an array");
+}
+
+TEST(OutcomeJson, ThePoolReturnsEveryFieldTheSerialEvaluatorComputesWithTwoTrials) {
+  std::vector<Genome> gs;
+  for (const char* name : {"walker.json", "snake.json"}) {
+    auto g = load_genome(std::string(BESTIARY_SOURCE_DIR) + "/tests/creatures/" + name);
+    ASSERT_TRUE(g.ok()) << g.error();
+    gs.push_back(*g);
+  }
+  SimConfig cfg = default_sim_config(Dialect::Sims1994);
+  cfg.task.seconds = 2;
+  cfg.trials = 2;
+  std::vector<EvalJob> jobs = {{&gs[0], 7}, {&gs[1], 8}};
+  auto serial = SerialEvaluator(cfg).evaluate(jobs);
+  auto pooled = ProcessPoolEvaluator(cfg, 2, 60).evaluate(jobs);
+  ASSERT_EQ(pooled.size(), serial.size());
+  for (std::size_t i = 0; i < serial.size(); ++i) {
+    EXPECT_EQ(serial[i].result.trial_fitness.size(), 2u);
+    EXPECT_FALSE(serial[i].result.diagnostics.effector_sd.empty());
+    expect_same(serial[i], pooled[i]);
+  }
+}
+
+}  // namespace
+}  // namespace bx
