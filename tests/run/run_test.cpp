@@ -4,12 +4,12 @@
 #include "run/run.h"
 
 #include <gtest/gtest.h>
-#include <sqlite3.h>
 
 #include <filesystem>
 
 #include "core/version.h"
 #include "io/run_store.h"
+#include "support/run_command.h"
 
 namespace bx {
 namespace {
@@ -44,24 +44,10 @@ seconds = 3
 
 // every row of the generation and individual tables, as text
 std::string dump(const std::string& dir) {
-  sqlite3* db = nullptr;
-  sqlite3_open_v2(run_db_path(dir).c_str(), &db, SQLITE_OPEN_READONLY, nullptr);
   std::string out;
   for (const char* q : {"SELECT * FROM generation ORDER BY gen", "SELECT * FROM individual ORDER BY id",
-                        "SELECT gen, state FROM checkpoint"}) {
-    sqlite3_stmt* s = nullptr;
-    sqlite3_prepare_v2(db, q, -1, &s, nullptr);
-    while (sqlite3_step(s) == SQLITE_ROW) {
-      for (int c = 0; c < sqlite3_column_count(s); ++c) {
-        auto* t = sqlite3_column_text(s, c);
-        out += t ? reinterpret_cast<const char*>(t) : "NULL";
-        out += '|';
-      }
-      out += '\n';
-    }
-    sqlite3_finalize(s);
-  }
-  sqlite3_close(db);
+                        "SELECT gen, state FROM checkpoint"})
+    out += bxtest::query(run_db_path(dir), q);
   return out;
 }
 
