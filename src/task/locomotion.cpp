@@ -13,6 +13,23 @@ LocomotionTask::LocomotionTask(const LocomotionDef& def, double dt, int n_parts)
   prev_parts_.resize(needs_parts() ? n_parts : 0);
 }
 
+long LocomotionTask::max_steps() const {
+  double longest = def_.activation == Activation::Chaumont2007
+                       ? 2 * def_.settle_timeout + def_.burst_seconds + def_.seconds
+                       : def_.seconds;
+  return std::lround(longest / dt_) + 1;
+}
+
+const std::vector<Vec3>& LocomotionTask::parts_of(const Observation& o) {
+  parts_.resize(needs_parts() ? o.n_parts() : 0);
+  for (std::size_t i = 0; i < parts_.size(); ++i) parts_[i] = o.part_pose(static_cast<int>(i)).p;
+  return parts_;
+}
+
+void LocomotionTask::begin(const Observation& o) { start(o.centre_of_mass(), parts_of(o)); }
+
+void LocomotionTask::observe(const Observation& o) { observe(o.time(), o.centre_of_mass(), parts_of(o)); }
+
 void LocomotionTask::start(Vec3 com, const std::vector<Vec3>& parts) {
   if (needs_parts()) prev_parts_ = parts;
   if (phase_ == Phase::Measure && def_.skip_fraction <= 0) begin_measure(0, com);

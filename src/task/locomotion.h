@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/math.h"
+#include "task/task.h"
 
 namespace bx {
 
@@ -57,16 +58,24 @@ struct LocomotionDef {
 /// The phases of an evaluation.
 enum class Phase { Settle1, Burst, Settle2, Measure, Done };
 
-/// Runs a locomotion task alongside the simulation: says when the controller
-/// is on and when the evaluation ends, and scores it.
-class LocomotionTask {
+/// A locomotion task: says when the controller is on and when the
+/// evaluation ends, and scores it. The Task overrides read the observation;
+/// start() and observe(t, com, parts) take the values themselves.
+class LocomotionTask : public Task {
  public:
   LocomotionTask(const LocomotionDef& def, double dt, int n_parts);
 
+  Scenario scenario() const override { return {def_.drop_height}; }
+  /// The whole sequence at its longest (every settling phase timing out), and a step.
+  long max_steps() const override;
+  void begin(const Observation& o) override;
+  void observe(const Observation& o) override;
   /// True when the motors follow the brain this step.
-  bool controller_on() const { return phase_ == Phase::Burst || phase_ == Phase::Measure; }
+  bool controller_on() const override { return phase_ == Phase::Burst || phase_ == Phase::Measure; }
   /// True once the evaluation is over.
-  bool done() const { return phase_ == Phase::Done; }
+  bool done() const override { return phase_ == Phase::Done; }
+  TaskScore score(const CreatureModel& m) const override { return {fitness(m), distance(), -1}; }
+  std::string note() const override { return note_; }
   Phase phase() const { return phase_; }
 
   /// Call at the start with the centre of mass and every part's position.
@@ -80,13 +89,13 @@ class LocomotionTask {
   double measured_seconds() const { return measured_ ? t_ - t_start_ : 0; }
   /// The fitness of the evaluation, given the creature (for eq. 1's block terms).
   double fitness(const CreatureModel& m) const;
-  /// Why the score is 0 by rule (e.g. never settled), or empty.
-  const std::string& note() const { return note_; }
   /// Whether the part positions are needed by observe() (else pass an empty vector).
   bool needs_parts() const { return def_.activation == Activation::Chaumont2007; }
 
  private:
   void settle(double t, const std::vector<Vec3>& parts, Phase next);
+  // every part's position, from an observation (when needs_parts())
+  const std::vector<Vec3>& parts_of(const Observation& o);
   void begin_measure(double t, Vec3 com);
 
   LocomotionDef def_;
@@ -96,7 +105,7 @@ class LocomotionTask {
   Vec3 start_, last_;
   double t_ = 0, t_start_ = 0, phase_start_ = 0;
   long still_steps_ = 0;  ///< consecutive still steps of dt
-  std::vector<Vec3> prev_parts_;
+  std::vector<Vec3> prev_parts_, parts_;
   std::string note_;
 };
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "physics/world.h"
+
 namespace bx {
 
 double point_segment_distance(Vec3 p, Vec3 a, Vec3 b) {
@@ -12,7 +14,30 @@ double point_segment_distance(Vec3 p, Vec3 a, Vec3 b) {
   return norm(p - (a + u * ab));
 }
 
-ThrowingTask::ThrowingTask(const ThrowingDef& def, double dt) : def_(def), dt_(dt) {}
+ThrowingTask::ThrowingTask(const ThrowingDef& def, double dt, int projectile, int release_joint)
+    : def_(def), dt_(dt), projectile_(projectile), release_joint_(release_joint) {}
+
+long ThrowingTask::max_steps() const { return std::lround(def_.seconds / dt_); }
+
+void ThrowingTask::act(const CreatureModel&, const Actions& a, World& w, const Observation& o) {
+  if (released_ || !a.release) return;
+  w.break_joint(release_joint_);
+  release(o.time(), o.part_pose(projectile_).p);
+}
+
+void ThrowingTask::observe(const Observation& o) { observe(o.time(), o.part_pose(projectile_).p); }
+
+TaskScore ThrowingTask::score(const CreatureModel&) const {
+  return {fitness(), distance(), def_.fitness == ThrowFitness::Aim ? target_miss() : -1};
+}
+
+TaskScene ThrowingTask::scene(const CreatureModel&) const {
+  TaskScene s;
+  s.projectile = projectile_;
+  s.release_time = release_time();
+  if (def_.fitness == ThrowFitness::Aim) s.target = def_.target;
+  return s;
+}
 
 void ThrowingTask::release(double t, Vec3 projectile) {
   if (released_) return;

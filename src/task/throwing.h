@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/math.h"
+#include "task/task.h"
 
 namespace bx {
 
@@ -34,11 +35,26 @@ struct ThrowingDef {
   Vec3 target{3, 0, 0.075};
 };
 
-/// Scores one throw alongside the simulation: the evaluation tells it when
-/// the projectile is released and where the projectile is after each step.
-class ThrowingTask {
+/// Scores one throw. As a Task, it breaks the catapult's release joint when
+/// the controller's release fires and follows the projectile part; release()
+/// and observe(t, projectile) take the values themselves.
+class ThrowingTask : public Task {
  public:
-  ThrowingTask(const ThrowingDef& def, double dt);
+  /// `projectile` and `release_joint`: the catapult's (CreatureModel), or -1
+  /// when only the value methods are used.
+  ThrowingTask(const ThrowingDef& def, double dt, int projectile = -1, int release_joint = -1);
+
+  Scenario scenario() const override { return {def_.drop_height}; }
+  long max_steps() const override;
+  /// The controller drives the motors throughout (4.4: no activation sequence).
+  /// The release breaks the arm-projectile joint before the step.
+  void act(const CreatureModel& m, const Actions& a, World& w, const Observation& o) override;
+  void observe(const Observation& o) override;
+  /// True once the projectile has come to rest after its release.
+  bool done() const override { return done_; }
+  TaskScore score(const CreatureModel&) const override;
+  std::string note() const override;
+  TaskScene scene(const CreatureModel&) const override;
 
   /// Call at the step the release fires, with the time and the projectile's centre.
   void release(double t, Vec3 projectile);
@@ -46,8 +62,6 @@ class ThrowingTask {
   void observe(double t, Vec3 projectile);
 
   bool released() const { return released_; }
-  /// True once the projectile has come to rest after its release.
-  bool done() const { return done_; }
   /// Time of the release (s), or -1.
   double release_time() const { return released_ ? t_release_ : -1; }
   /// D_p: horizontal distance from the release point to the last observed
@@ -59,12 +73,11 @@ class ThrowingTask {
   double target_miss() const { return released_ ? miss_ : -1; }
   /// The fitness by def.fitness (0 if never released).
   double fitness() const;
-  /// Why the score is 0 by rule (never released), or empty.
-  std::string note() const;
 
  private:
   ThrowingDef def_;
   double dt_;
+  int projectile_, release_joint_;
   bool released_ = false, done_ = false;
   double t_release_ = 0;
   Vec3 start_, last_;

@@ -125,3 +125,33 @@ TEST(Locomotion, ChaumontFitnessFollowsEquationOne) {
 
 }  // namespace
 }  // namespace bx
+
+namespace bx {
+namespace {
+
+// an observation of a lone root part turned by R
+struct OnePart : Observation {
+  Mat3 R;
+  double time() const override { return 0; }
+  Vec3 centre_of_mass() const override { return {}; }
+  int n_parts() const override { return 1; }
+  Pose part_pose(int) const override { return {{0, 0, 0}, R}; }
+};
+
+TEST(Heading, IsTheRootsXAxisTurnedOnTheGround) {
+  OnePart o;
+  EXPECT_DOUBLE_EQ(heading(o), 0);
+  o.R = Mat3::rotation({0, 0, 1}, 0.5);
+  EXPECT_NEAR(heading(o), 0.5, 1e-12);
+  o.R = Mat3::rotation({0, 0, 1}, -2.5);
+  EXPECT_NEAR(heading(o), -2.5, 1e-12);
+  // pitching or rolling does not turn it
+  o.R = Mat3::rotation({0, 0, 1}, 0.5) * Mat3::rotation({0, 1, 0}, 0.7) * Mat3::rotation({1, 0, 0}, 0.3);
+  EXPECT_NEAR(heading(o), 0.5, 1e-12);
+  // nose straight up: no heading
+  o.R = Mat3::rotation({0, 1, 0}, -kPi / 2);
+  EXPECT_DOUBLE_EQ(heading(o), 0);
+}
+
+}  // namespace
+}  // namespace bx

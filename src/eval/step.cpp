@@ -1,0 +1,108 @@
+#include "eval/step.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "task/locomotion.h"
+#include "task/throwing.h"
+
+namespace bx {
+
+EvalState::EvalState(const CreatureModel& m, const SimConfig& cfg, std::unique_ptr<Task> t, double yaw)
+    : world(cfg.physics),
+      brain(make_brain_state(m.brain)),
+      task(std::move(t)),
+      signal_sum(m.effectors.size(), 0.0),
+      signal_sum_sq(m.effectors.size(), 0.0),
+      motors_off(m.effectors.size(), 0.0),
+      clamp(cfg.effector_clamp.size() == 1 ? std::vector<double>(m.effectors.size(), cfg.effector_clamp[0])
+                                           : cfg.effector_clamp) {
+  // the creature resting drop_height above the ground
+  // (turned by `yaw` about the vertical, which keeps its height)
+  const double drop = task->scenario().drop_height;
+  world.add_creature(m, {{0, 0, drop - m.min_z()}, Mat3::rotation({0, 0, 1}, yaw)});
+  signals = motors_off;
+  task->begin(WorldObservation(m, world));
+}
+
+namespace {
+
+// Sense and think before a physics step: every brain step due by the step's
+// end (brain_steps_due) runs, each brain.rate_hz's length, on the sensor
+// readings of now; when none is due the effectors hold.
+void think(const CreatureModel& m, const SimConfig& cfg, EvalState& s) {
+  const long due = brain_steps_due(s.physics_steps + 1, cfg.physics.dt, cfg.brain_hz);
+  if (s.brain_steps >= due) return;
+  s.world.read_sensors(m, std::span<double>(s.brain.values.data(), m.brain.n_sensors));
+  const double brain_dt = 1.0 / cfg.brain_hz;
+  for (; s.brain_steps < due; ++s.brain_steps) {
+    brain_step(m.brain, s.brain, brain_dt);
+    // the release fires at the first brain step whose signal reaches the threshold
+    if (m.brain.has_release() && s.brain.release_out >= ReleaseGene::kFiringThreshold) s.actions.release = true;
+  }
+}
+
+}  // namespace
+
+bool step(const CreatureModel& m, const SimConfig& cfg, EvalState& s) {
+  const WorldObservation obs(m, s.world);
+  // sense, think, and what the actions do
+  think(m, cfg, s);
+  s.task->act(m, s.actions, s.world, obs);
+
+  // act: the motors follow the controller only while the task has it on
+  const bool on = s.task->controller_on();
+  s.signals = !on ? s.motors_off : s.clamp.empty() ? s.brain.effector_out : s.clamp;
+  if (on) {
+    // the signals' activity, for diagnostics
+    for (std::size_t e = 0; e < s.signals.size(); ++e) {
+      s.signal_sum[e] += s.signals[e];
+      s.signal_sum_sq[e] += s.signals[e] * s.signals[e];
+    }
+    ++s.driven_steps;
+  }
+  s.world.apply_effectors(m, cfg.motor, s.signals);
+  if (!on && cfg.motor.off_brake > 0) s.world.brake_effectors(m, cfg.motor);
+
+  // step, and end a blown-up simulation with a failing score
+  s.world.step();
+  ++s.physics_steps;
+  if (std::string why = s.world.check_explosion(); !why.empty()) {
+    s.failed = true;
+    s.failure = "numerical explosion at t=" + std::to_string(s.world.time()) + " s: " + why;
+    return false;
+  }
+  s.task->observe(obs);
+  return true;
+}
+
+Result<std::unique_ptr<Task>> make_task(const CreatureModel& m, const SimConfig& cfg) {
+  const double dt = cfg.physics.dt;
+  switch (cfg.task_kind) {
+    case TaskKind::Locomotion: return std::unique_ptr<Task>(new LocomotionTask(cfg.task, dt, m.n_parts()));
+    case TaskKind::Throwing:
+      if (m.projectile < 0) return Error{"not a catapult: the throwing task needs a genome with a catapult block"};
+      return std::unique_ptr<Task>(new ThrowingTask(cfg.throwing, dt, m.projectile, m.release_joint));
+  }
+  return Error{"unknown task kind"};
+}
+
+EvalDiagnostics diagnostics(const EvalState& s) {
+  EvalDiagnostics d;
+  const WorldStats& w = s.world.stats();
+  d.max_joint_gap = w.max_joint_gap;
+  d.worst_joint = w.worst_joint;
+  d.max_stop_overshoot = w.max_stop_overshoot;
+  d.max_penetration = w.max_penetration;
+  if (s.driven_steps > 0) {
+    const double n = static_cast<double>(s.driven_steps);
+    for (std::size_t e = 0; e < s.signal_sum.size(); ++e) {
+      double mean = s.signal_sum[e] / n;
+      d.effector_mean.push_back(mean);
+      d.effector_sd.push_back(std::sqrt(std::max(0.0, s.signal_sum_sq[e] / n - mean * mean)));
+    }
+  }
+  return d;
+}
+
+}  // namespace bx

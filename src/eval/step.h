@@ -1,0 +1,79 @@
+// The one evaluation loop: a public per-evaluation state and the step that
+// advances it (model first, as MuJoCo's mj_step(model, data)). Every task
+// runs in it; a replay recorder observes it.
+#pragma once
+
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "brain/brain_model.h"
+#include "core/result.h"
+#include "develop/creature_model.h"
+#include "eval/evaluate.h"
+#include "eval/sim_config.h"
+#include "physics/world.h"
+#include "task/task.h"
+
+namespace bx {
+
+/// Everything that changes during one evaluation (MuJoCo's mjData): the
+/// world with the creature in it, the controller's state, the task's state
+/// and the counters. Made with the creature placed on the task's scenario;
+/// not copyable.
+struct EvalState {
+  /// The creature starts as the task's scenario says, turned by `yaw`
+  /// (rad) about the vertical.
+  EvalState(const CreatureModel& m, const SimConfig& cfg, std::unique_ptr<Task> task, double yaw);
+
+  World world;
+  BrainState brain;
+  std::unique_ptr<Task> task;
+  Actions actions;            ///< what the controller asked of the task so far
+  long physics_steps = 0;
+  long brain_steps = 0;
+  bool failed = false;        ///< the world blew up (failure says how)
+  std::string failure;
+  /// The signals the motors were given in the last step: the brain's, the
+  /// diagnostic clamp, or the task's "off" zeros (all 0 before the first step).
+  std::span<const double> signals;
+
+  // the effectors' activity while the controller drove the motors
+  std::vector<double> signal_sum, signal_sum_sq;
+  long driven_steps = 0;
+
+  // constants of the evaluation
+  const std::vector<double> motors_off;
+  const std::vector<double> clamp;
+};
+
+/// One physics step of the evaluation: every brain step due by the step's
+/// end (sense, think), the task's act on the controller's actions, the
+/// motors (the brain's signals, or held off while the task says so), the
+/// physics step, the explosion test, the task's observation. False (and
+/// nothing observed) once the world blew up: s.failed and s.failure say why.
+bool step(const CreatureModel& m, const SimConfig& cfg, EvalState& s);
+
+/// The task of cfg.task_kind for this creature, or why it cannot have it
+/// (throwing needs a catapult).
+Result<std::unique_ptr<Task>> make_task(const CreatureModel& m, const SimConfig& cfg);
+
+/// What the world measured of its accuracy, and the effectors' activity.
+EvalDiagnostics diagnostics(const EvalState& s);
+
+/// The observation of a state's world, for the task and for observers.
+class WorldObservation : public Observation {
+ public:
+  WorldObservation(const CreatureModel& m, const World& w) : m_(m), w_(w) {}
+  double time() const override { return w_.time(); }
+  Vec3 centre_of_mass() const override { return w_.centre_of_mass(); }
+  int n_parts() const override { return m_.n_parts(); }
+  Pose part_pose(int i) const override { return w_.part_pose(i); }
+
+ private:
+  const CreatureModel& m_;
+  const World& w_;
+};
+
+}  // namespace bx

@@ -1,0 +1,94 @@
+// A task: what a creature is asked to do, as the one evaluation loop
+// (eval/step.h) sees it. A task is a per-evaluation state machine: it says
+// where the creature starts (its scenario), whether the controller drives the
+// motors, what the controller's actions do to the world, when the
+// evaluation ends and what it scored. Locomotion (task/locomotion.h) and
+// throwing (task/throwing.h) are its implementations.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "core/math.h"
+
+namespace bx {
+
+class World;
+struct CreatureModel;
+
+/// What a task may read of the world after a step. The loop's is a view of
+/// its world, read when asked (eval/step.cpp); a test's may be a fake.
+class Observation {
+ public:
+  virtual ~Observation() = default;
+  /// Simulated time (s).
+  virtual double time() const = 0;
+  /// Mass-weighted centre of the creature.
+  virtual Vec3 centre_of_mass() const = 0;
+  virtual int n_parts() const = 0;
+  /// Pose of part i (0 is the root).
+  virtual Pose part_pose(int i) const = 0;
+};
+
+/// The creature's heading: the angle (rad, from +x towards +y) of its root
+/// part's x axis projected onto the ground; 0 when that axis is vertical.
+double heading(const Observation& o);
+
+/// Where and how an evaluation starts. (lessin2015's props, lights and
+/// targets join this when its tasks arrive.)
+struct Scenario {
+  double drop_height = 0;  ///< gap between the lowest part and the ground (m)
+};
+
+/// What the controller asks of the task beside its motor signals.
+struct Actions {
+  /// A catapult's release effector has fired (chaumont2007 4.1): it stays
+  /// true from the brain step that reached the threshold on.
+  bool release = false;
+};
+
+/// What an evaluation scored, read once the loop has ended.
+struct TaskScore {
+  double fitness = 0;
+  double distance = 0;       ///< m, by the task's metric (throwing: D_p)
+  double target_miss = -1;   ///< throwing, aim: D_t (m), or -1
+};
+
+/// What a replay shows beside the creature.
+struct TaskScene {
+  int projectile = -1;        ///< the thrown part, or -1
+  double release_time = -1;   ///< s, or -1: not released
+  std::optional<Vec3> target; ///< the aim task's target
+};
+
+/// One evaluation's task. The loop calls begin() once with the creature in
+/// place, then for each physics step: act() after the controller thought,
+/// the step, observe(); it stops when done() or after max_steps() steps.
+class Task {
+ public:
+  virtual ~Task() = default;
+
+  /// Where the creature starts.
+  virtual Scenario scenario() const = 0;
+  /// The longest evaluation, in physics steps (the task usually ends sooner).
+  virtual long max_steps() const = 0;
+  /// Once, before the first step.
+  virtual void begin(const Observation&) {}
+  /// Whether the motors follow the controller in the coming step (else the
+  /// loop holds them off).
+  virtual bool controller_on() const { return true; }
+  /// Before each step: what the controller's actions do to the world.
+  virtual void act(const CreatureModel&, const Actions&, World&, const Observation&) {}
+  /// After each step.
+  virtual void observe(const Observation& o) = 0;
+  /// True once the evaluation is over.
+  virtual bool done() const = 0;
+  /// The score (unless the evaluation failed).
+  virtual TaskScore score(const CreatureModel& m) const = 0;
+  /// Why the score is 0 by rule (e.g. never settled), or empty.
+  virtual std::string note() const { return {}; }
+  /// What a replay shows beside the creature.
+  virtual TaskScene scene(const CreatureModel&) const { return {}; }
+};
+
+}  // namespace bx

@@ -1,0 +1,124 @@
+// The one evaluation loop: any Task drives it (a task written here, on real
+// physics), in the order the loop promises, and a blow-up stops it unobserved.
+#include "eval/step.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "develop/develop.h"
+#include "genome/genome_json.h"
+
+namespace bx {
+namespace {
+
+CreatureModel grow(const std::string& name, SimConfig& cfg) {
+  auto g = load_genome(std::string(BESTIARY_SOURCE_DIR) + "/tests/creatures/" + name);
+  EXPECT_TRUE(g.ok()) << g.error();
+  cfg = default_sim_config(g->dialect);
+  Development d = develop(*g);
+  EXPECT_TRUE(d.viable()) << d.reason;
+  return *d.model;
+}
+
+// A task that holds the controller off for its first `off` steps, ends after
+// `last` observations, and logs what the loop told it.
+struct ScriptedTask : Task {
+  int off = 10, last = 30;
+  double drop = 0.25;
+  std::vector<char> log;  // 'b' begin, 'a' act, 'o' observe
+  std::vector<double> times;
+  double start_z = 0;
+
+  Scenario scenario() const override { return {drop}; }
+  long max_steps() const override { return 1000; }
+  void begin(const Observation& o) override {
+    log.push_back('b');
+    start_z = o.part_pose(0).p.z;
+    times.push_back(o.time());
+  }
+  bool controller_on() const override { return observed() >= off; }
+  void act(const CreatureModel&, const Actions&, World&, const Observation&) override { log.push_back('a'); }
+  void observe(const Observation& o) override {
+    log.push_back('o');
+    times.push_back(o.time());
+  }
+  bool done() const override { return observed() >= last; }
+  TaskScore score(const CreatureModel&) const override { return {1, 2, -1}; }
+  int observed() const { return static_cast<int>(times.size()) - 1; }
+};
+
+TEST(Step, ATaskWrittenAnywhereDrivesTheLoopInTheOrderPromised) {
+  SimConfig cfg;
+  CreatureModel m = grow("walker.json", cfg);
+  auto owned = std::make_unique<ScriptedTask>();
+  ScriptedTask& task = *owned;
+  EvalState s(m, cfg, std::move(owned), 0);
+  // placed by the scenario: the lowest point `drop` above the ground (the root at the frame's origin)
+  EXPECT_NEAR(task.start_z - (task.drop - m.min_z()), 0, 1e-9);
+  ASSERT_EQ(task.log, std::vector<char>{'b'});
+
+  int off_steps = 0, on_steps = 0;
+  while (!s.task->done() && step(m, cfg, s)) {
+    bool zeros = true, brains = true;
+    for (std::size_t e = 0; e < s.signals.size(); ++e) {
+      zeros = zeros && s.signals[e] == 0;
+      brains = brains && s.signals[e] == s.brain.effector_out[e];
+    }
+    // held off: the motors get 0; on: the brain's outputs
+    if (task.observed() <= task.off) {
+      EXPECT_TRUE(zeros) << "step " << s.physics_steps;
+      ++off_steps;
+    } else {
+      EXPECT_TRUE(brains) << "step " << s.physics_steps;
+      ++on_steps;
+    }
+  }
+  EXPECT_FALSE(s.failed) << s.failure;
+  EXPECT_EQ(s.physics_steps, task.last);
+  EXPECT_EQ(off_steps, task.off);
+  EXPECT_EQ(on_steps, task.last - task.off);
+  // begin, then act before each step and observe after it
+  ASSERT_EQ(task.log.size(), 1u + 2u * task.last);
+  for (int k = 0; k < task.last; ++k) {
+    EXPECT_EQ(task.log[1 + 2 * k], 'a');
+    EXPECT_EQ(task.log[2 + 2 * k], 'o');
+  }
+  for (int k = 0; k <= task.last; ++k) EXPECT_NEAR(task.times[k], k * cfg.physics.dt, 1e-12);
+  // the walker's brain ran at brain.rate_hz all along, thinking while held off
+  EXPECT_EQ(s.brain_steps, brain_steps_due(task.last, cfg.physics.dt, cfg.brain_hz));
+  // the activity counts only the steps the controller drove
+  EXPECT_EQ(s.driven_steps, task.last - task.off);
+}
+
+TEST(Step, ABlowUpStopsTheLoopAndIsNotObserved) {
+  SimConfig cfg;
+  CreatureModel m = grow("walker.json", cfg);
+  cfg.physics.max_speed = 0.05;  // falling from 1 m is a blow-up by this bound
+  auto owned = std::make_unique<ScriptedTask>();
+  ScriptedTask& task = *owned;
+  task.drop = 1.0;
+  task.off = 0;
+  task.last = 1000;
+  EvalState s(m, cfg, std::move(owned), 0);
+  int steps = 0;
+  while (step(m, cfg, s)) ++steps;
+  EXPECT_TRUE(s.failed);
+  EXPECT_NE(s.failure.find("numerical explosion at t="), std::string::npos) << s.failure;
+  EXPECT_EQ(s.physics_steps, steps + 1);
+  EXPECT_EQ(task.observed(), steps);  // the failing step is not observed
+}
+
+TEST(Step, TheThrowingTaskIsRefusedToACreatureWithoutACatapult) {
+  SimConfig cfg;
+  CreatureModel m = grow("walker.json", cfg);
+  cfg.task_kind = TaskKind::Throwing;
+  auto t = make_task(m, cfg);
+  ASSERT_FALSE(t.ok());
+  EXPECT_NE(t.error().find("not a catapult"), std::string::npos) << t.error();
+  cfg.task_kind = TaskKind::Locomotion;
+  EXPECT_TRUE(make_task(m, cfg).ok());
+}
+
+}  // namespace
+}  // namespace bx
