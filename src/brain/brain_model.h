@@ -37,6 +37,8 @@ struct BrainModel {
   // the larger of the delay neuron's output and the clamped weighted sum of
   // its inputs from the body's network; the task fires the release from 0.5 on
   std::int32_t release_delay_src = -1;  ///< value slot of the delay; -1: no release effector
+  /// The release fires at the first brain step its signal reaches this.
+  static constexpr double kReleaseThreshold = 0.5;
   std::vector<std::int32_t> release_input_src;
   std::vector<double> release_input_weight;
 

@@ -36,11 +36,11 @@ class ReplayRecorder {
       Quat q = to_quat(p.R);
       f.poses.insert(f.poses.end(), {p.p.x, p.p.y, p.p.z, q.w, q.x, q.y, q.z});
     }
-    const BrainState& bs = s.brain;
-    f.neurons.assign(bs.values.begin() + m.brain.n_sensors, bs.values.end());
+    std::span<const double> internals = s.controller->internals(), sensors = s.controller->sensors();
+    f.neurons.assign(internals.begin(), internals.end());
     f.effectors.assign(s.signals.begin(), s.signals.end());
-    // the readings the brain took before its last step (0 before its first)
-    f.sensors.assign(bs.values.begin(), bs.values.begin() + m.brain.n_sensors);
+    // the readings the controller took before its last step (0 before its first)
+    f.sensors.assign(sensors.begin(), sensors.end());
     for (int j = 0; j < static_cast<int>(m.joints.size()); ++j)
       for (int d = 0; d < joint_dofs(m.joints[j].type); ++d) f.joint_angles.push_back(w.joint_position(j, d));
     f.com = w.centre_of_mass();
@@ -97,7 +97,7 @@ EvalResult evaluate_once(const CreatureModel& m, const SimConfig& cfg, std::uint
   std::optional<ReplayRecorder> recorder;
   if (replay) recorder.emplace(cfg, *replay);
   try {
-    s.emplace(m, cfg, std::move(*task), yaw);
+    s.emplace(m, GraphBrain(m.brain), cfg, std::move(*task), yaw);
     if (recorder) recorder->observe(m, *s);
     const long max_steps = s->task->max_steps();
     while (s->physics_steps < max_steps && !s->task->done() && step(m, cfg, *s))

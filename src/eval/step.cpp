@@ -1,6 +1,7 @@
 #include "eval/step.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 
 #include "task/locomotion.h"
@@ -8,15 +9,21 @@
 
 namespace bx {
 
-EvalState::EvalState(const CreatureModel& m, const SimConfig& cfg, std::unique_ptr<Task> t, double yaw)
+EvalState::EvalState(const CreatureModel& m, const ControllerModel& c, const SimConfig& cfg,
+                     std::unique_ptr<Task> t, double yaw)
     : world(cfg.physics),
-      brain(make_brain_state(m.brain)),
+      controller(c.make_state()),
       task(std::move(t)),
+      sensor_readings(m.sensors.size(), 0.0),
+      task_inputs(static_cast<std::size_t>(task->n_inputs()), 0.0),
       signal_sum(m.effectors.size(), 0.0),
       signal_sum_sq(m.effectors.size(), 0.0),
       motors_off(m.effectors.size(), 0.0),
       clamp(cfg.effector_clamp.size() == 1 ? std::vector<double>(m.effectors.size(), cfg.effector_clamp[0])
                                            : cfg.effector_clamp) {
+  assert(c.n_sensors() == static_cast<int>(m.sensors.size()));
+  assert(c.n_effectors() == static_cast<int>(m.effectors.size()));
+  assert(c.n_task_inputs() == task->n_inputs());
   // the creature resting drop_height above the ground
   // (turned by `yaw` about the vertical, which keeps its height)
   const double drop = task->scenario().drop_height;
@@ -27,19 +34,16 @@ EvalState::EvalState(const CreatureModel& m, const SimConfig& cfg, std::unique_p
 
 namespace {
 
-// Sense and think before a physics step: every brain step due by the step's
-// end (brain_steps_due) runs, each brain.rate_hz's length, on the sensor
-// readings of now; when none is due the effectors hold.
-void think(const CreatureModel& m, const SimConfig& cfg, EvalState& s) {
+// Sense and think before a physics step: every controller step due by the
+// step's end (brain_steps_due) runs, each brain.rate_hz's length, on the
+// sensor readings and task inputs of now; when none is due the effectors hold.
+void think(const CreatureModel& m, const SimConfig& cfg, EvalState& s, const Observation& obs) {
   const long due = brain_steps_due(s.physics_steps + 1, cfg.physics.dt, cfg.brain_hz);
   if (s.brain_steps >= due) return;
-  s.world.read_sensors(m, std::span<double>(s.brain.values.data(), m.brain.n_sensors));
-  const double brain_dt = 1.0 / cfg.brain_hz;
-  for (; s.brain_steps < due; ++s.brain_steps) {
-    brain_step(m.brain, s.brain, brain_dt);
-    // the release fires at the first brain step whose signal reaches the threshold
-    if (m.brain.has_release() && s.brain.release_out >= ReleaseGene::kFiringThreshold) s.actions.release = true;
-  }
+  s.world.read_sensors(m, s.sensor_readings);
+  if (!s.task_inputs.empty()) s.task->inputs(obs, s.task_inputs);
+  const double dt = 1.0 / cfg.brain_hz;
+  for (; s.brain_steps < due; ++s.brain_steps) s.controller->step(s.sensor_readings, s.task_inputs, dt);
 }
 
 }  // namespace
@@ -47,12 +51,13 @@ void think(const CreatureModel& m, const SimConfig& cfg, EvalState& s) {
 bool step(const CreatureModel& m, const SimConfig& cfg, EvalState& s) {
   const WorldObservation obs(m, s.world);
   // sense, think, and what the actions do
-  think(m, cfg, s);
-  s.task->act(m, s.actions, s.world, obs);
+  think(m, cfg, s, obs);
+  s.task->act(m, s.controller->actions(), s.world, obs);
 
   // act: the motors follow the controller only while the task has it on
   const bool on = s.task->controller_on();
-  s.signals = !on ? s.motors_off : s.clamp.empty() ? s.brain.effector_out : s.clamp;
+  s.signals = !on ? std::span<const double>(s.motors_off)
+             : s.clamp.empty() ? s.controller->effectors() : std::span<const double>(s.clamp);
   if (on) {
     // the signals' activity, for diagnostics
     for (std::size_t e = 0; e < s.signals.size(); ++e) {

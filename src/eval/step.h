@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "brain/brain_model.h"
+#include "brain/controller.h"
 #include "core/result.h"
 #include "develop/creature_model.h"
 #include "eval/evaluate.h"
@@ -24,19 +24,23 @@ namespace bx {
 /// not copyable.
 struct EvalState {
   /// The creature starts as the task's scenario says, turned by `yaw`
-  /// (rad) about the vertical.
-  EvalState(const CreatureModel& m, const SimConfig& cfg, std::unique_ptr<Task> task, double yaw);
+  /// (rad) about the vertical, driven by a fresh state of `controller`
+  /// (which must fit the creature's sensors and effectors and the task's
+  /// inputs).
+  EvalState(const CreatureModel& m, const ControllerModel& controller, const SimConfig& cfg,
+            std::unique_ptr<Task> task, double yaw);
 
   World world;
-  BrainState brain;
+  std::unique_ptr<ControllerState> controller;
   std::unique_ptr<Task> task;
-  Actions actions;            ///< what the controller asked of the task so far
   long physics_steps = 0;
-  long brain_steps = 0;
+  long brain_steps = 0;       ///< controller steps, at brain.rate_hz
+  std::vector<double> sensor_readings, task_inputs;  ///< of the last controller step
   bool failed = false;        ///< the world blew up (failure says how)
   std::string failure;
-  /// The signals the motors were given in the last step: the brain's, the
-  /// diagnostic clamp, or the task's "off" zeros (all 0 before the first step).
+  /// The signals the motors were given in the last step: the controller's,
+  /// the diagnostic clamp, or the task's "off" zeros (all 0 before the first
+  /// step).
   std::span<const double> signals;
 
   // the effectors' activity while the controller drove the motors
@@ -48,9 +52,9 @@ struct EvalState {
   const std::vector<double> clamp;
 };
 
-/// One physics step of the evaluation: every brain step due by the step's
-/// end (sense, think), the task's act on the controller's actions, the
-/// motors (the brain's signals, or held off while the task says so), the
+/// One physics step of the evaluation: every controller step due by the
+/// step's end (sense, think), the task's act on the controller's actions, the
+/// motors (the controller's signals, or held off while the task says so), the
 /// physics step, the explosion test, the task's observation. False (and
 /// nothing observed) once the world blew up: s.failed and s.failure say why.
 bool step(const CreatureModel& m, const SimConfig& cfg, EvalState& s);

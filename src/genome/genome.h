@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "brain/brain_model.h"
 #include "core/math.h"
 
 namespace bx {
@@ -152,7 +153,7 @@ struct NodeGene {
 /// network, read as from the arm's part) reaches the firing threshold.
 struct ReleaseGene {
   /// The weighted sum of `inputs` fires the release from this value on.
-  static constexpr double kFiringThreshold = 0.5;
+  static constexpr double kFiringThreshold = BrainModel::kReleaseThreshold;
   int delay_steps = 30;  ///< chaumont2007 4.1: 30 steps (0.5 s at 60 Hz)
   std::vector<InputGene> inputs;
   friend bool operator==(const ReleaseGene&, const ReleaseGene&) = default;

@@ -7,8 +7,10 @@
 #pragma once
 
 #include <optional>
+#include <span>
 #include <string>
 
+#include "brain/controller.h"  // Actions
 #include "core/math.h"
 
 namespace bx {
@@ -40,13 +42,6 @@ struct Scenario {
   double drop_height = 0;  ///< gap between the lowest part and the ground (m)
 };
 
-/// What the controller asks of the task beside its motor signals.
-struct Actions {
-  /// A catapult's release effector has fired (chaumont2007 4.1): it stays
-  /// true from the brain step that reached the threshold on.
-  bool release = false;
-};
-
 /// What an evaluation scored, read once the loop has ended.
 struct TaskScore {
   double fitness = 0;
@@ -62,8 +57,9 @@ struct TaskScene {
 };
 
 /// One evaluation's task. The loop calls begin() once with the creature in
-/// place, then for each physics step: act() after the controller thought,
-/// the step, observe(); it stops when done() or after max_steps() steps.
+/// place, then for each physics step: inputs() when the controller is due
+/// to think, act() after it thought, the step, observe(); it stops when
+/// done() or after max_steps() steps.
 class Task {
  public:
   virtual ~Task() = default;
@@ -74,6 +70,11 @@ class Task {
   virtual long max_steps() const = 0;
   /// Once, before the first step.
   virtual void begin(const Observation&) {}
+  /// Inputs it gives the controller beside the body's sensors (a river
+  /// crossing's cell under the agent); the controller model must take as many.
+  virtual int n_inputs() const { return 0; }
+  /// Writes them (n_inputs() values) before each controller step.
+  virtual void inputs(const Observation&, std::span<double>) const {}
   /// Whether the motors follow the controller in the coming step (else the
   /// loop holds them off).
   virtual bool controller_on() const { return true; }

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "develop/develop.h"
@@ -53,7 +54,7 @@ TEST(Step, ATaskWrittenAnywhereDrivesTheLoopInTheOrderPromised) {
   CreatureModel m = grow("walker.json", cfg);
   auto owned = std::make_unique<ScriptedTask>();
   ScriptedTask& task = *owned;
-  EvalState s(m, cfg, std::move(owned), 0);
+  EvalState s(m, GraphBrain(m.brain), cfg, std::move(owned), 0);
   // placed by the scenario: the lowest point `drop` above the ground (the root at the frame's origin)
   EXPECT_NEAR(task.start_z - (task.drop - m.min_z()), 0, 1e-9);
   ASSERT_EQ(task.log, std::vector<char>{'b'});
@@ -63,7 +64,7 @@ TEST(Step, ATaskWrittenAnywhereDrivesTheLoopInTheOrderPromised) {
     bool zeros = true, brains = true;
     for (std::size_t e = 0; e < s.signals.size(); ++e) {
       zeros = zeros && s.signals[e] == 0;
-      brains = brains && s.signals[e] == s.brain.effector_out[e];
+      brains = brains && s.signals[e] == s.controller->effectors()[e];
     }
     // held off: the motors get 0; on: the brain's outputs
     if (task.observed() <= task.off) {
@@ -100,7 +101,7 @@ TEST(Step, ABlowUpStopsTheLoopAndIsNotObserved) {
   task.drop = 1.0;
   task.off = 0;
   task.last = 1000;
-  EvalState s(m, cfg, std::move(owned), 0);
+  EvalState s(m, GraphBrain(m.brain), cfg, std::move(owned), 0);
   int steps = 0;
   while (step(m, cfg, s)) ++steps;
   EXPECT_TRUE(s.failed);
@@ -118,6 +119,82 @@ TEST(Step, TheThrowingTaskIsRefusedToACreatureWithoutACatapult) {
   EXPECT_NE(t.error().find("not a catapult"), std::string::npos) << t.error();
   cfg.task_kind = TaskKind::Locomotion;
   EXPECT_TRUE(make_task(m, cfg).ok());
+}
+
+// A controller that is no graph brain: an open-loop oscillator whose
+// frequency the task gives it as an input, one signal for every effector.
+struct Oscillator : ControllerModel {
+  int sensors = 0, effectors = 0;
+  int n_sensors() const override { return sensors; }
+  int n_effectors() const override { return effectors; }
+  int n_task_inputs() const override { return 1; }
+  struct State : ControllerState {
+    std::vector<double> out, seen;
+    double t = 0;
+    Actions none;
+    void step(std::span<const double> sensors, std::span<const double> in, double dt) override {
+      seen.assign(sensors.begin(), sensors.end());
+      t += dt;
+      for (double& o : out) o = std::sin(2 * kPi * in[0] * t);
+    }
+    std::span<const double> effectors() const override { return out; }
+    const Actions& actions() const override { return none; }
+    std::span<const double> sensors() const override { return seen; }
+    std::span<const double> internals() const override { return {}; }
+  };
+  std::unique_ptr<ControllerState> make_state() const override {
+    auto s = std::make_unique<State>();
+    s->out.assign(static_cast<std::size_t>(effectors), 0.0);
+    s->seen.assign(static_cast<std::size_t>(sensors), 0.0);
+    return s;
+  }
+};
+
+// a task that gives the controller a frequency (Hz) and runs for 4 s
+struct FrequencyTask : ScriptedTask {
+  double hz = 1;
+  int n_inputs() const override { return 1; }
+  void inputs(const Observation&, std::span<double> out) const override { out[0] = hz; }
+};
+
+TEST(Step, AControllerThatIsNoGraphBrainDrivesTheBodyOnTheTasksInputs) {
+  SimConfig cfg;
+  CreatureModel m = grow("hinged_pair.json", cfg);
+  // velocity servos, so the hinge's angle is the signal's integral (the
+  // dialect's torque motors flip the light pair over)
+  cfg.motor.model = MotorModel::Servo;
+  cfg.motor.max_speed = 2;
+  cfg.motor.max_force = 50;
+  for (double hz : {0.5, 1.0}) {
+    Oscillator osc;
+    osc.sensors = static_cast<int>(m.sensors.size());
+    osc.effectors = static_cast<int>(m.effectors.size());
+    ASSERT_GT(osc.effectors, 0);
+    auto owned = std::make_unique<FrequencyTask>();
+    FrequencyTask& task = *owned;
+    task.hz = hz;
+    task.off = 0;
+    task.last = static_cast<int>(std::lround(4 / cfg.physics.dt));
+    EvalState s(m, osc, cfg, std::move(owned), 0);
+    // the joint swings both ways, once per period of the task's frequency
+    std::vector<double> angle;
+    while (!s.task->done() && step(m, cfg, s)) angle.push_back(s.world.joint_position(0, 0));
+    const double lo = *std::min_element(angle.begin(), angle.end());
+    const double hi = *std::max_element(angle.begin(), angle.end());
+    // swings: crossings of the middle, counted with a hysteresis of a fifth of the range
+    int crossings = 0, side = 0;
+    for (double a : angle) {
+      double u = (a - lo) / (hi - lo);
+      int now = u > 0.6 ? 1 : u < 0.4 ? -1 : side;
+      if (side != 0 && now != side) ++crossings;
+      side = now;
+    }
+    EXPECT_FALSE(s.failed) << s.failure;
+    EXPECT_GT(hi - lo, 0.3) << hz << " Hz";
+    EXPECT_NEAR(crossings, 2 * 4 * hz, 1) << hz << " Hz";
+    // the body's sensors reached it too
+    EXPECT_EQ(s.controller->sensors().size(), m.sensors.size());
+  }
 }
 
 }  // namespace

@@ -1,0 +1,69 @@
+// A controller: what turns sensor readings (and a task's inputs) into
+// effector signals and actions, as the evaluation loop (eval/step.h) sees it.
+// Like the creature, it comes in two halves: a model, immutable and shared by
+// every evaluation, and its per-evaluation state. Sims' graph brain
+// (GraphBrain, below) is one implementation; a controller over a fixed body
+// (the river crossing's layered networks) is another, and neither touches
+// the other.
+#pragma once
+
+#include <memory>
+#include <span>
+
+#include "brain/brain_model.h"
+
+namespace bx {
+
+/// What a controller asks of the task beside its effector signals.
+struct Actions {
+  /// A catapult's release effector has fired (chaumont2007 4.1): it stays
+  /// true from the brain step that reached the threshold on.
+  bool release = false;
+};
+
+/// A controller's state during one evaluation.
+class ControllerState {
+ public:
+  virtual ~ControllerState() = default;
+  /// One controller step of `dt` seconds on these readings: the body's
+  /// sensors (model's n_sensors) and the task's inputs (n_task_inputs).
+  virtual void step(std::span<const double> sensors, std::span<const double> task_inputs, double dt) = 0;
+  /// The effector signals in [-1, 1], one per effector (0 before the first
+  /// step); valid until the next step.
+  virtual std::span<const double> effectors() const = 0;
+  /// What it has asked of the task so far.
+  virtual const Actions& actions() const = 0;
+  /// The sensor readings of its last step (0 before the first), for replays.
+  virtual std::span<const double> sensors() const = 0;
+  /// Its internal signals (a graph brain's neuron outputs), for replays.
+  virtual std::span<const double> internals() const = 0;
+};
+
+/// A compiled controller: its shape and the state it starts from.
+class ControllerModel {
+ public:
+  virtual ~ControllerModel() = default;
+  virtual int n_sensors() const = 0;
+  virtual int n_effectors() const = 0;
+  /// Inputs it takes from the task beside the body's sensors.
+  virtual int n_task_inputs() const { return 0; }
+  /// A fresh state for one evaluation.
+  virtual std::unique_ptr<ControllerState> make_state() const = 0;
+};
+
+/// Sims' graph brain (brain_model.h) as a controller: each step writes the
+/// readings into its sensor slots and runs brain_step; a release effector's
+/// signal reaching ReleaseGene::kFiringThreshold sets Actions::release.
+/// Holds a reference to the brain, which must outlive it and its states.
+class GraphBrain : public ControllerModel {
+ public:
+  explicit GraphBrain(const BrainModel& m) : m_(m) {}
+  int n_sensors() const override { return m_.n_sensors; }
+  int n_effectors() const override { return m_.n_effectors(); }
+  std::unique_ptr<ControllerState> make_state() const override;
+
+ private:
+  const BrainModel& m_;
+};
+
+}  // namespace bx
