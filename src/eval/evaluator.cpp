@@ -18,7 +18,7 @@
 #include <thread>
 
 #include "develop/develop.h"
-#include "eval/outcome_json.h"
+#include "eval/records_json.h"
 #include "genome/genome_edit.h"
 #include "genome/genome_json.h"
 
@@ -88,15 +88,14 @@ bool receive_message(int fd, std::string& s) {
 [[noreturn]] void worker_main(int in, int out, const SimConfig& cfg, const WorkerJob& work) {
   std::string msg;
   while (receive_message(in, msg)) {
-    json job = json::parse(msg);
-    std::uint64_t seed = job.at("seed");
-    auto g = genome_from_json(job.at("genome"), "job");
+    json parsed = json::parse(msg, nullptr, false);
+    auto job = parsed.is_discarded() ? Result<ReadJob>(Error{"evaluation job: not JSON"}) : job_from_json(parsed);
     EvalOutcome o;
-    if (!g) {
+    if (!job) {
       o.result.failed = true;
-      o.result.failure = "worker could not read the genome: " + g.error();
+      o.result.failure = "worker could not read its job: " + job.error();
     } else {
-      o = work(*g, cfg, seed);
+      o = work(job->genome, cfg, job->seed);
     }
     if (!send_message(out, outcome_to_json(o).dump())) break;
   }
@@ -228,7 +227,7 @@ std::vector<EvalOutcome> ProcessPoolEvaluator::evaluate(const std::vector<EvalJo
       if (w.job >= 0 || pending.empty()) continue;
       int j = pending.front();
       pending.pop_front();
-      json msg = {{"seed", jobs[j].seed}, {"genome", genome_to_json(*jobs[j].genome)}};
+      json msg = job_to_json(jobs[j]);
       w.job = j;
       w.deadline = std::chrono::steady_clock::now() +
                    std::chrono::milliseconds(static_cast<long>(im.timeout * 1000));

@@ -1,9 +1,11 @@
-// The JSON form of an evaluation's outcome (eval/outcome_json.h).
-#include "eval/outcome_json.h"
+// The JSON forms of the evaluator's records (eval/records_json.h).
+#include "eval/records_json.h"
 
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+
+#include "genome/genome_json.h"
 
 namespace bx {
 
@@ -51,6 +53,27 @@ T get(const json& j, const char* name) {
 }
 
 }  // namespace
+
+json job_to_json(const EvalJob& job) {
+  // the seed as a number: nlohmann keeps 64-bit unsigned integers exact
+  return {{"seed", job.seed}, {"genome", genome_to_json(*job.genome)}};
+}
+
+Result<ReadJob> job_from_json(const json& j) {
+  try {
+    if (!j.is_object()) throw std::runtime_error("not a JSON object");
+    const json& seed = field(j, "seed");
+    if (!seed.is_number_unsigned()) throw std::runtime_error("seed is not a whole number from 0 to 2^64-1");
+    ReadJob job;
+    job.seed = seed.get<std::uint64_t>();
+    auto g = genome_from_json(field(j, "genome"), "job");
+    if (!g) throw std::runtime_error(g.error());
+    job.genome = std::move(*g);
+    return job;
+  } catch (const std::exception& e) {
+    return Error{std::string("evaluation job: ") + e.what()};
+  }
+}
 
 json outcome_to_json(const EvalOutcome& o) {
   const EvalResult& r = o.result;

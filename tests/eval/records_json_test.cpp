@@ -1,8 +1,8 @@
-// The evaluation outcome's one serialiser (eval/outcome_json.h): every field
+// The evaluation outcome's one serialiser (eval/records_json.h): every field
 // round-trips, bit for bit, and the process pool returns what the serial
 // evaluator computes, field for field (it used to drop trial_fitness,
 // brain_steps and the diagnostics).
-#include "eval/outcome_json.h"
+#include "eval/records_json.h"
 
 #include <gtest/gtest.h>
 
@@ -111,6 +111,43 @@ TEST(OutcomeJson, ThePoolReturnsEveryFieldTheSerialEvaluatorComputesWithTwoTrial
     EXPECT_FALSE(serial[i].result.diagnostics.effector_sd.empty());
     expect_same(serial[i], pooled[i]);
   }
+}
+
+}  // namespace
+}  // namespace bx
+
+namespace bx {
+namespace {
+
+TEST(JobJson, TheGenomeAndEveryBitOfTheSeedRoundTrip) {
+  for (const char* name : {"walker.json", "catapult.json", "sims_recursive.json"}) {
+    auto g = load_genome(std::string(BESTIARY_SOURCE_DIR) + "/tests/creatures/" + name);
+    ASSERT_TRUE(g.ok()) << g.error();
+    for (std::uint64_t seed : {std::uint64_t{0}, std::uint64_t{1}, ~std::uint64_t{0}, std::uint64_t{14276982200636331862u}}) {
+      // through text, as the pool's pipe carries it
+      auto back = job_from_json(nlohmann::json::parse(job_to_json({&*g, seed}).dump()));
+      ASSERT_TRUE(back.ok()) << back.error();
+      EXPECT_EQ(back->seed, seed);
+      EXPECT_EQ(back->genome, *g) << name;
+    }
+  }
+}
+
+TEST(JobJson, ABadJobNamesWhatIsWrong) {
+  auto g = load_genome(std::string(BESTIARY_SOURCE_DIR) + "/tests/creatures/walker.json");
+  ASSERT_TRUE(g.ok()) << g.error();
+  nlohmann::json j = job_to_json({&*g, 7});
+  auto no_seed = j;
+  no_seed.erase("seed");
+  EXPECT_NE(job_from_json(no_seed).error().find("no field seed"), std::string::npos);
+  auto negative = j;
+  negative["seed"] = -1;
+  EXPECT_NE(job_from_json(negative).error().find("seed is not a whole number"), std::string::npos);
+  auto bad_genome = j;
+  bad_genome["genome"]["nodes"] = 3;
+  auto r = job_from_json(bad_genome);
+  ASSERT_FALSE(r.ok());
+  EXPECT_NE(r.error().find("nodes"), std::string::npos) << r.error();
 }
 
 }  // namespace
