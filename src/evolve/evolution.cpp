@@ -230,25 +230,20 @@ GenerationResult Evolution::steady_state(EvolutionState& s, Evaluator& eval) con
       std::sort(tri.begin(), tri.end(),
                 [&](int x, int y) { return better(s.population[x], s.population[y]); });
       const Individual &a = s.population[tri[0]], &b = s.population[tri[1]];
-      // crossover + mutation, grafting + mutation, or four mutations of the best (5.2)
+      // four mutations of the best, crossover + mutation or grafting +
+      // mutation (5.2: a third each), in the shares p_asexual, p_crossover, p_graft
       auto make = [&](Rng& r) {
-        switch (r.below(3)) {
-          case 0: {
-            Child c{crossover(a.genome, b.genome, ops_, r), a.id, b.id, "crossover"};
-            mutate(c.genome, ops_, evo_.mutation_rate, r);
-            return c;
-          }
-          case 1: {
-            Child c{graft(a.genome, b.genome, ops_, r), a.id, b.id, "graft"};
-            mutate(c.genome, ops_, evo_.mutation_rate, r);
-            return c;
-          }
-          default: {
-            Child c{a.genome, a.id, -1, "mutation"};
-            for (int m = 0; m < evo_.asexual_mutations; ++m) mutate(c.genome, ops_, evo_.mutation_rate, r);
-            return c;
-          }
+        const double u = r.uniform();
+        if (u < evo_.p_asexual) {
+          Child c{a.genome, a.id, -1, "mutation"};
+          for (int m = 0; m < evo_.asexual_mutations; ++m) mutate(c.genome, ops_, evo_.mutation_rate, r);
+          return c;
         }
+        const bool cross = u < evo_.p_asexual + evo_.p_crossover;
+        Child c{cross ? crossover(a.genome, b.genome, ops_, r) : graft(a.genome, b.genome, ops_, r), a.id, b.id,
+                cross ? "crossover" : "graft"};
+        mutate(c.genome, ops_, evo_.mutation_rate, r);
+        return c;
       };
       children.push_back(viable(make(rng), rng, rejected, make));
       replaced.push_back(tri[2]);

@@ -99,9 +99,9 @@ const std::vector<Field>& fields() {
       {"evolution", "generations", Field::Int, 1, 1000000, {}, [](RunConfig& c) -> void* { return &c.evolution.generations; }, "generational: generations, the random one included"},
       {"evolution", "elite_fraction", Field::Real, 0, 1, {}, [](RunConfig& c) -> void* { return &c.evolution.elite_fraction; }, "generational: fraction of the best that survive"},
       {"evolution", "selection", Field::Choice, 0, 0, {"rank", "proportionate", "uniform"}, [](RunConfig& c) -> void* { return &c.evolution.selection; }, "generational: rank, proportionate or uniform choice of parents among survivors"},
-      {"evolution", "p_asexual", Field::Real, 0, 1, {}, [](RunConfig& c) -> void* { return &c.evolution.p_asexual; }, "generational: share of children by mutation alone"},
-      {"evolution", "p_crossover", Field::Real, 0, 1, {}, [](RunConfig& c) -> void* { return &c.evolution.p_crossover; }, "generational: share of children by crossover"},
-      {"evolution", "p_graft", Field::Real, 0, 1, {}, [](RunConfig& c) -> void* { return &c.evolution.p_graft; }, "generational: share of children by grafting"},
+      {"evolution", "p_asexual", Field::Real, 0, 1, {}, [](RunConfig& c) -> void* { return &c.evolution.p_asexual; }, "share of children by mutation alone (steady state: asexual_mutations of the tournament's best)"},
+      {"evolution", "p_crossover", Field::Real, 0, 1, {}, [](RunConfig& c) -> void* { return &c.evolution.p_crossover; }, "share of children by crossover (steady state: then mutated at mutation_rate)"},
+      {"evolution", "p_graft", Field::Real, 0, 1, {}, [](RunConfig& c) -> void* { return &c.evolution.p_graft; }, "share of children by grafting (steady state: then mutated at mutation_rate)"},
       {"evolution", "asexual_rate", Field::Real, 0, 1, {}, [](RunConfig& c) -> void* { return &c.evolution.asexual_rate; }, "generational: per-parameter mutation probability of asexual children"},
       {"evolution", "sexual_mutation_chance", Field::Real, 0, 1, {}, [](RunConfig& c) -> void* { return &c.evolution.sexual_mutation_chance; }, "generational: chance that a crossover/graft child is mutated"},
       {"evolution", "sexual_rate", Field::Real, 0, 1, {}, [](RunConfig& c) -> void* { return &c.evolution.sexual_rate; }, "generational: ... at this per-site probability"},
@@ -346,9 +346,9 @@ Status apply_config_toml(RunConfig& cfg, std::string_view text, std::string_view
       if (Status s = set_field(*field, out, node, where); !s) return s;
     }
   }
-  // keys that must agree with each other (the steady state draws its three ways evenly)
+  // keys that must agree with each other (both algorithms breed in these shares)
   const EvolutionDef& e = out.evolution;
-  if (e.algorithm == Algorithm::Generational && std::abs(e.p_asexual + e.p_crossover + e.p_graft - 1) > 1e-9)
+  if (std::abs(e.p_asexual + e.p_crossover + e.p_graft - 1) > 1e-9)
     return Error{std::string(source) + ": evolution.p_asexual + p_crossover + p_graft: must sum to 1, got " +
                  num(std::round((e.p_asexual + e.p_crossover + e.p_graft) * 1e9) / 1e9)};
   cfg = out;

@@ -115,7 +115,7 @@ const Golden kGolden[] = {
      "36a3adedefab3510", "5b23c06d4730eabc"},
     {"miconi2006-small",
      "--set evolution.population=10 --set evolution.evaluations=40 --set task.seconds=10",
-     "b05a873e716f0a78", "592de40898cc528a"},
+     "ff276c228b2927ab", "b136c7a20b2c2078"},
     {"chaumont2007-catapult-small", "--set evolution.population=10 --set evolution.generations=3",
      "69071020b08d1dbb", "d8ea2a59a9514ba4"},
     {"sims1994-walker", "--set evolution.population=10 --set evolution.generations=3",

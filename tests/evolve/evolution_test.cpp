@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <map>
+#include <tuple>
 #include <set>
 
 #include "io/config.h"
@@ -107,6 +108,31 @@ TEST_P(Loops, SameSeedSameRunAnotherSeedAnotherRun) {
       EXPECT_TRUE(ga[i].born[k].genome == gb[i].born[k].genome);
   }
   EXPECT_FALSE(a.population[0].genome == d.population[0].genome);
+}
+
+// Each algorithm breeds in the shares p_asexual, p_crossover and p_graft
+// (the steady state used to draw a third each whatever they said).
+TEST_P(Loops, BreedInTheConfiguredShares) {
+  for (auto [pa, pc, pg] : {std::tuple{1.0, 0.0, 0.0}, std::tuple{0.0, 1.0, 0.0}, std::tuple{0.0, 0.0, 1.0},
+                            std::tuple{0.5, 0.5, 0.0}}) {
+    RunConfig c = small(GetParam().first, GetParam().second);
+    c.evolution.p_asexual = pa;
+    c.evolution.p_crossover = pc;
+    c.evolution.p_graft = pg;
+    SerialEvaluator ev(c.sim);
+    EvolutionState s;
+    std::map<std::string, int> ops;
+    for (const auto& g : run(c, 7, ev, s))
+      for (const auto& ind : g.born)
+        if (ind.op != "random") ++ops[ind.op];
+    int bred = 0;
+    for (auto& [op, n] : ops) bred += n;
+    ASSERT_GT(bred, 0);
+    const std::string shares = std::to_string(pa) + "/" + std::to_string(pc) + "/" + std::to_string(pg);
+    EXPECT_EQ(ops["mutation"] > 0, pa > 0) << shares;
+    EXPECT_EQ(ops["crossover"] > 0, pc > 0) << shares;
+    EXPECT_EQ(ops["graft"] > 0, pg > 0) << shares;
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(
