@@ -207,7 +207,7 @@ Genome detail::crossover_at_plain(const Genome& a, const Genome& b, int cut,
                                   const OperatorDef& def, Rng& rng) {
   assert(a.dialect == b.dialect && !a.nodes.empty() && !b.nodes.empty());
   Splice s = make_splice(a, b, cut);
-  if (a.dialect == Dialect::Miconi2006) return crossover_miconi(a, b, s, def, rng);
+  if (dialect_rules(a.dialect).operators == OperatorScheme::LimbTree) return crossover_miconi(a, b, s, def, rng);
   return crossover_graph(a, b, s, def, rng);
 }
 
@@ -248,7 +248,8 @@ Genome detail::graft_plain(const Genome& trunk, const Genome& branch, int first_
   int nb = static_cast<int>(branch.nodes.size());
   // the trunk's edge that will lead to the new branch, and the room left
   int parent = -1, edge = -1, budget = 0;
-  if (g.dialect == Dialect::Miconi2006) {
+  const bool limb_tree = dialect_rules(g.dialect).operators == OperatorScheme::LimbTree;
+  if (limb_tree) {
     // miconi2006 5.1: remove a random branch (a limb and its sub-limbs)
     int n = static_cast<int>(g.nodes.size());
     if (n > 1) {
@@ -286,7 +287,7 @@ Genome detail::graft_plain(const Genome& trunk, const Genome& branch, int first_
   // the new branch: miconi2006, a non-root limb whose subtree fits; graph
   // dialects, any node (its reachable subgraph is copied, cut to the budget)
   int src = 0;
-  if (g.dialect == Dialect::Miconi2006 && nb > 1) {
+  if (limb_tree && nb > 1) {
     std::vector<int> fits, any;
     for (int j = 1; j < nb; ++j) {
       any.push_back(j);
@@ -294,7 +295,7 @@ Genome detail::graft_plain(const Genome& trunk, const Genome& branch, int first_
     }
     const auto& pool = fits.empty() ? any : fits;
     src = pool[rng.below(pool.size())];
-  } else if (g.dialect != Dialect::Miconi2006) {
+  } else if (!limb_tree) {
     // nodes from first_branch_node on (a catapult's arm is never a branch)
     int first = first_branch_node < nb ? std::max(0, first_branch_node) : 0;
     src = first + static_cast<int>(rng.below(nb - first));

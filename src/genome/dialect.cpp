@@ -48,6 +48,12 @@ DialectRules sims1994_rules() {
       .max_sensors_per_part = 0,
       .max_effectors_per_part = 0,
       .global_neurons = true,  // Sims' neurons outside any part
+      .operators = OperatorScheme::Graph,
+      .edge_lattice = false,
+      .edge_scale_free = true,
+      .edge_terminal_only = true,
+      .limb_io = false,
+      .slot_wiring = false,
   };
 }
 
@@ -77,6 +83,12 @@ DialectRules miconi2006_rules() {
       .max_sensors_per_part = 1,            // sec. 3.1: one sensor per limb
       .max_effectors_per_part = 1,          // sec. 3.1: one actuator per limb
       .global_neurons = false,              // sec. 3: sources are adjacent limbs or the root only
+      .operators = OperatorScheme::LimbTree,  // sec. 5.1
+      .edge_lattice = true,                 // sec. 2: a face and two polar angles
+      .edge_scale_free = false,             // sec. 2: a limb's size is its own gene
+      .edge_terminal_only = false,
+      .limb_io = true,                      // sec. 3.1, Fig. 1
+      .slot_wiring = true,                  // sec. 3: connection slots
   };
 }
 
@@ -106,6 +118,12 @@ DialectRules chaumont2007_rules() {
       .max_sensors_per_part = 0,
       .max_effectors_per_part = 0,
       .global_neurons = true,
+      .operators = OperatorScheme::Graph,  // sec. 3.1: Sims' genome and operators
+      .edge_lattice = false,
+      .edge_scale_free = true,
+      .edge_terminal_only = true,
+      .limb_io = false,
+      .slot_wiring = false,
   };
 }
 

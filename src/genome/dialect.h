@@ -17,7 +17,17 @@ enum class MassRule {
   TanhVolume,  ///< miconi2006 Table 1: mass = mass_scale * tanh(x*y*z)
 };
 
-/// The rules of one dialect. Zero in a count means "no limit".
+/// How the operators vary a genome (docs/operators.md).
+enum class OperatorScheme {
+  Graph,     ///< Sims 1994: structural mutations and per-parameter rates; crossover
+             ///< and grafting over node lists and edges (sims1994, chaumont2007)
+  LimbTree,  ///< miconi2006 5.1: the nine mutation steps in order; crossover of limb
+             ///< lists, grafting replaces a random limb's subtree by one of the other's
+};
+
+/// The rules of one dialect: what validate() checks and what the operators
+/// keep (normalize() repairs an operator's output on the same fields). A new
+/// dialect is a new table row. Zero in a count means "no limit".
 struct DialectRules {
   Dialect dialect;
   NeuronSetId neuron_set;
@@ -43,6 +53,19 @@ struct DialectRules {
   int max_sensors_per_part;
   int max_effectors_per_part;
   bool global_neurons;        ///< global neurons allowed
+  // what only the operators keep (validate() does not require them)
+  OperatorScheme operators;
+  /// New edges sit on the parent's face lattice (miconi2006 sec. 2: a face and
+  /// polar angles), else anywhere on a face with a free orientation.
+  bool edge_lattice;
+  bool edge_scale_free;       ///< false: every edge's scale is 1
+  bool edge_terminal_only;    ///< edges may be terminal-only (Sims 1994)
+  /// Every limb carries one joint-angle sensor and one actuator, the root
+  /// none (miconi2006 sec. 3.1, Fig. 1).
+  bool limb_io;
+  /// New neurons and effectors draw their inputs by filling connection slots
+  /// (miconi2006 sec. 3), else a count from the operator ranges.
+  bool slot_wiring;
 };
 
 /// The rules of a dialect.

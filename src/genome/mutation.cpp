@@ -675,7 +675,7 @@ void mutate(Genome& g, const OperatorDef& def, double rate, Rng& rng) {
 void detail::mutate_plain(Genome& g, const OperatorDef& def, double rate, Rng& rng) {
   if (g.nodes.empty()) return;
   Genome before = g;
-  if (g.dialect == Dialect::Miconi2006)
+  if (dialect_rules(g.dialect).operators == OperatorScheme::LimbTree)
     mutate_miconi(g, def, rate, rng);
   else
     GraphMutator{g, def, rate, rng, dialect_rules(g.dialect)}.run();

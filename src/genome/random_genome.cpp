@@ -277,7 +277,7 @@ std::vector<Box> copies_of(const EdgeGene& e, Vec3 parent_size, Vec3 child_size)
 bool place_new_edge(const Genome& g, int parent, EdgeGene& e, Vec3 child, bool avoid_back,
                     bool reflect, const OperatorDef& def, Rng& rng) {
   const DialectRules& r = dialect_rules(g.dialect);
-  bool lattice = g.dialect == Dialect::Miconi2006;
+  bool lattice = r.edge_lattice;
   const NodeGene& pn = g.nodes[parent];
   Vec3 P = pn.size;
   // what is already there, in the parent's frame
@@ -397,7 +397,7 @@ JointGene random_joint(Dialect d, const OperatorDef& def, Rng& rng) {
     case JointType::Fixed:
       break;
   }
-  if (d == Dialect::Miconi2006) return j;  // limits fixed by the dialect (Table 1)
+  if (dialect_rules(d).hinge_limits_fixed) return j;  // limits fixed by the dialect (miconi2006 Table 1)
   for (int k = 0; k < joint_dofs(j.type); ++k) {
     if (dof_is_angular(j.type, k))
       j.limits.push_back({-rng.uniform(def.angle_limit_min, def.angle_limit_max),
@@ -470,8 +470,8 @@ NodeGene random_part(Dialect d, bool root, const OperatorDef& def, Rng& rng) {
   n.density = def.density;
   n.joint = random_joint(d, def, rng);
   n.recursive_limit = 1;
-  if (d == Dialect::Miconi2006) {
-    // sec. 3.1 and Fig. 1: one joint-angle sensor and one actuator per limb, none on the root
+  if (r.limb_io) {
+    // miconi2006 sec. 3.1 and Fig. 1: one joint-angle sensor and one actuator per limb, none on the root
     if (!root) {
       n.sensors.push_back({SensorType::JointAngle, 0, Face::NegZ});
       Range b = effector_bias_bounds(def, d);
@@ -501,12 +501,11 @@ namespace {
 EdgeGene random_edge_checked(const Genome& g, int parent, int to, const OperatorDef& def, Rng& rng,
                              bool& clear) {
   const DialectRules& r = dialect_rules(g.dialect);
-  bool miconi = g.dialect == Dialect::Miconi2006;
   EdgeGene e;
   e.to = to;
-  e.rotation.x = miconi ? 0.0 : rng.uniform(-def.edge_roll_max, def.edge_roll_max);
-  e.scale = miconi ? 1.0 : rng.uniform(def.scale_at_creation.lo, def.scale_at_creation.hi);
-  e.terminal_only = !miconi && rng.chance(def.p_terminal_only);
+  e.rotation.x = r.edge_roll_free ? rng.uniform(-def.edge_roll_max, def.edge_roll_max) : 0.0;
+  e.scale = r.edge_scale_free ? rng.uniform(def.scale_at_creation.lo, def.scale_at_creation.hi) : 1.0;
+  e.terminal_only = r.edge_terminal_only && rng.chance(def.p_terminal_only);
   // a reflexive edge grows copies of the parent at its own side: no mirrored chains
   bool reflect = to != parent && !r.reflect_axes.empty() && rng.chance(def.p_reflect);
   bool avoid_back = has_parent(g, parent) || to == parent;
@@ -570,7 +569,7 @@ int new_neuron_inputs(const Genome& g, const NeuronGene& n, const OperatorDef& d
 }
 
 int new_effector_inputs(const Genome& g, const OperatorDef& def, Rng& rng) {
-  if (g.dialect != Dialect::Miconi2006)
+  if (!dialect_rules(g.dialect).slot_wiring)
     return uniform_int(rng, def.effector_inputs_at_creation.lo, def.effector_inputs_at_creation.hi);
   int k = 0;
   for (int s = 0; s < def.connection_slots; ++s) k += rng.chance(def.connection_fraction);
@@ -650,16 +649,16 @@ void detail::normalize_plain(Genome& g, const OperatorDef& def, Rng& rng) {
     int dofs = joint_dofs(n.joint.type);
     if (!n.joint.limits.empty() && static_cast<int>(n.joint.limits.size()) != dofs)
       n.joint.limits.clear();
-    if (g.dialect == Dialect::Miconi2006) {
-      // sec. 2: the hinge axis is the limb's y or z axis (validate()'s tolerance)
+    if (r.hinge_axis_y_or_z && n.joint.type == JointType::Hinge) {
+      // miconi2006 sec. 2: the hinge axis is the limb's y or z axis (validate()'s tolerance)
       Vec3 a = n.joint.axis1;
       auto near = [](double x, double want) { return std::abs(x - want) <= 1e-9; };
       bool y = near(a.x, 0) && near(std::abs(a.y), 1) && near(a.z, 0);
       bool z = near(a.x, 0) && near(a.y, 0) && near(std::abs(a.z), 1);
       if (!y && !z) n.joint.axis1 = {0, 0, 1};
-      // Table 1: the joint range is fixed; development applies it to empty limits
-      n.joint.limits.clear();
     }
+    // miconi2006 Table 1: the joint range is fixed; development applies it to empty limits
+    if (r.hinge_limits_fixed && n.joint.type == JointType::Hinge) n.joint.limits.clear();
     if (n.recursive_limit < 1) n.recursive_limit = 1;
     // sensors: allowed types, existing dofs, canonical unused fields
     for (int s = static_cast<int>(n.sensors.size()) - 1; s >= 0; --s) {
@@ -680,7 +679,7 @@ void detail::normalize_plain(Genome& g, const OperatorDef& def, Rng& rng) {
     auto& efs = g.nodes[i].effectors;
     for (int k = static_cast<int>(efs.size()) - 1; k >= 0; --k)
       if (efs[k].dof < 0 || efs[k].dof >= dofs) efs.erase(efs.begin() + k);
-    if (g.dialect == Dialect::Miconi2006) {
+    if (r.limb_io) {
       NodeGene& m = g.nodes[i];
       Range eb = effector_bias_bounds(def, g.dialect);
       if (i == 0) {
@@ -702,20 +701,22 @@ void detail::normalize_plain(Genome& g, const OperatorDef& def, Rng& rng) {
           mm.effectors[0].inputs = random_inputs(g, i, new_effector_inputs(g, def, rng), def, rng);
         }
       }
+    }
+    if (r.max_neurons_per_part > 0)
       while (static_cast<int>(g.nodes[i].neurons.size()) > r.max_neurons_per_part)
         remove_neuron(g, i, static_cast<int>(g.nodes[i].neurons.size()) - 1, SourceFix::Remove);
-      for (EdgeGene& e : g.nodes[i].edges) {
-        e.reflect.erase(std::remove_if(e.reflect.begin(), e.reflect.end(),
-                                       [&r](int a) {
-                                         return std::find(r.reflect_axes.begin(),
-                                                          r.reflect_axes.end(),
-                                                          a) == r.reflect_axes.end();
-                                       }),
-                        e.reflect.end());
-        e.rotation.x = 0;
-        for (int a = 1; a < 3; ++a)
+    // edges: allowed reflections, no roll where orientation is two angles, angles on their step
+    for (EdgeGene& e : g.nodes[i].edges) {
+      e.reflect.erase(std::remove_if(e.reflect.begin(), e.reflect.end(),
+                                     [&r](int a) {
+                                       return std::find(r.reflect_axes.begin(), r.reflect_axes.end(), a) ==
+                                              r.reflect_axes.end();
+                                     }),
+                      e.reflect.end());
+      if (!r.edge_roll_free) e.rotation.x = 0;
+      if (r.angle_step > 0)
+        for (int a = 0; a < 3; ++a)
           e.rotation[a] = std::round(e.rotation[a] / r.angle_step) * r.angle_step;
-      }
     }
     for (NeuronGene& nr : g.nodes[i].neurons) fit_neuron(nr);
     for (EffectorGene& ef : g.nodes[i].effectors) {

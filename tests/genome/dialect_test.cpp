@@ -291,3 +291,49 @@ TEST(Validate, ChaumontGenesLimit) {
 
 }  // namespace
 }  // namespace bx
+
+#include "genome/operators.h"
+
+namespace bx {
+namespace {
+
+// The operators' dialect rules are table fields: what random genomes and
+// mutated, crossed and grafted children look like follows the fields, for
+// every dialect's row.
+TEST(DialectRules, TheOperatorsFollowTheTablesFields) {
+  for (Dialect d : {Dialect::Sims1994, Dialect::Miconi2006, Dialect::Chaumont2007}) {
+    const DialectRules& r = dialect_rules(d);
+    OperatorDef def = default_operators(d);
+    Rng rng(42);
+    int scaled = 0, terminal = 0, rolled = 0, edges = 0;
+    for (int k = 0; k < 60; ++k) {
+      Genome a = random_genome(d, def, rng), b = random_genome(d, def, rng);
+      Genome c = k % 3 == 0 ? crossover(a, b, def, rng) : k % 3 == 1 ? graft(a, b, def, rng) : a;
+      mutate(c, def, 0.2, rng);
+      for (const Genome* g : {&a, &c}) {
+        ASSERT_TRUE(validate(*g).ok()) << validate(*g).error();
+        for (std::size_t i = 0; i < g->nodes.size(); ++i) {
+          const NodeGene& n = g->nodes[i];
+          if (r.limb_io) {
+            // one joint-angle sensor and one actuator per limb, the root none
+            EXPECT_EQ(n.sensors.size(), i == 0 ? 0u : 1u) << to_string(d);
+            EXPECT_EQ(n.effectors.size(), i == 0 ? 0u : 1u) << to_string(d);
+          }
+          for (const EdgeGene& e : n.edges) {
+            ++edges;
+            scaled += e.scale != 1.0;
+            terminal += e.terminal_only;
+            rolled += e.rotation.x != 0.0;
+          }
+        }
+      }
+    }
+    ASSERT_GT(edges, 50) << to_string(d);
+    EXPECT_EQ(scaled > 0, r.edge_scale_free) << to_string(d);
+    EXPECT_EQ(terminal > 0, r.edge_terminal_only) << to_string(d);
+    EXPECT_EQ(rolled > 0, r.edge_roll_free) << to_string(d);
+  }
+}
+
+}  // namespace
+}  // namespace bx
