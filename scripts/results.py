@@ -17,7 +17,7 @@ For every run also `bestiary check` of its best: its fitness re-simulated
 under 5 other physics seeds (the median ratio to the scored fitness), at dt/2
 and dt/4, at twice the solver iterations and with every effector clamped to
 its mean, the largest joint separation, and the verdict (its gates are the
-run's [check] config keys).
+run's [check] config keys, or --check-set's).
 
 For a throwing run (chaumont2007's catapults) instead: the best fitness of the
 first and last generation; the best creature re-simulated exactly: its throw
@@ -94,9 +94,9 @@ def row(preset, seed, run_dir):
             f"{d1 / bl:.1f} | {d2:.2f} | {sustained} | {failed} | {rejected} |")
 
 
-def check_row(preset, seed, run_dir):
+def check_row(preset, seed, run_dir, check_set=()):
     """`bestiary check` of the run's best: ratios to the scored fitness."""
-    r = sh(["check", run_dir, "--json"])
+    r = sh(["check", run_dir, "--json"] + [x for kv in check_set for x in ("--set", kv)])
     if r.returncode not in (0, 1):
         sys.exit(r.stderr)
     c = json.loads(r.stdout)
@@ -223,6 +223,9 @@ def main():
     ap.add_argument("runs", nargs="+", help="PRESET:SEEDS, seeds as N or A-B")
     ap.add_argument("--runs-dir", default="runs/results")
     ap.add_argument("--workers", default="2")
+    ap.add_argument("--check-set", action="append", default=[], metavar="KEY=VALUE",
+                    help="a [check] key for `bestiary check` (repeatable), e.g. check.converge_seeds=5 "
+                         "for runs made before their preset set it")
     a = ap.parse_args()
     rows, throws, checks = [], [], []
     for spec in a.runs:
@@ -236,7 +239,7 @@ def main():
                 r = sh(args + ["--workers", a.workers, "--quiet"])
                 if r.returncode != 0:
                     sys.exit(r.stderr)
-            checks.append(check_row(preset, seed, run_dir))
+            checks.append(check_row(preset, seed, run_dir, a.check_set))
             print(checks[-1], flush=True)
             if is_throwing(run_dir):
                 throws.append(throw_row(preset, seed, run_dir))
