@@ -63,7 +63,8 @@ int cmd_check(const CheckArgs& a) {
     out["failure"] = s.failure;
     for (const auto& v : rep.variants)
       out["variants"].push_back({{"name", v.name}, {"fitness", v.result.fitness}, {"ratio", v.ratio},
-                                 {"failed", v.result.failed}, {"failure", v.result.failure}});
+                                 {"failed", v.result.failed}, {"failure", v.result.failure},
+                                 {"seed_fitness", v.seed_fitness}});
     out["median_other_seeds"] = rep.median_other_seeds;
     out["effector_mean"] = d.effector_mean;
     out["effector_sd"] = d.effector_sd;
@@ -84,6 +85,10 @@ int cmd_check(const CheckArgs& a) {
   for (const auto& v : rep.variants) {
     std::printf("  %-14s fitness %-12.6g ratio %s", v.name.c_str(), v.result.fitness, ratio_text(v.ratio).c_str());
     if (v.result.failed) std::printf("  (failed: %s)", v.result.failure.c_str());
+    if (!v.seed_fitness.empty()) {
+      std::printf("  by seed:");
+      for (double f : v.seed_fitness) std::printf(" %.4g", f);
+    }
     std::printf("\n");
   }
   std::printf("  other seeds: median ratio %s\n", ratio_text(rep.median_other_seeds).c_str());

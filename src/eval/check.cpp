@@ -62,6 +62,7 @@ CheckReport check_creature(const CreatureModel& m, const SimConfig& cfg, std::ui
     CheckVariant v{name + " (median of " + std::to_string(ks) + " seeds)", evaluate(m, c, seed), 0};
     std::vector<double> f{v.result.fitness};
     for (int k = 1; k < ks; ++k) f.push_back(evaluate(m, c, check_seed(seed, k)).fitness);
+    v.seed_fitness = f;
     v.result.fitness = median(f);
     v.ratio = base > 0 ? v.result.fitness / base : 0;
     rep.variants.push_back(v);

@@ -36,6 +36,9 @@ struct CheckVariant {
   /// median fitness over the seeds)
   EvalResult result;
   double ratio = 0;   ///< its fitness over the scored fitness (or medians over medians)
+  /// Under converge_seeds > 1: the fitness under each seed, the scored seed
+  /// first (a step that switches some seeds to another outcome shows here).
+  std::vector<double> seed_fitness;
 };
 
 /// What a check found.

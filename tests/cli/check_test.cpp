@@ -83,6 +83,11 @@ TEST(Check, ConvergenceCanCompareMediansOverSeveralSeeds) {
   for (const auto& v : j["variants"]) {
     if (v["name"] == "dt/2 (median of 3 seeds)") {
       EXPECT_DOUBLE_EQ(v["ratio"].get<double>(), v["fitness"].get<double>() / at_dt[1]);
+      // each seed's fitness is reported, and the median is theirs
+      auto f = v["seed_fitness"].get<std::vector<double>>();
+      ASSERT_EQ(f.size(), 3u);
+      std::sort(f.begin(), f.end());
+      EXPECT_EQ(f[1], v["fitness"].get<double>());
     }
   }
 }
