@@ -22,6 +22,7 @@ struct DevelopDef {
   /// (1.5 per level can grow 0.6 m genes into 9 m blocks), and a throwing task
   /// rewards giants that topple from a height.
   double max_body_length = 0;
+  friend bool operator==(const DevelopDef&, const DevelopDef&) = default;
 };
 
 /// What development made of a genome: a viable creature, or the reason it is

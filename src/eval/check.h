@@ -27,6 +27,7 @@ struct CheckDef {
   /// against the scored fitness. More for a chaotic task (a throw), where
   /// any change of the step draws another throw as a change of seed does.
   int converge_seeds = 1;
+  friend bool operator==(const CheckDef&, const CheckDef&) = default;
 };
 
 /// One re-evaluation of a check.

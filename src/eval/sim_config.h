@@ -51,6 +51,7 @@ struct SimConfig {
   /// non-empty the brain is bypassed and effector e holds effector_clamp[e]
   /// (one value: every effector holds it) whenever the controller is on.
   std::vector<double> effector_clamp;
+  friend bool operator==(const SimConfig&, const SimConfig&) = default;
 };
 
 /// The defaults of a dialect (its paper's constants; docs/config.md lists them).

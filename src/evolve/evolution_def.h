@@ -48,6 +48,7 @@ struct EvolutionDef {
   double failed_fitness = 0;
   /// Steady state: evaluations between statistics rows and checkpoints (0: the population size).
   long report_every = 0;
+  friend bool operator==(const EvolutionDef&, const EvolutionDef&) = default;
 };
 
 /// The algorithm of a dialect's paper, with its constants.

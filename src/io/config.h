@@ -24,6 +24,7 @@ struct RunConfig {
   EvolutionDef evolution;
   OperatorDef operators;
   CheckDef check;  ///< the gates of `bestiary check`
+  friend bool operator==(const RunConfig&, const RunConfig&) = default;
 };
 
 /// The defaults of a dialect (its paper's constants).

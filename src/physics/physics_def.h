@@ -85,6 +85,7 @@ struct PhysicsDef {
   /// evolved walkers that gained fitness from torn joints parted 0.18-0.4 m
   /// (docs/physics.md).
   double max_joint_gap = 0.05;
+  friend bool operator==(const PhysicsDef&, const PhysicsDef&) = default;
 };
 
 /// How effector signals in [-1,1] move joints.
@@ -122,6 +123,7 @@ struct MotorDef {
   double off_brake = 0;
   double kp = 0.25;       ///< PD gain
   double kd = 0.175;      ///< PD damping
+  friend bool operator==(const MotorDef&, const MotorDef&) = default;
 };
 
 }  // namespace bx

@@ -53,6 +53,7 @@ struct LocomotionDef {
   double settle_timeout = 10;
   double burst_seconds = 1.0;  ///< the first controller activation (s)
   double kappa = 1.02;         ///< eq. 1's reward per block
+  friend bool operator==(const LocomotionDef&, const LocomotionDef&) = default;
 };
 
 /// The phases of an evaluation.

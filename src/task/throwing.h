@@ -33,6 +33,7 @@ struct ThrowingDef {
   /// The aim task's target point (m). Our choice: 3 m ahead along +x, at the
   /// height of a 15 cm projectile's centre lying on the ground.
   Vec3 target{3, 0, 0.075};
+  friend bool operator==(const ThrowingDef&, const ThrowingDef&) = default;
 };
 
 /// Scores one throw. As a Task, it breaks the catapult's release joint when
