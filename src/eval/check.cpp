@@ -36,7 +36,7 @@ CheckReport check_creature(const CreatureModel& m, const SimConfig& cfg, std::ui
   rep.scored = evaluate(m, cfg, seed);
   const double scored = rep.scored.fitness;
   auto run = [&](std::string name, const SimConfig& c, std::uint64_t s) {
-    CheckVariant v{std::move(name), evaluate(m, c, s), 0};
+    CheckVariant v{std::move(name), evaluate(m, c, s), 0, {}};
     v.ratio = scored > 0 ? v.result.fitness / scored : 0;
     rep.variants.push_back(std::move(v));
     return rep.variants.back().ratio;
@@ -59,7 +59,7 @@ CheckReport check_creature(const CreatureModel& m, const SimConfig& cfg, std::ui
   std::vector<std::pair<std::string, double>> converged;
   auto converge = [&](const std::string& name, const SimConfig& c) {
     if (ks == 1) return converged.push_back({name, run(name, c, seed)});
-    CheckVariant v{name + " (median of " + std::to_string(ks) + " seeds)", evaluate(m, c, seed), 0};
+    CheckVariant v{name + " (median of " + std::to_string(ks) + " seeds)", evaluate(m, c, seed), 0, {}};
     std::vector<double> f{v.result.fitness};
     for (int k = 1; k < ks; ++k) f.push_back(evaluate(m, c, check_seed(seed, k)).fitness);
     v.seed_fitness = f;
