@@ -51,6 +51,13 @@ class Rng {
   std::uint64_t below(std::uint64_t n) { return n == 0 ? 0 : next() % n; }
   /// True with probability p.
   bool chance(double p) { return uniform() < p; }
+  /// Standard normal (Box-Muller; two uniforms per draw, none kept between
+  /// draws, so a stream's draws do not depend on earlier calls' parity).
+  double normal() {
+    const double u = 1.0 - uniform();  // (0, 1]: the log stays finite
+    const double v = uniform();
+    return std::sqrt(-2.0 * std::log(u)) * std::cos(2.0 * 3.14159265358979323846 * v);
+  }
 
  private:
   static std::uint64_t rotl(std::uint64_t x, int k) { return (x << k) | (x >> (64 - k)); }

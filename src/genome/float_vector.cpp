@@ -1,0 +1,67 @@
+#include "genome/float_vector.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <string>
+
+namespace bx {
+
+namespace {
+
+const FloatVector& as_floats(const Genotype& g) {
+  assert(g.kind() == "floats");
+  return static_cast<const FloatVector&>(g);
+}
+
+}  // namespace
+
+nlohmann::json FloatVector::to_json() const { return {{"genes", genes}}; }
+
+bool FloatVector::equals(const Genotype& other) const {
+  return other.kind() == kind() && as_floats(other).genes == genes;
+}
+
+std::unique_ptr<Genotype> FloatVectorOps::random(Rng& rng) const {
+  std::vector<double> g(static_cast<std::size_t>(def_.length));
+  for (double& x : g) x = rng.uniform(def_.lo, def_.hi);
+  return std::make_unique<FloatVector>(std::move(g));
+}
+
+std::unique_ptr<Genotype> FloatVectorOps::mutate(const Genotype& g, double rate, Rng& rng) const {
+  std::vector<double> out = as_floats(g).genes;
+  for (double& x : out)
+    if (rng.chance(rate)) x = std::clamp(x + def_.sigma * rng.normal(), def_.lo, def_.hi);
+  return std::make_unique<FloatVector>(std::move(out));
+}
+
+std::unique_ptr<Genotype> FloatVectorOps::crossover(const Genotype& a, const Genotype& b, Rng& rng) const {
+  const std::vector<double>&x = as_floats(a).genes, &y = as_floats(b).genes;
+  assert(x.size() == y.size());
+  std::vector<double> out = x;
+  if (out.size() < 2) return std::make_unique<FloatVector>(std::move(out));
+  const std::size_t cut = 1 + rng.below(out.size() - 1);
+  std::copy(y.begin() + static_cast<std::ptrdiff_t>(cut), y.end(), out.begin() + static_cast<std::ptrdiff_t>(cut));
+  return std::make_unique<FloatVector>(std::move(out));
+}
+
+Result<std::unique_ptr<Genotype>> FloatVectorOps::from_json(const nlohmann::json& j) const {
+  if (!j.is_object() || !j.contains("genes")) return Error{"floats: no field genes"};
+  const auto& a = j.at("genes");
+  if (!a.is_array()) return Error{"floats: genes: not an array, got " + a.dump()};
+  if (static_cast<int>(a.size()) != def_.length)
+    return Error{"floats: genes: need " + std::to_string(def_.length) + " values, got " + std::to_string(a.size())};
+  std::vector<double> g;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const std::string at = "floats: genes[" + std::to_string(i) + "]";
+    if (!a[i].is_number()) return Error{at + ": not a number, got " + a[i].dump()};
+    double x = a[i].get<double>();
+    if (!std::isfinite(x) || x < def_.lo || x > def_.hi)
+      return Error{at + ": must lie in [" + std::to_string(def_.lo) + ", " + std::to_string(def_.hi) + "], got " +
+                   a[i].dump()};
+    g.push_back(x);
+  }
+  return std::unique_ptr<Genotype>(std::make_unique<FloatVector>(std::move(g)));
+}
+
+}  // namespace bx

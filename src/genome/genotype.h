@@ -1,0 +1,53 @@
+// What evolution breeds, whatever it encodes (issue 14 item 4, begun): a
+// genotype, and the operators of its kind with their constants. Sims' graph
+// genome is one kind; a float vector (a fixed body's controller weights, the
+// river crossing's) is another (genome/float_vector.h). The algorithms in
+// src/evolve/ are to see only these interfaces (pagmo: the algorithm sees
+// decision vectors, the problem turns them into fitness); they are not yet
+// wired there.
+#pragma once
+
+#include <cassert>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string_view>
+
+#include "core/result.h"
+#include "core/rng.h"
+
+namespace bx {
+
+/// One genotype. Immutable once made; operators make new ones.
+class Genotype {
+ public:
+  virtual ~Genotype() = default;
+  /// Its kind ("graph", "floats"), stored beside its JSON form.
+  virtual std::string_view kind() const = 0;
+  /// Its JSON form (what the run database and the pool's jobs hold).
+  virtual nlohmann::json to_json() const = 0;
+  virtual bool equals(const Genotype& other) const = 0;
+};
+
+/// How genotypes of one kind are made, varied and read: the kind's operators
+/// with their constants. Every random draw comes from the Rng passed in.
+class GenotypeOps {
+ public:
+  virtual ~GenotypeOps() = default;
+  virtual std::string_view kind() const = 0;
+  virtual std::unique_ptr<Genotype> random(Rng& rng) const = 0;
+  /// A mutated copy; `rate` is the kind's per-site mutation probability.
+  virtual std::unique_ptr<Genotype> mutate(const Genotype& g, double rate, Rng& rng) const = 0;
+  virtual std::unique_ptr<Genotype> crossover(const Genotype& a, const Genotype& b, Rng& rng) const = 0;
+  /// Whether graft() exists for this kind (Sims' grafting is a graph
+  /// operator); a config giving p_graft > 0 to a kind without it is an error.
+  virtual bool can_graft() const { return false; }
+  /// Only when can_graft(): a programmer error otherwise.
+  virtual std::unique_ptr<Genotype> graft(const Genotype&, const Genotype&, Rng&) const {
+    assert(!"graft() on a genotype kind without grafting");
+    return nullptr;
+  }
+  /// Reads what Genotype::to_json wrote; an error names the field and the value.
+  virtual Result<std::unique_ptr<Genotype>> from_json(const nlohmann::json& j) const = 0;
+};
+
+}  // namespace bx
