@@ -53,7 +53,7 @@ class ControllerModel {
 
 /// Sims' graph brain (brain_model.h) as a controller: each step writes the
 /// readings into its sensor slots and runs brain_step; a release effector's
-/// signal reaching ReleaseGene::kFiringThreshold sets Actions::release.
+/// signal reaching BrainModel::kReleaseThreshold sets Actions::release.
 /// Holds a reference to the brain, which must outlive it and its states.
 class GraphBrain : public ControllerModel {
  public:

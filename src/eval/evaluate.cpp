@@ -4,7 +4,6 @@
 #include <cmath>
 #include <optional>
 
-#include "brain/brain_model.h"
 #include "core/rng.h"
 #include "geometry/ode.h"  // PhysicsFault
 #include "eval/step.h"

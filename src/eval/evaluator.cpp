@@ -20,7 +20,6 @@
 #include "develop/develop.h"
 #include "eval/records_json.h"
 #include "genome/genome_edit.h"
-#include "genome/genome_json.h"
 
 namespace bx {
 
@@ -88,8 +87,8 @@ bool receive_message(int fd, std::string& s) {
 [[noreturn]] void worker_main(int in, int out, const SimConfig& cfg, const WorkerJob& work) {
   std::string msg;
   while (receive_message(in, msg)) {
-    json parsed = json::parse(msg, nullptr, false);
-    auto job = parsed.is_discarded() ? Result<ReadJob>(Error{"evaluation job: not JSON"}) : job_from_json(parsed);
+    // text that is not JSON parses to a discarded value, which the reader refuses
+    auto job = job_from_json(json::parse(msg, nullptr, false));
     EvalOutcome o;
     if (!job) {
       o.result.failed = true;

@@ -9,6 +9,24 @@
 
 namespace bx {
 
+namespace {
+
+// What the task reads of the world: a view, each quantity read when asked.
+class WorldObservation : public Observation {
+ public:
+  WorldObservation(const CreatureModel& m, const World& w) : m_(m), w_(w) {}
+  double time() const override { return w_.time(); }
+  Vec3 centre_of_mass() const override { return w_.centre_of_mass(); }
+  int n_parts() const override { return m_.n_parts(); }
+  Pose part_pose(int i) const override { return w_.part_pose(i); }
+
+ private:
+  const CreatureModel& m_;
+  const World& w_;
+};
+
+}  // namespace
+
 EvalState::EvalState(const CreatureModel& m, const ControllerModel& c, const SimConfig& cfg,
                      std::unique_ptr<Task> t, double yaw)
     : world(cfg.physics),

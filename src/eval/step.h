@@ -66,18 +66,4 @@ Result<std::unique_ptr<Task>> make_task(const CreatureModel& m, const SimConfig&
 /// What the world measured of its accuracy, and the effectors' activity.
 EvalDiagnostics diagnostics(const EvalState& s);
 
-/// The observation of a state's world, for the task and for observers.
-class WorldObservation : public Observation {
- public:
-  WorldObservation(const CreatureModel& m, const World& w) : m_(m), w_(w) {}
-  double time() const override { return w_.time(); }
-  Vec3 centre_of_mass() const override { return w_.centre_of_mass(); }
-  int n_parts() const override { return m_.n_parts(); }
-  Pose part_pose(int i) const override { return w_.part_pose(i); }
-
- private:
-  const CreatureModel& m_;
-  const World& w_;
-};
-
 }  // namespace bx

@@ -57,8 +57,8 @@ Result<std::unique_ptr<Genotype>> FloatVectorOps::from_json(const nlohmann::json
     if (!a[i].is_number()) return Error{at + ": not a number, got " + a[i].dump()};
     double x = a[i].get<double>();
     if (!std::isfinite(x) || x < def_.lo || x > def_.hi)
-      return Error{at + ": must lie in [" + std::to_string(def_.lo) + ", " + std::to_string(def_.hi) + "], got " +
-                   a[i].dump()};
+      return Error{at + ": must lie in [" + nlohmann::json(def_.lo).dump() + ", " + nlohmann::json(def_.hi).dump() +
+                   "], got " + a[i].dump()};
     g.push_back(x);
   }
   return std::unique_ptr<Genotype>(std::make_unique<FloatVector>(std::move(g)));
