@@ -33,6 +33,7 @@
 #include <string>
 #include <vector>
 
+#include "genome/graph_genotype.h"
 #include "core/rng.h"
 #include "develop/develop.h"
 #include "eval/evaluate.h"
@@ -330,8 +331,13 @@ int main(int argc, char** argv) {
 
   // ---- the pools: one per worker count, alive together (idle workers wait
   // on their pipe)
+  std::vector<GraphGenotype> genotypes;
+  genotypes.reserve(cs.size());  // no reallocation: the jobs point into it
   std::vector<EvalJob> jobs;
-  for (const Creature& c : cs) jobs.push_back({&c.genome, c.seed});
+  for (const Creature& c : cs) {
+    genotypes.emplace_back(c.genome);
+    jobs.push_back({&genotypes.back(), c.seed});
+  }
   const double timeout = 600;
   std::vector<std::unique_ptr<ProcessPoolEvaluator>> pools;
   std::vector<std::vector<int>> pool_pids;

@@ -14,6 +14,7 @@
 #include "run/run.h"
 #include "genome/dialect.h"
 #include "genome/genome_json.h"
+#include "genome/graph_genotype.h"
 #include "io/run_store.h"
 
 namespace bx {
@@ -105,8 +106,12 @@ Result<Creature> from_run(const RunTarget& t, const CreatureFlags& f) {
   if (!text) return Error{text.error()};
   auto cfg = read_run_config(*text, run_db_path(t.dir) + " (the run's config)", f.set);
   if (!cfg) return Error{cfg.error()};
+  const Genome* genome = graph_genome(*ind->genotype);
+  if (!genome)
+    return Error{t.dir + ": individual " + std::to_string(ind->id) + " is a genotype of kind " +
+                 std::string(ind->genotype->kind()) + ": it has no body to grow"};
   Creature c;
-  c.genome = ind->genome;
+  c.genome = *genome;
   c.cfg = *cfg;
   c.seed = ind->seed;
   c.label = t.dir + " individual " + std::to_string(ind->id) + " (generation " + std::to_string(ind->generation) + ")";

@@ -136,7 +136,7 @@ int cmd_best(const std::string& target, const CreatureFlags& flags, const std::s
   // scored it travel with it, so `simulate/show/render/check FILE` replay that evaluation
   auto store = RunStore::open(run_db_path(c->run_dir));
   if (!store) return fail(store.error());
-  nlohmann::json j = genome_to_json(ind.genome);
+  nlohmann::json j = genome_to_json(c->genome);
   j["provenance"] = provenance_json(*c, (*store)->meta("config"));
   std::string text = j.dump(2) + "\n";
   if (out.empty()) {

@@ -19,7 +19,7 @@
 
 #include "develop/develop.h"
 #include "eval/records_json.h"
-#include "genome/genome_edit.h"
+#include "genome/graph_genotype.h"
 
 namespace bx {
 
@@ -35,10 +35,18 @@ EvalOutcome evaluate_genome(const Genome& g, const SimConfig& cfg, std::uint64_t
   return out;
 }
 
+EvalOutcome evaluate_genotype(const Genotype& g, const SimConfig& cfg, std::uint64_t seed) {
+  if (const Genome* genome = graph_genome(g)) return evaluate_genome(*genome, cfg, seed);
+  EvalOutcome out;
+  out.viable = false;
+  out.reason = "no task evaluates genotypes of kind " + std::string(g.kind()) + " yet";
+  return out;
+}
+
 std::vector<EvalOutcome> SerialEvaluator::evaluate(const std::vector<EvalJob>& jobs) {
   std::vector<EvalOutcome> out;
   out.reserve(jobs.size());
-  for (const auto& j : jobs) out.push_back(evaluate_genome(*j.genome, cfg_, j.seed));
+  for (const auto& j : jobs) out.push_back(evaluate_genotype(*j.genotype, cfg_, j.seed));
   return out;
 }
 
@@ -94,7 +102,7 @@ bool receive_message(int fd, std::string& s) {
       o.result.failed = true;
       o.result.failure = "worker could not read its job: " + job.error();
     } else {
-      o = work(job->genome, cfg, job->seed);
+      o = work(*job->genotype, cfg, job->seed);
     }
     if (!send_message(out, outcome_to_json(o).dump())) break;
   }
@@ -177,7 +185,7 @@ ProcessPoolEvaluator::ProcessPoolEvaluator(SimConfig cfg, int workers, double ti
     : impl_(std::make_unique<Impl>()) {
   ::signal(SIGPIPE, SIG_IGN);  // a dead worker shows as a failed write, not a dead parent
   impl_->cfg = std::move(cfg);
-  impl_->work = work ? std::move(work) : WorkerJob(evaluate_genome);
+  impl_->work = work ? std::move(work) : WorkerJob(evaluate_genotype);
   impl_->timeout = timeout_seconds;
   impl_->workers.resize(std::max(workers, 1));
   for (auto& w : impl_->workers) impl_->spawn(w);
@@ -193,13 +201,13 @@ int ProcessPoolEvaluator::workers() const { return static_cast<int>(impl_->worke
 std::vector<EvalOutcome> ProcessPoolEvaluator::evaluate(const std::vector<EvalJob>& jobs) {
   auto& im = *impl_;
   std::vector<EvalOutcome> out(jobs.size());
-  // longest jobs first (most parts), so no worker idles on one long job at the
-  // end of a batch; results still come back in job order
+  // longest jobs first (a graph genome: most parts), so no worker idles on
+  // one long job at the end of a batch; results still come back in job order
   std::vector<int> order(jobs.size());
-  std::vector<int> cost(jobs.size());
+  std::vector<double> cost(jobs.size());
   for (int i = 0; i < static_cast<int>(jobs.size()); ++i) {
     order[i] = i;
-    cost[i] = count_parts(*jobs[i].genome, 1000);
+    cost[i] = jobs[i].genotype->cost_hint();
   }
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return cost[a] > cost[b]; });
   std::deque<int> pending(order.begin(), order.end());

@@ -1,7 +1,8 @@
-// Evaluators: how a batch of genomes gets evaluated. The evolutionary
+// Evaluators: how a batch of genotypes gets evaluated. The evolutionary
 // algorithms hand a batch to an Evaluator and never touch processes
 // themselves (docs/design.md). Every evaluator gives identical results for the
-// same jobs, because an evaluation is a pure function of (genome, config, seed).
+// same jobs, because an evaluation is a pure function of (genotype, config,
+// seed).
 #pragma once
 
 #include <cstdint>
@@ -13,12 +14,13 @@
 #include "eval/evaluate.h"
 #include "eval/sim_config.h"
 #include "genome/genome.h"
+#include "genome/genotype.h"
 
 namespace bx {
 
 /// One evaluation to do.
 struct EvalJob {
-  const Genome* genome = nullptr;
+  const Genotype* genotype = nullptr;
   std::uint64_t seed = 0;
 };
 
@@ -29,8 +31,14 @@ struct EvalOutcome {
   EvalResult result;   ///< failed == true when the evaluation crashed, timed out or blew up
 };
 
-/// Grows and evaluates one genome: the work of every evaluator.
+/// Grows and evaluates one genome.
 EvalOutcome evaluate_genome(const Genome& g, const SimConfig& cfg, std::uint64_t seed);
+
+/// Evaluates one genotype: the work of every evaluator. A graph genome is
+/// grown and evaluated (evaluate_genome); a kind no task evaluates yet (a
+/// float vector: its body and controller come with the river crossing) is
+/// not viable, and says so.
+EvalOutcome evaluate_genotype(const Genotype& g, const SimConfig& cfg, std::uint64_t seed);
 
 /// Evaluates batches of jobs; results come back in job order.
 class Evaluator {
@@ -58,9 +66,9 @@ class SerialEvaluator : public Evaluator {
 /// once: a lost worker costs nothing, while a job that crashes or times out
 /// twice is recorded as failed with its reason, "(twice)"; the batch goes on.
 /// Workers ignore SIGINT and SIGTERM and die with the process that made them.
-/// `work` is what a worker does with a job: evaluate_genome unless a test
+/// `work` is what a worker does with a job: evaluate_genotype unless a test
 /// passes one that crashes or hangs on purpose.
-using WorkerJob = std::function<EvalOutcome(const Genome&, const SimConfig&, std::uint64_t seed)>;
+using WorkerJob = std::function<EvalOutcome(const Genotype&, const SimConfig&, std::uint64_t seed)>;
 class ProcessPoolEvaluator : public Evaluator {
  public:
   ProcessPoolEvaluator(SimConfig cfg, int workers, double timeout_seconds, WorkerJob work = {});

@@ -5,7 +5,6 @@
 #include <limits>
 #include <stdexcept>
 
-#include "genome/genome_json.h"
 
 namespace bx {
 
@@ -56,7 +55,7 @@ T get(const json& j, const char* name) {
 
 json job_to_json(const EvalJob& job) {
   // the seed as a number: nlohmann keeps 64-bit unsigned integers exact
-  return {{"seed", job.seed}, {"genome", genome_to_json(*job.genome)}};
+  return {{"seed", job.seed}, {"kind", std::string(job.genotype->kind())}, {"genotype", job.genotype->to_json()}};
 }
 
 Result<ReadJob> job_from_json(const json& j) {
@@ -66,9 +65,9 @@ Result<ReadJob> job_from_json(const json& j) {
     if (!seed.is_number_unsigned()) throw std::runtime_error("seed is not a whole number from 0 to 2^64-1");
     ReadJob job;
     job.seed = seed.get<std::uint64_t>();
-    auto g = genome_from_json(field(j, "genome"), "job");
+    auto g = read_genotype(get<std::string>(j, "kind"), field(j, "genotype"), "job");
     if (!g) throw std::runtime_error(g.error());
-    job.genome = std::move(*g);
+    job.genotype = std::move(*g);
     return job;
   } catch (const std::exception& e) {
     return Error{std::string("evaluation job: ") + e.what()};

@@ -1,11 +1,12 @@
-// The JSON forms of the evaluator's records: a job (the genome and the
-// evaluation seed) and its outcome (EvalOutcome and its EvalResult). One
+// The JSON forms of the evaluator's records: a job (the genotype's kind and
+// JSON form, and the evaluation seed) and its outcome (EvalOutcome and its EvalResult). One
 // serialiser each, every field, used by the process pool's wire. Doubles
 // travel at full precision (a read gives the same bits); a non-finite one is
-// written as null and read back as NaN. The genome travels in its one file
-// form (genome/genome_json.h).
+// written as null and read back as NaN. A graph genome travels in its one
+// file form (genome/genome_json.h).
 #pragma once
 
+#include <memory>
 #include <nlohmann/json.hpp>
 
 #include "core/result.h"
@@ -13,16 +14,16 @@
 
 namespace bx {
 
-/// A job as read back: it owns its genome.
+/// A job as read back: it owns its genotype.
 struct ReadJob {
-  Genome genome;
+  std::unique_ptr<Genotype> genotype;
   std::uint64_t seed = 0;
 };
 
 nlohmann::json job_to_json(const EvalJob& job);
 
 /// Reads what job_to_json wrote; an error names the field, or says what is
-/// wrong with the genome.
+/// wrong with the genotype (or that its kind is unknown).
 Result<ReadJob> job_from_json(const nlohmann::json& j);
 
 nlohmann::json outcome_to_json(const EvalOutcome& o);

@@ -5,8 +5,9 @@
 #include <cmath>
 #include <numeric>
 
+#include <cassert>
+
 #include "core/rng.h"
-#include "genome/dialect.h"
 
 namespace bx {
 
@@ -43,20 +44,30 @@ std::size_t select_survivor(const std::vector<Individual>& survivors, Selection 
   return n - 1;
 }
 
-Evolution::Evolution(Dialect dialect, EvolutionDef evo, OperatorDef ops, DevelopDef develop,
-                     std::uint64_t seed)
-    : dialect_(dialect), evo_(evo), ops_(std::move(ops)), develop_(develop), seed_(seed) {}
-
-bool Evolution::finished(const EvolutionState& s) const {
-  if (evo_.algorithm == Algorithm::Generational) return s.generation + 1 >= evo_.generations;
-  return s.generation >= 0 && s.evaluations >= evo_.population + evo_.evaluations;
+int total_generations(const EvolutionDef& evo) {
+  if (evo.algorithm == Algorithm::Generational) return evo.generations;
+  long every = evo.report_every > 0 ? evo.report_every : evo.population;
+  return 1 + static_cast<int>((evo.evaluations + every - 1) / every);
 }
 
-int Evolution::total_generations() const {
-  if (evo_.algorithm == Algorithm::Generational) return evo_.generations;
-  long every = evo_.report_every > 0 ? evo_.report_every : evo_.population;
-  return 1 + static_cast<int>((evo_.evaluations + every - 1) / every);
+Status check_breeding(const EvolutionDef& evo, const GenotypeOps& ops) {
+  if (evo.p_graft > 0 && !ops.can_graft())
+    return Error{"evolution.p_graft = " + nlohmann::json(evo.p_graft).dump() + ": genotypes of kind " +
+                 std::string(ops.kind()) + " have no grafting (give its share to p_asexual or p_crossover)"};
+  return Ok{};
 }
+
+Evolution::Evolution(std::shared_ptr<const GenotypeOps> ops, EvolutionDef evo, std::uint64_t seed)
+    : ops_(std::move(ops)), evo_(evo), seed_(seed) {
+  assert(ops_ && check_breeding(evo_, *ops_).ok());
+}
+
+bool Evolution::finished(const EvolutionDef& evo, const EvolutionState& s) {
+  if (evo.algorithm == Algorithm::Generational) return s.generation + 1 >= evo.generations;
+  return s.generation >= 0 && s.evaluations >= evo.population + evo.evaluations;
+}
+
+int Evolution::total_generations() const { return bx::total_generations(evo_); }
 
 std::uint64_t evaluation_seed(std::uint64_t seed, std::int64_t id) {
   return stream_seed({seed, kEvaluation, static_cast<std::uint64_t>(id)});
@@ -64,14 +75,10 @@ std::uint64_t evaluation_seed(std::uint64_t seed, std::int64_t id) {
 
 std::uint64_t Evolution::eval_seed(std::int64_t id) const { return evaluation_seed(seed_, id); }
 
-bool Evolution::is_viable(const Genome& g) const {
-  return validate(g).ok() && develop(g, develop_).viable();
-}
-
 // redraws a non-viable child until it is viable; past the limit, a random genome
 Evolution::Child Evolution::viable(Child c, Rng& rng, long& rejected,
                                    const std::function<Child(Rng&)>& remake) const {
-  for (int tries = 0; !is_viable(c.genome); ++tries) {
+  for (int tries = 0; !ops_->viable(*c.genotype); ++tries) {
     ++rejected;
     c = tries < evo_.max_regenerations ? remake(rng) : random_child(rng, rejected);
   }
@@ -81,8 +88,8 @@ Evolution::Child Evolution::viable(Child c, Rng& rng, long& rejected,
 Evolution::Child Evolution::random_child(Rng& rng, long& rejected) const {
   // random genomes are redrawn until viable, without a limit
   for (;;) {
-    Child c{random_genome(dialect_, ops_, rng), -1, -1, "random"};
-    if (is_viable(c.genome)) return c;
+    Child c{ops_->random(rng), -1, -1, "random"};
+    if (ops_->viable(*c.genotype)) return c;
     ++rejected;
   }
 }
@@ -94,13 +101,13 @@ std::vector<Individual> Evolution::evaluate(std::vector<Child> children, Evoluti
   for (std::size_t k = 0; k < children.size(); ++k) {
     Individual& ind = born[k];
     ind.id = s.next_id++;
-    ind.genome = std::move(children[k].genome);
+    ind.genotype = std::move(children[k].genotype);
     ind.parent1 = children[k].parent1;
     ind.parent2 = children[k].parent2;
     ind.op = children[k].op;
     ind.generation = s.generation + 1;
     ind.seed = eval_seed(ind.id);
-    jobs[k] = {&ind.genome, ind.seed};
+    jobs[k] = {ind.genotype.get(), ind.seed};
   }
   std::vector<EvalOutcome> out = eval.evaluate(jobs);
   for (std::size_t k = 0; k < born.size(); ++k) {
@@ -180,16 +187,12 @@ GenerationResult Evolution::generational(EvolutionState& s, Evaluator& eval) con
     auto make = [&](Rng& r) {
       const Individual& a = survivors[select_survivor(survivors, evo_.selection, r)];
       double u = r.uniform();
-      if (u < evo_.p_asexual) {
-        Child c{a.genome, a.id, -1, "mutation"};
-        mutate(c.genome, ops_, evo_.asexual_rate, r);
-        return c;
-      }
+      if (u < evo_.p_asexual) return Child{ops_->mutate(*a.genotype, evo_.asexual_rate, r), a.id, -1, "mutation"};
       const Individual& b = survivors[select_survivor(survivors, evo_.selection, r)];
       bool cross = u < evo_.p_asexual + evo_.p_crossover;
-      Child c{cross ? crossover(a.genome, b.genome, ops_, r) : graft(a.genome, b.genome, ops_, r), a.id, b.id,
-              cross ? "crossover" : "graft"};
-      if (r.chance(evo_.sexual_mutation_chance)) mutate(c.genome, ops_, evo_.sexual_rate, r);
+      Child c{cross ? ops_->crossover(*a.genotype, *b.genotype, r) : ops_->graft(*a.genotype, *b.genotype, r),
+              a.id, b.id, cross ? "crossover" : "graft"};
+      if (r.chance(evo_.sexual_mutation_chance)) c.genotype = ops_->mutate(*c.genotype, evo_.sexual_rate, r);
       return c;
     };
     children.push_back(viable(make(rng), rng, rejected, make));
@@ -235,14 +238,14 @@ GenerationResult Evolution::steady_state(EvolutionState& s, Evaluator& eval) con
       auto make = [&](Rng& r) {
         const double u = r.uniform();
         if (u < evo_.p_asexual) {
-          Child c{a.genome, a.id, -1, "mutation"};
-          for (int m = 0; m < evo_.asexual_mutations; ++m) mutate(c.genome, ops_, evo_.mutation_rate, r);
+          Child c{a.genotype, a.id, -1, "mutation"};
+          for (int m = 0; m < evo_.asexual_mutations; ++m) c.genotype = ops_->mutate(*c.genotype, evo_.mutation_rate, r);
           return c;
         }
         const bool cross = u < evo_.p_asexual + evo_.p_crossover;
-        Child c{cross ? crossover(a.genome, b.genome, ops_, r) : graft(a.genome, b.genome, ops_, r), a.id, b.id,
-                cross ? "crossover" : "graft"};
-        mutate(c.genome, ops_, evo_.mutation_rate, r);
+        Child c{cross ? ops_->crossover(*a.genotype, *b.genotype, r) : ops_->graft(*a.genotype, *b.genotype, r),
+                a.id, b.id, cross ? "crossover" : "graft"};
+        c.genotype = ops_->mutate(*c.genotype, evo_.mutation_rate, r);
         return c;
       };
       children.push_back(viable(make(rng), rng, rejected, make));

@@ -1,8 +1,10 @@
 // The evolutionary loops: a generational GA (chaumont2007) and a steady-state
-// GA with triple tournaments (miconi2006). Both hand batches to an Evaluator
-// and never touch processes; every random draw comes from a stream seeded by
-// (run seed, generation or batch, child), so a run resumed from a checkpoint
-// continues exactly as if it had never stopped.
+// GA with triple tournaments (miconi2006). Both breed genotypes of any kind
+// through its GenotypeOps (genome/genotype.h) in the shares EvolutionDef
+// gives, hand batches to an Evaluator and never touch processes; every random
+// draw comes from a stream seeded by (run seed, generation or batch, child),
+// so a run resumed from a checkpoint continues exactly as if it had never
+// stopped.
 #pragma once
 
 #include <cstdint>
@@ -10,19 +12,20 @@
 #include <string>
 #include <vector>
 
-#include "develop/develop.h"
+#include <memory>
+
+#include "core/result.h"
+#include "core/rng.h"
 #include "eval/evaluator.h"
 #include "evolve/evolution_def.h"
-#include "genome/genome.h"
-#include "core/rng.h"
-#include "genome/operators.h"
+#include "genome/genotype.h"
 
 namespace bx {
 
 /// One evaluated creature of a run.
 struct Individual {
   std::int64_t id = -1;
-  Genome genome;
+  std::shared_ptr<const Genotype> genotype;  ///< immutable, so copies of an individual share it
   double fitness = 0;
   double distance = 0;
   std::string failure;  ///< why it failed (crash, timeout, explosion) or scored 0 by rule
@@ -64,14 +67,22 @@ std::size_t select_survivor(const std::vector<Individual>& survivors, Selection 
 /// The evaluation seed of individual `id` of a run with master seed `seed`.
 std::uint64_t evaluation_seed(std::uint64_t seed, std::int64_t id);
 
+/// Generations (steady state: report intervals) a run of `evo` has in all.
+int total_generations(const EvolutionDef& evo);
+
+/// Whether `evo`'s breeding scheme suits genotypes bred by `ops`: grafting
+/// (p_graft > 0) needs a kind that has it. The error names the field.
+Status check_breeding(const EvolutionDef& evo, const GenotypeOps& ops);
+
 /// An evolutionary run's algorithm.
 class Evolution {
  public:
-  Evolution(Dialect dialect, EvolutionDef evo, OperatorDef ops, DevelopDef develop,
-            std::uint64_t seed);
+  /// `ops` breeds the run's genotypes; check_breeding(evo, *ops) must hold.
+  Evolution(std::shared_ptr<const GenotypeOps> ops, EvolutionDef evo, std::uint64_t seed);
 
   /// True when the run has done all its generations or evaluations.
-  bool finished(const EvolutionState& s) const;
+  bool finished(const EvolutionState& s) const { return finished(evo_, s); }
+  static bool finished(const EvolutionDef& evo, const EvolutionState& s);
   /// Generations (steady state: report intervals) the run will have in all.
   int total_generations() const;
   /// Runs the next generation: the initial population first.
@@ -81,13 +92,12 @@ class Evolution {
 
  private:
   struct Child {
-    Genome genome;
+    std::shared_ptr<const Genotype> genotype;
     std::int64_t parent1 = -1, parent2 = -1;
     std::string op;
   };
   Child random_child(Rng& rng, long& rejected) const;
   Child viable(Child c, Rng& rng, long& rejected, const std::function<Child(Rng&)>& remake) const;
-  bool is_viable(const Genome& g) const;
   std::vector<Individual> evaluate(std::vector<Child> children, EvolutionState& s, Evaluator& eval,
                                    long& failed) const;
   GenerationResult initial(EvolutionState& s, Evaluator& eval) const;
@@ -95,10 +105,8 @@ class Evolution {
   GenerationResult steady_state(EvolutionState& s, Evaluator& eval) const;
   GenerationStats stats(const EvolutionState& s) const;
 
-  Dialect dialect_;
+  std::shared_ptr<const GenotypeOps> ops_;
   EvolutionDef evo_;
-  OperatorDef ops_;
-  DevelopDef develop_;
   std::uint64_t seed_;
 };
 

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <string>
 
+#include "genome/genome_json.h"
+
 namespace bx {
 
 namespace {
@@ -45,23 +47,33 @@ std::unique_ptr<Genotype> FloatVectorOps::crossover(const Genotype& a, const Gen
   return std::make_unique<FloatVector>(std::move(out));
 }
 
-Result<std::unique_ptr<Genotype>> FloatVectorOps::from_json(const nlohmann::json& j) const {
-  if (!j.is_object() || !j.contains("genes")) return Error{"floats: no field genes"};
+Result<FloatVector> FloatVector::from_json(const nlohmann::json& j, std::string_view source) {
+  const std::string at = source.empty() ? std::string("floats") : std::string(source) + ": floats";
+  if (!j.is_object() || !j.contains("genes")) return Error{at + ": no field genes"};
   const auto& a = j.at("genes");
-  if (!a.is_array()) return Error{"floats: genes: not an array, got " + a.dump()};
-  if (static_cast<int>(a.size()) != def_.length)
-    return Error{"floats: genes: need " + std::to_string(def_.length) + " values, got " + std::to_string(a.size())};
+  if (!a.is_array()) return Error{at + ": genes: not an array, got " + json_one_line(a, 60)};
   std::vector<double> g;
   for (std::size_t i = 0; i < a.size(); ++i) {
-    const std::string at = "floats: genes[" + std::to_string(i) + "]";
-    if (!a[i].is_number()) return Error{at + ": not a number, got " + a[i].dump()};
-    double x = a[i].get<double>();
-    if (!std::isfinite(x) || x < def_.lo || x > def_.hi)
-      return Error{at + ": must lie in [" + nlohmann::json(def_.lo).dump() + ", " + nlohmann::json(def_.hi).dump() +
-                   "], got " + a[i].dump()};
-    g.push_back(x);
+    if (!a[i].is_number() || !std::isfinite(a[i].get<double>()))
+      return Error{at + ": genes[" + std::to_string(i) + "]: not a finite number, got " + json_one_line(a[i], 60)};
+    g.push_back(a[i].get<double>());
   }
-  return std::unique_ptr<Genotype>(std::make_unique<FloatVector>(std::move(g)));
+  return FloatVector(std::move(g));
+}
+
+Result<std::unique_ptr<Genotype>> FloatVectorOps::from_json(const nlohmann::json& j) const {
+  auto v = FloatVector::from_json(j, "");
+  if (!v) return Error{v.error()};
+  const std::vector<double>& g = v->genes;
+  if (static_cast<int>(g.size()) != def_.length)
+    return Error{"floats: genes: need " + std::to_string(def_.length) + " values, got " +
+                 std::to_string(g.size())};
+  for (std::size_t i = 0; i < g.size(); ++i)
+    if (g[i] < def_.lo || g[i] > def_.hi)
+      return Error{"floats: genes[" + std::to_string(i) + "]: must lie in [" +
+                   nlohmann::json(def_.lo).dump() + ", " + nlohmann::json(def_.hi).dump() + "], got " +
+                   nlohmann::json(g[i]).dump()};
+  return std::unique_ptr<Genotype>(std::make_unique<FloatVector>(std::move(*v)));
 }
 
 }  // namespace bx

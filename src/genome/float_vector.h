@@ -16,6 +16,9 @@ class FloatVector : public Genotype {
   std::string_view kind() const override { return "floats"; }
   nlohmann::json to_json() const override;
   bool equals(const Genotype& other) const override;
+  /// Reads {"genes": [...]}: finite numbers, any count (the operators check
+  /// the count and the box).
+  static Result<FloatVector> from_json(const nlohmann::json& j, std::string_view source);
 
   std::vector<double> genes;
 };

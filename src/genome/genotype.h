@@ -1,15 +1,17 @@
-// What evolution breeds, whatever it encodes (issue 14 item 4, begun): a
-// genotype, and the operators of its kind with their constants. Sims' graph
-// genome is one kind; a float vector (a fixed body's controller weights, the
-// river crossing's) is another (genome/float_vector.h). The algorithms in
-// src/evolve/ are to see only these interfaces (pagmo: the algorithm sees
-// decision vectors, the problem turns them into fitness); they are not yet
-// wired there.
+// What evolution breeds, whatever it encodes: a genotype, and the operators
+// of its kind with their constants. Sims' graph genome is one kind
+// (genome/graph_genotype.h, its operators develop/graph_ops.h); a float
+// vector (a fixed body's controller weights, the river crossing's) is another
+// (genome/float_vector.h). The algorithms in src/evolve/ see only these
+// interfaces, as pagmo's algorithms see decision vectors and leave it to the
+// problem to turn them into fitness: here the evaluator does
+// (eval/evaluator.h, evaluate_genotype).
 #pragma once
 
 #include <cassert>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <string>
 #include <string_view>
 
 #include "core/result.h"
@@ -26,7 +28,21 @@ class Genotype {
   /// Its JSON form (what the run database and the pool's jobs hold).
   virtual nlohmann::json to_json() const = 0;
   virtual bool equals(const Genotype& other) const = 0;
+  /// How long it takes to evaluate, relative to others of its kind (the
+  /// process pool hands out the costliest first); 1 when all cost the same.
+  virtual double cost_hint() const { return 1; }
 };
+
+/// Reads a stored genotype (the run database's, a job's) of the named kind:
+/// the structure of its JSON form; the constants a kind's operators keep (a
+/// float vector's length and box) are checked by GenotypeOps::from_json. An
+/// error names `source`, the field and the value, or the unknown kind.
+Result<std::unique_ptr<Genotype>> read_genotype(std::string_view kind, const nlohmann::json& j,
+                                                std::string_view source);
+/// The same from JSON text (a graph genome through the genome file's strict
+/// reader: its limits, its error positions).
+Result<std::unique_ptr<Genotype>> parse_genotype(std::string_view kind, std::string_view text,
+                                                 std::string_view source);
 
 /// How genotypes of one kind are made, varied and read: the kind's operators
 /// with their constants. Every random draw comes from the Rng passed in.
@@ -38,6 +54,9 @@ class GenotypeOps {
   /// A mutated copy; `rate` is the kind's per-site mutation probability.
   virtual std::unique_ptr<Genotype> mutate(const Genotype& g, double rate, Rng& rng) const = 0;
   virtual std::unique_ptr<Genotype> crossover(const Genotype& a, const Genotype& b, Rng& rng) const = 0;
+  /// Whether a genotype may be evaluated at all (a graph genome must grow a
+  /// body); the algorithms redraw a child that is not.
+  virtual bool viable(const Genotype&) const { return true; }
   /// Whether graft() exists for this kind (Sims' grafting is a graph
   /// operator); a config giving p_graft > 0 to a kind without it is an error.
   virtual bool can_graft() const { return false; }

@@ -10,6 +10,7 @@
 #include "develop/develop.h"
 #include "eval/evaluate.h"
 #include "genome/genome_json.h"
+#include "genome/graph_genotype.h"
 #include "io/replay_file.h"
 
 namespace bx {
@@ -64,8 +65,7 @@ Result<RunPage> gather_run_page(const RunStore& store, const std::string& source
   run.dialect = std::string(to_string(cfg.dialect));
   run.algorithm = cfg.evolution.algorithm == Algorithm::Generational ? "generational" : "steady state";
   run.population = cfg.evolution.population;
-  run.planned_generations =
-      Evolution(cfg.dialect, cfg.evolution, cfg.operators, cfg.sim.develop, master).total_generations();
+  run.planned_generations = total_generations(cfg.evolution);
   run.replay_cap = cap;
   // the overall best: the fittest generation best, the earliest on a tie
   const GenerationStats* top = &gens.front();
@@ -114,7 +114,10 @@ Result<RunPage> gather_run_page(const RunStore& store, const std::string& source
   std::map<std::int64_t, int> replay_of;
   for (std::int64_t id : replay_choice(run.best_id, *best_line, bests, others, cap)) {
     const Individual& ind = members.at(id);
-    Development dev = develop(ind.genome, sim.develop);
+    const Genome* genome = graph_genome(*ind.genotype);
+    if (!genome) return Error{"individual " + std::to_string(id) + " is a genotype of kind " +
+                              std::string(ind.genotype->kind()) + ": it has no body to show"};
+    Development dev = develop(*genome, sim.develop);
     if (!dev.viable()) continue;
     Replay replay;
     std::uint64_t seed = ind.seed;  // the seed stored with it
@@ -122,7 +125,7 @@ Result<RunPage> gather_run_page(const RunStore& store, const std::string& source
     ReplayInfo info{source + " individual " + std::to_string(id), seed, sim.physics.dt, sim.physics.friction};
     replay_of[id] = static_cast<int>(page.replays.size());
     page.replays.push_back({"individual " + std::to_string(id) + ", generation " + std::to_string(ind.generation),
-                            replay_to_string(*dev.model, replay, res, info), genome_to_string(ind.genome)});
+                            replay_to_string(*dev.model, replay, res, info), genome_to_string(*genome)});
   }
   if (!replay_of.count(run.best_id))
     return Error{"the best, individual " + std::to_string(run.best_id) + ", cannot be grown"};

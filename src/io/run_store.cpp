@@ -8,7 +8,7 @@
 #include <optional>
 #include <nlohmann/json.hpp>
 
-#include "genome/genome_json.h"
+#include "genome/genotype.h"
 
 namespace bx {
 
@@ -26,7 +26,7 @@ CREATE TABLE generation (
 CREATE TABLE individual (
   id INTEGER PRIMARY KEY, gen INTEGER NOT NULL, genome TEXT NOT NULL,
   fitness REAL NOT NULL, distance REAL NOT NULL, parent1 INTEGER, parent2 INTEGER,
-  operator TEXT NOT NULL, failure TEXT NOT NULL, seed TEXT);
+  operator TEXT NOT NULL, failure TEXT NOT NULL, seed TEXT, kind TEXT NOT NULL DEFAULT 'graph');
 CREATE INDEX individual_gen ON individual (gen);
 CREATE TABLE checkpoint (id INTEGER PRIMARY KEY CHECK (id = 1), gen INTEGER NOT NULL, state TEXT NOT NULL);
 )";
@@ -139,6 +139,11 @@ Result<std::unique_ptr<RunStore>> RunStore::open(const std::string& path) {
   Stmt has_seed(*db, "SELECT count(*) FROM pragma_table_info('individual') WHERE name = 'seed'");
   if (has_seed.ok() && has_seed.step() == SQLITE_ROW && has_seed.i64(0) == 0)
     store->seed_column_ = writable && exec(*db, "ALTER TABLE individual ADD COLUMN seed TEXT").ok();
+  // and before they kept their genotype's kind: all were graph genomes
+  Stmt has_kind(*db, "SELECT count(*) FROM pragma_table_info('individual') WHERE name = 'kind'");
+  if (has_kind.ok() && has_kind.step() == SQLITE_ROW && has_kind.i64(0) == 0)
+    store->kind_column_ =
+        writable && exec(*db, "ALTER TABLE individual ADD COLUMN kind TEXT NOT NULL DEFAULT 'graph'").ok();
   return store;
 }
 
@@ -209,13 +214,14 @@ Status RunStore::write_generation(const GenerationStats& st, const std::vector<I
   // individuals born in this generation
   {
     Stmt ins(db_, "INSERT INTO individual (id, gen, genome, fitness, distance, parent1, parent2, operator, failure, "
-                  "seed) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+                  "seed, kind) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
     for (const auto& ind : born) {
       ins.bind(1, ind.id).bind(2, static_cast<std::int64_t>(ind.generation))
-          .bind(3, genome_to_json(ind.genome).dump()).bind(4, ind.fitness).bind(5, ind.distance);
+          .bind(3, ind.genotype->to_json().dump()).bind(4, ind.fitness).bind(5, ind.distance);
       if (ind.parent1 >= 0) ins.bind(6, ind.parent1); else ins.bind_null(6);
       if (ind.parent2 >= 0) ins.bind(7, ind.parent2); else ins.bind_null(7);
-      ins.bind(8, ind.op).bind(9, ind.failure).bind(10, std::to_string(ind.seed));
+      ins.bind(8, ind.op).bind(9, ind.failure).bind(10, std::to_string(ind.seed))
+          .bind(11, std::string(ind.genotype->kind()));
       if (ins.step() != SQLITE_DONE) return rollback("storing individual " + std::to_string(ind.id));
       ins.reset();
     }
@@ -292,10 +298,10 @@ std::vector<GenerationStats> RunStore::generations() const {
 }
 
 Result<Individual> RunStore::individual(std::int64_t id) const {
-  Stmt s(db_, seed_column_ ? "SELECT id, gen, genome, fitness, distance, parent1, parent2, operator, failure, seed "
-                             "FROM individual WHERE id = ?"
-                           : "SELECT id, gen, genome, fitness, distance, parent1, parent2, operator, failure, '' "
-                             "FROM individual WHERE id = ?");
+  const std::string sql = std::string("SELECT id, gen, genome, fitness, distance, parent1, parent2, operator, failure, ") +
+                          (seed_column_ ? "seed" : "''") + ", " + (kind_column_ ? "kind" : "'graph'") +
+                          " FROM individual WHERE id = ?";
+  Stmt s(db_, sql.c_str());
   s.bind(1, id);
   const std::string who = "individual " + std::to_string(id);
   if (s.step() != SQLITE_ROW) return Error{"no " + who};
@@ -304,12 +310,13 @@ Result<Individual> RunStore::individual(std::int64_t id) const {
   for (auto [c, field] : {std::pair{5, "parent1"}, {6, "parent2"}})
     if (!s.null(c))
       if (Status t = number_column(s.raw(), c, who + "'s " + field); !t) return Error{t.error()};
-  auto g = genome_from_string(s.text(2), who);
+  const std::string kind = s.text(10);
+  auto g = parse_genotype(kind, s.text(2), who);
   if (!g) return Error{g.error()};
   Individual ind;
   ind.id = s.i64(0);
   ind.generation = static_cast<int>(s.i64(1));
-  ind.genome = std::move(*g);
+  ind.genotype = std::move(*g);
   ind.fitness = s.real(3);
   ind.distance = s.real(4);
   ind.parent1 = s.null(5) ? -1 : s.i64(5);

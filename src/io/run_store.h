@@ -1,6 +1,6 @@
 // The run database (SQLite, Revolve2's convention): the run with its seed and
-// build version; per generation its statistics; per individual its genome,
-// fitness, parents, operator and failure; and the checkpoint, written in the
+// build version; per generation its statistics; per individual its genotype
+// (kind and JSON form), fitness, parents, operator and failure; and the checkpoint, written in the
 // same transaction as the generation it closes, so the database is always at
 // a generation boundary, whenever the process is killed.
 #pragma once
@@ -75,6 +75,7 @@ class RunStore {
   std::string path_;
   bool read_only_ = false;
   bool seed_column_ = true;  ///< false: an older database opened read-only, without individual.seed
+  bool kind_column_ = true;  ///< false: one without individual.kind (its genotypes are graph genomes)
 };
 
 }  // namespace bx

@@ -15,6 +15,7 @@
 
 #include "core/files.h"
 #include "core/version.h"
+#include "develop/graph_ops.h"
 #include "eval/evaluator.h"
 #include "evolve/evolution.h"
 #include "io/run_store.h"
@@ -131,13 +132,17 @@ Result<OpenRun> open_run(const std::string& dir, const std::vector<std::string>&
   return OpenRun{std::move(*store), std::move(*cfg), *seed};
 }
 
+// what the run breeds: today every preset evolves graph genomes
+std::shared_ptr<const GenotypeOps> genotype_ops(const RunConfig& cfg) {
+  return std::make_shared<GraphOps>(cfg.dialect, cfg.operators, cfg.sim.develop);
+}
+
 }  // namespace
 
 Result<RunProgress> run_progress(const std::string& dir) {
   auto run = open_run(dir);
   if (!run) return Error{run.error()};
   if (Status s = run->store->check_integrity(); !s) return Error{s.error()};
-  Evolution evo(run->cfg.dialect, run->cfg.evolution, run->cfg.operators, run->cfg.sim.develop, run->seed);
   RunProgress p;
   EvolutionState state;
   auto cp = run->store->checkpoint();
@@ -147,9 +152,9 @@ Result<RunProgress> run_progress(const std::string& dir) {
     state.evaluations = (*cp)->evaluations;
   }
   p.generations_done = state.generation + 1;
-  p.generations_total = evo.total_generations();
+  p.generations_total = total_generations(run->cfg.evolution);
   p.evaluations = state.evaluations;
-  p.complete = evo.finished(state);
+  p.complete = Evolution::finished(run->cfg.evolution, state);
   return p;
 }
 
@@ -216,7 +221,9 @@ Status drive_run(const std::string& dir, const RunOptions& opt) {
   if (store.read_only()) return Error{dir + ": read-only here (permission denied): cannot continue the run"};
   if (Status s = store.check_integrity(); !s) return s;
   const RunConfig& cfg = run->cfg;
-  Evolution evo(cfg.dialect, cfg.evolution, cfg.operators, cfg.sim.develop, run->seed);
+  auto ops = genotype_ops(cfg);
+  if (Status s = check_breeding(cfg.evolution, *ops); !s) return s;
+  Evolution evo(ops, cfg.evolution, run->seed);
   // config.toml is the run's config for people to read: the stored one rules
   std::string note;
   const std::string stored = *store.config_text();

@@ -276,6 +276,29 @@ TEST_F(RunCli, ALengthenedRunEndsExactlyAsARunConfiguredThatLong) {
   EXPECT_NE(text.str().find("generations = 5"), std::string::npos);
 }
 
+// A run database written before individuals kept their genotype's kind (all
+// were graph genomes) resumes and ends as a run that always had it.
+TEST_F(RunCli, ARunStoredBeforeGenotypeKindsResumesExactly) {
+  std::string cfg = (dir / "small.toml").string();  // 5 generations
+  ASSERT_EQ(bestiary("run " + cfg + " --out " + (dir / "whole").string() + " --quiet").code, 0);
+  fs::path run = dir / "old";
+  ASSERT_EQ(bestiary("run " + cfg + " --out " + run.string() + " --stop-after 2 --quiet").code, 0);
+  EXPECT_EQ(query(run / "run.sqlite", "SELECT DISTINCT kind FROM individual"), "graph|\n");
+  {
+    sqlite3* db = nullptr;
+    ASSERT_EQ(sqlite3_open((run / "run.sqlite").c_str(), &db), SQLITE_OK);
+    EXPECT_EQ(sqlite3_exec(db, "ALTER TABLE individual DROP COLUMN kind", nullptr, nullptr, nullptr), SQLITE_OK);
+    sqlite3_close(db);
+  }
+  Outcome r = bestiary("resume " + run.string() + " --quiet");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const char* rows = "SELECT id, gen, genome, fitness, distance, parent1, parent2, operator, failure, seed, kind "
+                     "FROM individual ORDER BY id";
+  EXPECT_EQ(query(run / "run.sqlite", rows), query(dir / "whole" / "run.sqlite", rows));
+  EXPECT_EQ(query(run / "run.sqlite", "SELECT * FROM generation ORDER BY gen"),
+            query(dir / "whole" / "run.sqlite", "SELECT * FROM generation ORDER BY gen"));
+}
+
 TEST_F(RunCli, BadInputGivesOneErrorLineAndWritesNothing) {
   struct Case {
     std::string args, error;

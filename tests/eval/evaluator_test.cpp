@@ -8,17 +8,19 @@
 
 #include <cstdlib>
 
+#include "genome/float_vector.h"
 #include "genome/genome_json.h"
+#include "genome/graph_genotype.h"
 
 namespace bx {
 namespace {
 
-std::vector<Genome> creatures() {
-  std::vector<Genome> out;
+std::vector<GraphGenotype> creatures() {
+  std::vector<GraphGenotype> out;
   for (const char* name : {"walker.json", "snake.json", "hinged_pair.json", "sims_both.json"}) {
     auto g = load_genome(std::string(BESTIARY_SOURCE_DIR) + "/tests/creatures/" + name);
     EXPECT_TRUE(g.ok()) << g.error();
-    out.push_back(*g);
+    out.emplace_back(*g);
   }
   return out;
 }
@@ -29,7 +31,7 @@ SimConfig short_config() {
   return cfg;
 }
 
-std::vector<EvalJob> jobs_for(const std::vector<Genome>& gs) {
+std::vector<EvalJob> jobs_for(const std::vector<GraphGenotype>& gs) {
   std::vector<EvalJob> jobs;
   for (std::size_t i = 0; i < gs.size(); ++i) jobs.push_back({&gs[i], 100 + i});
   return jobs;
@@ -59,9 +61,9 @@ TEST(Evaluator, AWorkerThatAbortsCostsOnlyItsJob) {
   auto gs = creatures();
   auto jobs = jobs_for(gs);
   // the worker aborts on the job with seed 101
-  ProcessPoolEvaluator pool(short_config(), 2, 60, [](const Genome& g, const SimConfig& c, std::uint64_t seed) {
+  ProcessPoolEvaluator pool(short_config(), 2, 60, [](const Genotype& g, const SimConfig& c, std::uint64_t seed) {
     if (seed == 101) std::abort();
-    return evaluate_genome(g, c, seed);
+    return evaluate_genotype(g, c, seed);
   });
   auto got = pool.evaluate(jobs);
   auto serial = SerialEvaluator(short_config()).evaluate(jobs);
@@ -85,9 +87,9 @@ TEST(Evaluator, AWorkerThatHangsTimesOutAndTheBatchGoesOn) {
   auto gs = creatures();
   auto jobs = jobs_for(gs);
   // the worker hangs on the job with seed 102 (and so does the one given it again)
-  ProcessPoolEvaluator pool(short_config(), 2, 1.0, [](const Genome& g, const SimConfig& c, std::uint64_t seed) {
+  ProcessPoolEvaluator pool(short_config(), 2, 1.0, [](const Genotype& g, const SimConfig& c, std::uint64_t seed) {
     if (seed == 102) ::pause();
-    return evaluate_genome(g, c, seed);
+    return evaluate_genotype(g, c, seed);
   });
   auto got = pool.evaluate(jobs);
   EXPECT_TRUE(got[2].result.failed);
@@ -97,12 +99,26 @@ TEST(Evaluator, AWorkerThatHangsTimesOutAndTheBatchGoesOn) {
 
 TEST(Evaluator, NonViableGenomesComeBackAsValues) {
   auto gs = creatures();
-  gs[0].nodes[0].edges.push_back(gs[0].nodes[0].edges[0]);  // a second pair of legs on the first
+  gs[0].genome.nodes[0].edges.push_back(gs[0].genome.nodes[0].edges[0]);  // a second pair of legs on the first
   std::vector<EvalJob> jobs = {{&gs[0], 1}};
   ProcessPoolEvaluator pool(short_config(), 1, 60);
   auto got = pool.evaluate(jobs);
   EXPECT_FALSE(got[0].viable);
   EXPECT_NE(got[0].reason.find("self-intersection"), std::string::npos) << got[0].reason;
+}
+
+TEST(Evaluator, AGenotypeTravelsWithItsKindAndAKindWithoutATaskIsNotViable) {
+  // a float vector crosses the pipe as a float vector (the worker's reading
+  // of a graph genome would fail on it) and no task evaluates it yet
+  FloatVector v({0.5, -0.25});
+  std::vector<EvalJob> jobs = {{&v, 1}};
+  ProcessPoolEvaluator pool(short_config(), 1, 60);
+  for (const auto& out : {pool.evaluate(jobs), SerialEvaluator(short_config()).evaluate(jobs)}) {
+    ASSERT_EQ(out.size(), 1u);
+    EXPECT_FALSE(out[0].result.failed) << out[0].result.failure;
+    EXPECT_FALSE(out[0].viable);
+    EXPECT_EQ(out[0].reason, "no task evaluates genotypes of kind floats yet");
+  }
 }
 
 }  // namespace

@@ -10,7 +10,9 @@
 #include <cstring>
 
 #include "eval/evaluator.h"
+#include "genome/float_vector.h"
 #include "genome/genome_json.h"
+#include "genome/graph_genotype.h"
 
 namespace bx {
 namespace {
@@ -93,11 +95,11 @@ TEST(OutcomeJson, ANonFiniteNumberComesBackAsNaNAndAMissingFieldIsNamed) {
 }
 
 TEST(OutcomeJson, ThePoolReturnsEveryFieldTheSerialEvaluatorComputesWithTwoTrials) {
-  std::vector<Genome> gs;
+  std::vector<GraphGenotype> gs;
   for (const char* name : {"walker.json", "snake.json"}) {
     auto g = load_genome(std::string(BESTIARY_SOURCE_DIR) + "/tests/creatures/" + name);
     ASSERT_TRUE(g.ok()) << g.error();
-    gs.push_back(*g);
+    gs.emplace_back(*g);
   }
   SimConfig cfg = default_sim_config(Dialect::Sims1994);
   cfg.task.seconds = 2;
@@ -119,16 +121,23 @@ TEST(OutcomeJson, ThePoolReturnsEveryFieldTheSerialEvaluatorComputesWithTwoTrial
 namespace bx {
 namespace {
 
-TEST(JobJson, TheGenomeAndEveryBitOfTheSeedRoundTrip) {
+TEST(JobJson, TheGenotypeItsKindAndEveryBitOfTheSeedRoundTrip) {
+  std::vector<std::unique_ptr<Genotype>> genotypes;
   for (const char* name : {"walker.json", "catapult.json", "sims_recursive.json"}) {
     auto g = load_genome(std::string(BESTIARY_SOURCE_DIR) + "/tests/creatures/" + name);
     ASSERT_TRUE(g.ok()) << g.error();
+    genotypes.push_back(std::make_unique<GraphGenotype>(*g));
+  }
+  // a float vector, whose genes must come back bit for bit
+  genotypes.push_back(std::make_unique<FloatVector>(std::vector<double>{0.1, -1.0 / 3, 5e-310, 1e300}));
+  for (const auto& g : genotypes) {
     for (std::uint64_t seed : {std::uint64_t{0}, std::uint64_t{1}, ~std::uint64_t{0}, std::uint64_t{14276982200636331862u}}) {
       // through text, as the pool's pipe carries it
-      auto back = job_from_json(nlohmann::json::parse(job_to_json({&*g, seed}).dump()));
+      auto back = job_from_json(nlohmann::json::parse(job_to_json({g.get(), seed}).dump()));
       ASSERT_TRUE(back.ok()) << back.error();
       EXPECT_EQ(back->seed, seed);
-      EXPECT_EQ(back->genome, *g) << name;
+      EXPECT_EQ(back->genotype->kind(), g->kind());
+      EXPECT_TRUE(back->genotype->equals(*g)) << g->to_json().dump();
     }
   }
 }
@@ -136,7 +145,8 @@ TEST(JobJson, TheGenomeAndEveryBitOfTheSeedRoundTrip) {
 TEST(JobJson, ABadJobNamesWhatIsWrong) {
   auto g = load_genome(std::string(BESTIARY_SOURCE_DIR) + "/tests/creatures/walker.json");
   ASSERT_TRUE(g.ok()) << g.error();
-  nlohmann::json j = job_to_json({&*g, 7});
+  GraphGenotype walker(*g);
+  nlohmann::json j = job_to_json({&walker, 7});
   auto no_seed = j;
   no_seed.erase("seed");
   EXPECT_NE(job_from_json(no_seed).error().find("no field seed"), std::string::npos);
@@ -144,10 +154,17 @@ TEST(JobJson, ABadJobNamesWhatIsWrong) {
   negative["seed"] = -1;
   EXPECT_NE(job_from_json(negative).error().find("seed is not a whole number"), std::string::npos);
   auto bad_genome = j;
-  bad_genome["genome"]["nodes"] = 3;
+  bad_genome["genotype"]["nodes"] = 3;
   auto r = job_from_json(bad_genome);
   ASSERT_FALSE(r.ok());
   EXPECT_NE(r.error().find("nodes"), std::string::npos) << r.error();
+  auto unknown = j;
+  unknown["kind"] = "tree";
+  EXPECT_EQ(job_from_json(unknown).error(),
+            "evaluation job: job: unknown genotype kind \"tree\" (expected graph or floats)");
+  auto floats = j;
+  floats["kind"] = "floats";  // a graph genome is no float vector
+  EXPECT_EQ(job_from_json(floats).error(), "evaluation job: job: floats: no field genes");
 }
 
 }  // namespace

@@ -79,7 +79,7 @@ TEST(FloatVector, JsonRoundTripsEveryBitAndNamesABadGene) {
   EXPECT_TRUE((*back)->equals(*g));
   EXPECT_EQ(ops.from_json({{"genes", {0.1, 0.2}}}).error(), "floats: genes: need 3 values, got 2");
   EXPECT_EQ(ops.from_json({{"genes", {0.1, 2.5, 0.0}}}).error(), "floats: genes[1]: must lie in [-1.0, 1.0], got 2.5");
-  EXPECT_EQ(ops.from_json({{"genes", {0.1, "x", 0.0}}}).error(), "floats: genes[1]: not a number, got \"x\"");
+  EXPECT_EQ(ops.from_json({{"genes", {0.1, "x", 0.0}}}).error(), "floats: genes[1]: not a finite number, got \"x\"");
   EXPECT_EQ(ops.from_json(nlohmann::json::object()).error(), "floats: no field genes");
   EXPECT_FALSE(ops.can_graft());
 }

@@ -13,6 +13,7 @@
 #include <set>
 #include <string>
 
+#include "genome/graph_genotype.h"
 #include "run/run.h"
 #include "genome/genome_json.h"
 #include "io/html_view.h"
@@ -307,7 +308,7 @@ TEST_F(RunPageInBrowser, OpensOnTheBestAndPlaysEachAncestorInItsLineage) {
   // the download is the shown creature's genome file
   auto shown = s->individual(r["afterClick"]["individual"].get<std::int64_t>());
   EXPECT_EQ(r["download"]["name"], "individual-" + std::to_string(shown->id) + ".json");
-  EXPECT_EQ(r["download"]["text"], bx::genome_to_string(shown->genome));
+  EXPECT_EQ(r["download"]["text"], bx::genome_to_string(*bx::graph_genome(*shown->genotype)));
 }
 
 TEST_F(RunPageInBrowser, MarksTheCreaturesItCouldNotReplayUnderACap) {

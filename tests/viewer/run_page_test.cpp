@@ -2,6 +2,7 @@
 // keeps, and on a small real run: it opens on the overall best, names every
 // generation's best and the first-parent lineages back to generation 0, and
 // replays each creature exactly as the run scored it.
+#include "genome/graph_genotype.h"
 #include "io/run_page.h"
 
 #include <gtest/gtest.h>
@@ -121,7 +122,7 @@ TEST_F(RunPage, OpensOnTheBestAndReplaysEachCreatureAsTheRunScoredIt) {
     EXPECT_EQ(seed.is_string() ? std::stoull(seed.get<std::string>()) : seed.get<std::uint64_t>(),
               bx::evaluation_seed(1, id))
         << id;
-    EXPECT_EQ(r.genome, bx::genome_to_string(stored->genome)) << id;
+    EXPECT_EQ(r.genome, bx::genome_to_string(*bx::graph_genome(*stored->genotype))) << id;
     EXPECT_EQ(r.label, "individual " + std::to_string(id) + ", generation " + std::to_string(m.gen));
   }
 }

@@ -1,0 +1,54 @@
+#include "develop/graph_ops.h"
+
+#include <cassert>
+
+#include "genome/genome_json.h"
+#include "genome/graph_genotype.h"
+
+namespace bx {
+
+namespace {
+
+const Genome& genome_of(const Genotype& g) {
+  const Genome* p = graph_genome(g);
+  assert(p && "a graph operator given another kind of genotype");
+  return *p;
+}
+
+std::unique_ptr<Genotype> wrap(Genome g) { return std::make_unique<GraphGenotype>(std::move(g)); }
+
+}  // namespace
+
+std::string_view GraphOps::kind() const { return GraphGenotype::kKind; }
+
+std::unique_ptr<Genotype> GraphOps::random(Rng& rng) const { return wrap(random_genome(dialect_, ops_, rng)); }
+
+std::unique_ptr<Genotype> GraphOps::mutate(const Genotype& g, double rate, Rng& rng) const {
+  Genome child = genome_of(g);
+  bx::mutate(child, ops_, rate, rng);
+  return wrap(std::move(child));
+}
+
+std::unique_ptr<Genotype> GraphOps::crossover(const Genotype& a, const Genotype& b, Rng& rng) const {
+  return wrap(bx::crossover(genome_of(a), genome_of(b), ops_, rng));
+}
+
+std::unique_ptr<Genotype> GraphOps::graft(const Genotype& trunk, const Genotype& branch, Rng& rng) const {
+  return wrap(bx::graft(genome_of(trunk), genome_of(branch), ops_, rng));
+}
+
+bool GraphOps::viable(const Genotype& g) const {
+  const Genome& genome = genome_of(g);
+  return validate(genome).ok() && develop(genome, develop_).viable();
+}
+
+Result<std::unique_ptr<Genotype>> GraphOps::from_json(const nlohmann::json& j) const {
+  auto g = genome_from_json(j, "genotype");
+  if (!g) return Error{g.error()};
+  if (g->dialect != dialect_)
+    return Error{"genotype: dialect is " + std::string(to_string(g->dialect)) + ", the run's is " +
+                 std::string(to_string(dialect_))};
+  return wrap(std::move(*g));
+}
+
+}  // namespace bx
