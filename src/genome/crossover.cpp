@@ -6,6 +6,7 @@
 
 #include "genome/dialect.h"
 #include "genome/genome_edit.h"
+#include "genome/locks.h"
 #include "genome/operators.h"
 #include "genome/operators_detail.h"
 
@@ -194,8 +195,29 @@ Genome crossover_graph(const Genome& a, const Genome& b, const Splice& s, const 
       int to = s.index_of(e.to);
       e.to = to >= 0 ? to : static_cast<int>(rng.below(n));
     }
+  if (!has_locks(a) && !has_locks(b)) {
+    remove_unreachable(g, SourceFix::Reassign, &rng);
+    normalize(g, def, rng);
+    return g;
+  }
+  // locks are a's (genome/locks.h): the cut lies after a's kept nodes
+  // (crossover_cut); b's nodes come unlocked, and an edge of theirs (or a
+  // random one) into a node whose in-edges are locked goes to another node
+  for (int i = s.left; i < n; ++i) unlock(g.nodes[i]);
+  std::vector<int> open;
+  for (int i = 0; i < n; ++i)
+    if (!(g.nodes[i].lock & kLockInEdges)) open.push_back(i);
+  for (int i = 0; i < n; ++i)
+    for (int k = 0; k < static_cast<int>(g.nodes[i].edges.size()); ++k) {
+      EdgeGene& e = g.nodes[i].edges[k];
+      bool own = i < s.left && s.index_of(a.nodes[i].edges[k].to) == e.to;
+      if (own || !(g.nodes[e.to].lock & kLockInEdges)) continue;
+      if (!open.empty()) e.to = open[rng.below(open.size())];
+    }
   remove_unreachable(g, SourceFix::Reassign, &rng);
   normalize(g, def, rng);
+  // what the repairs could not keep: the child is a copy of a
+  if (!locks_kept(a, g)) return a;
   return g;
 }
 
@@ -206,6 +228,8 @@ Genome crossover_graph(const Genome& a, const Genome& b, const Splice& s, const 
 Genome detail::crossover_at_plain(const Genome& a, const Genome& b, int cut,
                                   const OperatorDef& def, Rng& rng) {
   assert(a.dialect == b.dialect && !a.nodes.empty() && !b.nodes.empty());
+  // a cut never falls among a's kept nodes (genome/locks.h)
+  if (has_locks(a)) cut = std::max(cut, last_kept_node(a) + 1);
   Splice s = make_splice(a, b, cut);
   if (dialect_rules(a.dialect).operators == OperatorScheme::LimbTree) return crossover_miconi(a, b, s, def, rng);
   return crossover_graph(a, b, s, def, rng);
@@ -213,8 +237,10 @@ Genome detail::crossover_at_plain(const Genome& a, const Genome& b, int cut,
 
 int detail::crossover_cut(const Genome& a, const Genome& b, Rng& rng) {
   int m = static_cast<int>(std::max(a.nodes.size(), b.nodes.size()));
-  // a cut strictly inside the longer row, so that each parent gives something
-  return m <= 1 ? 1 : 1 + static_cast<int>(rng.below(m - 1));
+  // a cut strictly inside the longer row, so that each parent gives
+  // something, and after a's kept nodes (genome/locks.h), which it keeps
+  int lo = std::max(1, last_kept_node(a) + 1);
+  return m <= lo ? lo : lo + static_cast<int>(rng.below(m - lo));
 }
 
 Genome crossover_at(const Genome& a, const Genome& b, int cut, const OperatorDef& def, Rng& rng) {
@@ -265,15 +291,21 @@ Genome detail::graft_plain(const Genome& trunk, const Genome& branch, int first_
   } else {
     // Sims 1994: one of the trunk's edges, chosen at random, among those
     // that leave room for at least one new node
+    // that leave room for at least one new node; never a locked edge
+    // (genome/locks.h: out of a node with locked out-edges, into one with
+    // locked in-edges)
     std::vector<std::pair<int, int>> es;
     for (int i = 0; i < static_cast<int>(g.nodes.size()); ++i)
       for (int k = 0; k < static_cast<int>(g.nodes[i].edges.size()); ++k)
-        if (most - reachable_count(g, -1, i, k) >= 1) es.push_back({i, k});
+        if (most - reachable_count(g, -1, i, k) >= 1 && !(g.nodes[i].lock & kLockOutEdges) &&
+            !(g.nodes[g.nodes[i].edges[k].to].lock & kLockInEdges))
+          es.push_back({i, k});
     if (!es.empty()) std::tie(parent, edge) = es[rng.below(es.size())];
   }
   if (parent < 0) {
     // no branch to replace: grow a new edge from the root, if there is room
-    if (static_cast<int>(g.nodes.size()) >= most) {
+    // (a root with locked edges takes no new one)
+    if (static_cast<int>(g.nodes.size()) >= most || (g.nodes[0].lock & (kLockOutEdges | kLockInEdges))) {
       normalize(g, def, rng);
       return g;
     }
@@ -298,11 +330,32 @@ Genome detail::graft_plain(const Genome& trunk, const Genome& branch, int first_
   } else if (!limb_tree) {
     // nodes from first_branch_node on (a catapult's arm is never a branch)
     int first = first_branch_node < nb ? std::max(0, first_branch_node) : 0;
-    src = first + static_cast<int>(rng.below(nb - first));
+    if (!has_locks(branch)) {
+      src = first + static_cast<int>(rng.below(nb - first));
+    } else {
+      // nor is a kept node (genome/locks.h): a skill or mechanism is not a limb
+      std::vector<int> free;
+      for (int j = first; j < nb; ++j)
+        if (!is_kept(branch.nodes[j])) free.push_back(j);
+      if (free.empty()) return trunk;
+      src = free[rng.below(free.size())];
+    }
   }
   // connectivity kept where indices exist (miconi2006 5.1), clamped otherwise
-  splice_subgraph(g, parent, edge, branch, src, std::max(1, budget), SourceFix::Clamp, &rng);
+  if (!has_locks(trunk) && !has_locks(branch)) {
+    splice_subgraph(g, parent, edge, branch, src, std::max(1, budget), SourceFix::Clamp, &rng);
+    normalize(g, def, rng);
+    return g;
+  }
+  // locks are the trunk's (genome/locks.h): the branch comes unlocked; a
+  // child that lost one (a kept node cut off with the replaced branch) is
+  // a copy of the trunk
+  Genome loose = branch;
+  for (NodeGene& node : loose.nodes) unlock(node);
+  for (NeuronGene& nr : loose.global_neurons) nr.locked = false;
+  splice_subgraph(g, parent, edge, loose, src, std::max(1, budget), SourceFix::Clamp, &rng);
   normalize(g, def, rng);
+  if (!locks_kept(trunk, g)) return trunk;
   return g;
 }
 

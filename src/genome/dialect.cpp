@@ -2,6 +2,8 @@
 // pass, whatever its source (a file, random creation, an operator).
 #include "genome/dialect.h"
 
+#include "genome/locks.h"
+
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -238,6 +240,7 @@ class Validator {
         return p;
     if (g_.catapult)
       if (auto p = check_release()) return p;
+    if (auto p = lock_problem(g_)) return p;
     return check_reachable();
   }
 

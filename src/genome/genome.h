@@ -87,6 +87,7 @@ struct NeuronGene {
   std::vector<double> params;
   double bias = 0;
   std::vector<InputGene> inputs;
+  bool locked = false;  ///< no operator changes or removes it (genome/locks.h)
   friend bool operator==(const NeuronGene&, const NeuronGene&) = default;
 };
 
@@ -99,6 +100,7 @@ struct SensorGene {
   SensorType type = SensorType::JointAngle;
   int dof = 0;
   Face face = Face::NegZ;
+  bool locked = false;  ///< no operator changes or removes it (genome/locks.h)
   friend bool operator==(const SensorGene&, const SensorGene&) = default;
 };
 
@@ -109,6 +111,7 @@ struct EffectorGene {
   int dof = 0;
   double bias = 0;
   std::vector<InputGene> inputs;
+  bool locked = false;  ///< no operator changes or removes it (genome/locks.h)
   friend bool operator==(const EffectorGene&, const EffectorGene&) = default;
 };
 
@@ -131,6 +134,18 @@ struct EdgeGene {
   friend bool operator==(const EdgeGene&, const EdgeGene&) = default;
 };
 
+/// What of a node no operator may change (genome/locks.h): bits of
+/// NodeGene::lock. ESP's encapsulated skills, Fast ESP's frozen skeleton and
+/// a catapult's mechanism are all locks.
+enum NodeLock : unsigned {
+  kLockBody = 1,      ///< shape, size, density, recursive limit
+  kLockJoint = 2,     ///< its joint to its parent: type, axes, limits
+  kLockInEdges = 4,   ///< the edges that grow it: none added, removed, retargeted or changed
+  kLockOutEdges = 8,  ///< its own edges: likewise
+  kLockUnits = 16,    ///< its neurons, sensors and effectors: none added, removed or changed
+};
+constexpr unsigned kLockAll = 31;
+
 /// A morphology node: one kind of part.
 struct NodeGene {
   Shape shape = Shape::Box;
@@ -143,6 +158,7 @@ struct NodeGene {
   std::vector<SensorGene> sensors;
   std::vector<EffectorGene> effectors;
   std::vector<EdgeGene> edges;
+  unsigned lock = 0;  ///< NodeLock bits
   friend bool operator==(const NodeGene&, const NodeGene&) = default;
 };
 

@@ -20,6 +20,7 @@
 #include <sstream>
 
 #include "genome/dialect.h"
+#include "genome/locks.h"
 
 namespace bx {
 
@@ -241,7 +242,7 @@ class Reader {
   NodeGene node(const json& j, const std::string& path) const {
     expect_object(j, path,
                   {"shape", "size", "density", "joint", "recursive_limit", "neurons", "sensors",
-                   "effectors", "edges"});
+                   "effectors", "edges", "lock"});
     NodeGene n;
     if (const json* v = find(j, "shape"))
       n.shape = name_of(*v, field_path(path, "shape"), "shape", kShapes);
@@ -254,12 +255,28 @@ class Reader {
     n.sensors = list(j, path, "sensors", &Reader::sensor);
     n.effectors = list(j, path, "effectors", &Reader::effector);
     n.edges = list(j, path, "edges", &Reader::edge);
+    if (const json* v = find(j, "lock")) n.lock = lock(*v, field_path(path, "lock"));
     return n;
   }
 
+  // ["body", "joint", ...]: NodeLock bits by name (genome/locks.h)
+  unsigned lock(const json& v, const std::string& path) const {
+    expect_array(v, path);
+    unsigned bits = 0;
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      std::string ipath = index_path(path, i);
+      auto b = parse_lock(str(v[i], ipath));
+      if (!b) fail(ipath, "unknown lock (expected one of body, joint, in_edges, out_edges, units)", v[i]);
+      if (bits & *b) fail(ipath, "repeated lock", v[i]);
+      bits |= *b;
+    }
+    return bits;
+  }
+
   NeuronGene neuron(const json& j, const std::string& path) const {
-    expect_object(j, path, {"fn", "bias", "params", "inputs"});
+    expect_object(j, path, {"fn", "bias", "params", "inputs", "locked"});
     NeuronGene n;
+    if (const json* v = find(j, "locked")) n.locked = boolean(*v, field_path(path, "locked"));
     std::string fn_path = field_path(path, "fn");
     const json& fn = require(j, path, "fn");
     n.fn = str(fn, fn_path);
@@ -370,8 +387,9 @@ class Reader {
   }
 
   SensorGene sensor(const json& j, const std::string& path) const {
-    expect_object(j, path, {"type", "dof", "face"});
+    expect_object(j, path, {"type", "dof", "face", "locked"});
     SensorGene s;
+    if (const json* v = find(j, "locked")) s.locked = boolean(*v, field_path(path, "locked"));
     s.type =
         name_of(require(j, path, "type"), field_path(path, "type"), "sensor type", kSensorTypes);
     const json* dof = find(j, "dof");
@@ -387,8 +405,9 @@ class Reader {
   }
 
   EffectorGene effector(const json& j, const std::string& path) const {
-    expect_object(j, path, {"dof", "bias", "inputs"});
+    expect_object(j, path, {"dof", "bias", "inputs", "locked"});
     EffectorGene e;
+    if (const json* v = find(j, "locked")) e.locked = boolean(*v, field_path(path, "locked"));
     if (const json* v = find(j, "dof")) e.dof = integer(*v, field_path(path, "dof"));
     if (const json* v = find(j, "bias")) e.bias = number(*v, field_path(path, "bias"));
     e.inputs = list(j, path, "inputs", &Reader::source);
@@ -610,6 +629,7 @@ J neuron_json(const NeuronGene& n, NeuronSetId set) {
   }
   o["params"] = ps;
   o["inputs"] = inputs_json<J>(n.inputs);
+  if (n.locked) o["locked"] = true;
   return o;
 }
 
@@ -639,6 +659,7 @@ J node_json(const NodeGene& n, NeuronSetId set) {
       so["dof"] = s.dof;
     else
       so["face"] = std::string(to_string(s.face));
+    if (s.locked) so["locked"] = true;
     sensors.push_back(so);
   }
   o["sensors"] = sensors;
@@ -648,6 +669,7 @@ J node_json(const NodeGene& n, NeuronSetId set) {
     eo["dof"] = e.dof;
     eo["bias"] = e.bias;
     eo["inputs"] = inputs_json<J>(e.inputs);
+    if (e.locked) eo["locked"] = true;
     effectors.push_back(eo);
   }
   o["effectors"] = effectors;
@@ -671,6 +693,12 @@ J node_json(const NodeGene& n, NeuronSetId set) {
     edges.push_back(eo);
   }
   o["edges"] = edges;
+  if (n.lock != 0) {
+    J lock = J::array();
+    for (NodeLock b : kLockBits)
+      if (n.lock & b) lock.push_back(std::string(lock_name(b)));
+    o["lock"] = lock;
+  }
   return o;
 }
 

@@ -6,6 +6,7 @@
 
 #include "brain/neuron_set.h"
 #include "genome/dialect.h"
+#include "genome/locks.h"
 #include "genome/genome_edit.h"
 #include "genome/operators.h"
 #include "genome/operators_detail.h"
@@ -296,6 +297,7 @@ struct GraphMutator {
   double rate;
   Rng& rng;
   const DialectRules& r;
+  bool locks = false;  ///< the genome has locks (genome/locks.h)
 
   bool hit() { return rng.chance(rate); }
 
@@ -378,25 +380,30 @@ struct GraphMutator {
 
   void node(int i) {
     NodeGene& n = g.nodes[i];
+    // locked genes are skipped (genome/locks.h); an unlocked node draws as ever
+    const unsigned lk = n.lock;
+    const bool units_locked = has_locked_unit(n);
     // body
-    if (r.shapes.size() > 1 && hit()) {
-      std::vector<Shape> others;
-      for (Shape s : r.shapes)
-        if (s != n.shape) others.push_back(s);
-      n.shape = others[rng.below(others.size())];
+    if (!(lk & kLockBody)) {
+      if (r.shapes.size() > 1 && hit()) {
+        std::vector<Shape> others;
+        for (Shape s : r.shapes)
+          if (s != n.shape) others.push_back(s);
+        n.shape = others[rng.below(others.size())];
+      }
+      for (int a = 0; a < 3; ++a)
+        if (hit()) n.size[a] = scale(n.size[a], def.size_min[a], def.size_max[a]);
+      if (def.mutate_density && hit())
+        n.density = scale(n.density, def.density_range.lo, def.density_range.hi);
     }
-    for (int a = 0; a < 3; ++a)
-      if (hit()) n.size[a] = scale(n.size[a], def.size_min[a], def.size_max[a]);
-    if (def.mutate_density && hit())
-      n.density = scale(n.density, def.density_range.lo, def.density_range.hi);
-    // joint
-    if (r.joints.size() > 1 && hit()) {
-      std::vector<JointType> others;
-      for (JointType t : r.joints)
-        if (t != n.joint.type) others.push_back(t);
-      change_joint(i, others[rng.below(others.size())]);
-    }
-    {
+    // joint (a new type re-draws the sensors and effectors on it: not under locked units)
+    if (!(lk & kLockJoint)) {
+      if (r.joints.size() > 1 && !units_locked && hit()) {
+        std::vector<JointType> others;
+        for (JointType t : r.joints)
+          if (t != n.joint.type) others.push_back(t);
+        change_joint(i, others[rng.below(others.size())]);
+      }
       JointGene& j = g.nodes[i].joint;
       bool two = j.type == JointType::Universal || j.type == JointType::Spherical;
       if (hit()) {
@@ -413,15 +420,17 @@ struct GraphMutator {
         if (hit()) j.limits[k].hi = perturb(j.limits[k].hi, 0, m);
       }
     }
-    if (hit())
+    if (!(lk & kLockBody) && hit())
       g.nodes[i].recursive_limit =
           std::clamp(g.nodes[i].recursive_limit + (rng.chance(0.5) ? 1 : -1), 1,
                      std::max(1, def.recursive_limit_max));
     // brain
-    for (NeuronGene& nr : g.nodes[i].neurons) neuron(i, nr);
+    const bool all_units = lk & kLockUnits;
+    for (NeuronGene& nr : g.nodes[i].neurons)
+      if (!all_units && !nr.locked) neuron(i, nr);
     int dofs = joint_dofs(g.nodes[i].joint.type);
     for (SensorGene& s : g.nodes[i].sensors) {
-      if (!hit()) continue;
+      if (all_units || s.locked || !hit()) continue;
       if (s.type == SensorType::JointAngle) {
         if (dofs > 1) s.dof = static_cast<int>(rng.below(dofs));
       } else {
@@ -430,12 +439,14 @@ struct GraphMutator {
     }
     Range eb = effector_bias_bounds(def, g.dialect);
     for (EffectorGene& ef : g.nodes[i].effectors) {
+      if (all_units || ef.locked) continue;
       if (dofs > 1 && hit()) ef.dof = static_cast<int>(rng.below(dofs));
       if (hit()) ef.bias = perturb(ef.bias, eb.lo, eb.hi);
       inputs(i, ef.inputs);
     }
-    // edges
+    // edges (not a locked node's own, nor those into a node whose in-edges are locked)
     for (EdgeGene& e : g.nodes[i].edges) {
+      if ((lk & kLockOutEdges) || (g.nodes[e.to].lock & kLockInEdges)) continue;
       if (hit()) e.face = static_cast<Face>(rng.below(6));
       if (hit()) e.u = perturb(e.u, -1, 1);
       if (hit()) e.v = perturb(e.v, -1, 1);
@@ -644,24 +655,36 @@ struct GraphMutator {
     }
   }
 
+  // a structural mutation; on a genome with locks, undone if it broke one
+  // (it drew what it drew: the stream goes on as if it had stood)
+  template <class Op>
+  void structural(double chance, Op op) {
+    if (!rng.chance(chance)) return;
+    if (!locks) return op();
+    Genome saved = g;
+    op();
+    if (!locks_kept(saved, g)) g = std::move(saved);
+  }
+
   void run() {
     // every numeric field with probability `rate`
     for (int i = 0; i < n_nodes(); ++i) node(i);
-    for (NeuronGene& nr : g.global_neurons) neuron(-1, nr);
+    for (NeuronGene& nr : g.global_neurons)
+      if (!nr.locked) neuron(-1, nr);
     // structure, in a fixed order
     const StructuralRates& s = def.structure;
-    if (rng.chance(s.add_node)) add_node();
-    if (rng.chance(s.remove_node)) remove_node();
-    if (rng.chance(s.add_edge)) add_edge();
-    if (rng.chance(s.remove_edge)) remove_edge();
-    if (rng.chance(s.retarget_edge)) retarget_edge();
-    if (rng.chance(s.add_neuron)) add_neuron();
-    if (rng.chance(s.remove_neuron)) remove_neuron();
-    if (rng.chance(s.add_sensor)) add_sensor();
-    if (rng.chance(s.remove_sensor)) remove_sensor();
-    if (rng.chance(s.add_effector)) add_effector();
-    if (rng.chance(s.remove_effector)) remove_effector();
-    if (rng.chance(s.change_fn)) change_fn();
+    structural(s.add_node, [&] { add_node(); });
+    structural(s.remove_node, [&] { remove_node(); });
+    structural(s.add_edge, [&] { add_edge(); });
+    structural(s.remove_edge, [&] { remove_edge(); });
+    structural(s.retarget_edge, [&] { retarget_edge(); });
+    structural(s.add_neuron, [&] { add_neuron(); });
+    structural(s.remove_neuron, [&] { remove_neuron(); });
+    structural(s.add_sensor, [&] { add_sensor(); });
+    structural(s.remove_sensor, [&] { remove_sensor(); });
+    structural(s.add_effector, [&] { add_effector(); });
+    structural(s.remove_effector, [&] { remove_effector(); });
+    structural(s.change_fn, [&] { change_fn(); });
   }
 };
 
@@ -678,9 +701,12 @@ void detail::mutate_plain(Genome& g, const OperatorDef& def, double rate, Rng& r
   if (dialect_rules(g.dialect).operators == OperatorScheme::LimbTree)
     mutate_miconi(g, def, rate, rng);
   else
-    GraphMutator{g, def, rate, rng, dialect_rules(g.dialect)}.run();
+    GraphMutator{g, def, rate, rng, dialect_rules(g.dialect), has_locks(before)}.run();
   // an unchanged genome is left exactly as it was
   if (!(g == before)) normalize(g, def, rng);
+  // the repairs keep valid locked genes as they are; should one not, the
+  // mutation is undone rather than a lock broken
+  if (has_locks(before) && !locks_kept(before, g)) g = std::move(before);
 }
 
 }  // namespace bx

@@ -325,7 +325,7 @@ TEST(GenomeJsonErrors, BadEnum) {
 TEST(GenomeJsonErrors, UnknownField) {
   EXPECT_EQ(err(sims_nodes(R"([{"size": [1, 1, 1], "sise": 2}])")),
             "t.json: nodes[0].sise: unknown field (expected one of shape, size, density, joint, "
-            "recursive_limit, neurons, sensors, effectors, edges), got 2");
+            "recursive_limit, neurons, sensors, effectors, edges, lock), got 2");
   EXPECT_EQ(err(edit(kSims, R"("face": "+x")", R"("face": "+x", "scael": 2)")),
             "t.json: nodes[0].edges[0].scael: unknown field (expected one of to, face, at, "
             "rotation, scale, "

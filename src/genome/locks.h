@@ -1,0 +1,59 @@
+// Locks on the graph genome (issue 14 item 5): what of a genome no operator
+// may change. A node's lock (NodeGene::lock, NodeLock bits) fixes its body,
+// its joint, the edges into or out of it, or its units wholesale; a neuron,
+// sensor or effector can be locked alone (its `locked` flag). The operators
+// honour locks (mutation skips locked genes and undoes a structural change
+// that broke one; crossover and grafting keep the first parent's), and
+// locks_kept() is the check they are held to.
+//
+// Rules a genome's locks follow (lock_problem, part of validate()):
+// - locked units come first in their list (new ones are appended after them,
+//   so removing an unlocked one never renumbers a locked one);
+// - a locked unit reads only locked units: neurons and sensors that are
+//   locked themselves or sit in a units-locked node, through a parent only
+//   when its node's in-edges are locked, through a child only when its
+//   node's out-edges are;
+// - miconi2006's limb-tree operators do not honour locks: its genomes have none.
+//
+// Nodes with any lock, or holding a locked unit, are "kept": never removed,
+// matched between a parent and its child in order.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "core/result.h"
+#include "genome/genome.h"
+
+namespace bx {
+
+/// Whether any node or unit of `g` is locked.
+bool has_locks(const Genome& g);
+/// Whether a node is kept: locked, or holding a locked unit.
+bool is_kept(const NodeGene& n);
+/// Whether a node has a unit (neuron, sensor, effector) that is locked alone
+/// or by the node's units lock.
+bool has_locked_unit(const NodeGene& n);
+/// The index of the last kept node, or -1.
+int last_kept_node(const Genome& g);
+/// Clears a node's lock and its units' (a node copied into a genome whose
+/// locks it is not part of).
+void unlock(NodeGene& n);
+
+/// Whether `child` keeps every lock of `parent`: the same kept nodes in the
+/// same order, each with the same lock, and every locked gene unchanged. The
+/// error says which and what changed.
+Status locks_kept(const Genome& parent, const Genome& child);
+
+/// What is wrong with `g`'s locks (the rules above), as "path: what", or
+/// nothing. validate() calls it.
+std::optional<std::string> lock_problem(const Genome& g);
+
+/// The JSON names of the lock bits, in bit order: body, joint, in_edges,
+/// out_edges, units.
+std::string_view lock_name(NodeLock bit);
+std::optional<NodeLock> parse_lock(std::string_view name);
+inline constexpr NodeLock kLockBits[] = {kLockBody, kLockJoint, kLockInEdges, kLockOutEdges, kLockUnits};
+
+}  // namespace bx
