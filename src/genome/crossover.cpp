@@ -8,7 +8,6 @@
 #include "genome/genome_edit.h"
 #include "genome/locks.h"
 #include "genome/operators.h"
-#include "genome/operators_detail.h"
 
 namespace bx {
 
@@ -184,7 +183,7 @@ Genome crossover_graph(const Genome& a, const Genome& b, const Splice& s, const 
   for (int p = 0; p < s.left; ++p) g.nodes.push_back(a.nodes[p]);
   for (int p = s.cut; p < s.nb; ++p) g.nodes.push_back(b.nodes[p]);
   // global neurons come with the root's parent (our choice), and so does a
-  // detached catapult's release (operators_detail.h), read from the root
+  // catapult's mechanism, read from the root
   g.global_neurons = a.global_neurons;
   g.catapult = a.catapult;
   // edges keep their positions; one pointing at a position the child lacks is
@@ -221,12 +220,19 @@ Genome crossover_graph(const Genome& a, const Genome& b, const Splice& s, const 
   return g;
 }
 
-}  // namespace
-
 // ---------------------------------------------------------------- crossover
 
-Genome detail::crossover_at_plain(const Genome& a, const Genome& b, int cut,
-                                  const OperatorDef& def, Rng& rng) {
+// a cut strictly inside the longer row, so that each parent gives
+// something, and after a's kept nodes (genome/locks.h), which it keeps
+int crossover_cut(const Genome& a, const Genome& b, Rng& rng) {
+  int m = static_cast<int>(std::max(a.nodes.size(), b.nodes.size()));
+  int lo = std::max(1, last_kept_node(a) + 1);
+  return m <= lo ? lo : lo + static_cast<int>(rng.below(m - lo));
+}
+
+}  // namespace
+
+Genome crossover_at(const Genome& a, const Genome& b, int cut, const OperatorDef& def, Rng& rng) {
   assert(a.dialect == b.dialect && !a.nodes.empty() && !b.nodes.empty());
   // a cut never falls among a's kept nodes (genome/locks.h)
   if (has_locks(a)) cut = std::max(cut, last_kept_node(a) + 1);
@@ -235,23 +241,8 @@ Genome detail::crossover_at_plain(const Genome& a, const Genome& b, int cut,
   return crossover_graph(a, b, s, def, rng);
 }
 
-int detail::crossover_cut(const Genome& a, const Genome& b, Rng& rng) {
-  int m = static_cast<int>(std::max(a.nodes.size(), b.nodes.size()));
-  // a cut strictly inside the longer row, so that each parent gives
-  // something, and after a's kept nodes (genome/locks.h), which it keeps
-  int lo = std::max(1, last_kept_node(a) + 1);
-  return m <= lo ? lo : lo + static_cast<int>(rng.below(m - lo));
-}
-
-Genome crossover_at(const Genome& a, const Genome& b, int cut, const OperatorDef& def, Rng& rng) {
-  if (is_catapult(a) || is_catapult(b)) return detail::crossover_catapult(a, b, cut, def, rng);
-  return detail::crossover_at_plain(a, b, cut, def, rng);
-}
-
 Genome crossover(const Genome& a, const Genome& b, const OperatorDef& def, Rng& rng) {
-  // catapults draw the cut on their bodies
-  if (is_catapult(a) || is_catapult(b)) return detail::crossover_catapult(a, b, -1, def, rng);
-  return detail::crossover_at_plain(a, b, detail::crossover_cut(a, b, rng), def, rng);
+  return crossover_at(a, b, crossover_cut(a, b, rng), def, rng);
 }
 
 Genome crossover(const Genome& a, const Genome& b, Rng& rng) {
@@ -261,13 +252,6 @@ Genome crossover(const Genome& a, const Genome& b, Rng& rng) {
 // ---------------------------------------------------------------- grafting
 
 Genome graft(const Genome& trunk, const Genome& branch, const OperatorDef& def, Rng& rng) {
-  if (is_catapult(trunk) || is_catapult(branch))
-    return detail::graft_catapult(trunk, branch, def, rng);
-  return detail::graft_plain(trunk, branch, 0, def, rng);
-}
-
-Genome detail::graft_plain(const Genome& trunk, const Genome& branch, int first_branch_node,
-                           const OperatorDef& def, Rng& rng) {
   assert(trunk.dialect == branch.dialect && !trunk.nodes.empty() && !branch.nodes.empty());
   Genome g = trunk;
   int most = max_genes(g.dialect, def);
@@ -328,14 +312,13 @@ Genome detail::graft_plain(const Genome& trunk, const Genome& branch, int first_
     const auto& pool = fits.empty() ? any : fits;
     src = pool[rng.below(pool.size())];
   } else if (!limb_tree) {
-    // nodes from first_branch_node on (a catapult's arm is never a branch)
-    int first = first_branch_node < nb ? std::max(0, first_branch_node) : 0;
     if (!has_locks(branch)) {
-      src = first + static_cast<int>(rng.below(nb - first));
+      src = static_cast<int>(rng.below(nb));
     } else {
-      // nor is a kept node (genome/locks.h): a skill or mechanism is not a limb
+      // never a kept node (genome/locks.h): a skill or a mechanism (a
+      // catapult's arm or projectile, Fig. 5) is not a limb
       std::vector<int> free;
-      for (int j = first; j < nb; ++j)
+      for (int j = 0; j < nb; ++j)
         if (!is_kept(branch.nodes[j])) free.push_back(j);
       if (free.empty()) return trunk;
       src = free[rng.below(free.size())];

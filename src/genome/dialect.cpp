@@ -2,8 +2,6 @@
 // pass, whatever its source (a file, random creation, an operator).
 #include "genome/dialect.h"
 
-#include "genome/locks.h"
-
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -11,6 +9,8 @@
 #include <vector>
 
 #include "genome/genome_json.h"
+#include "genome/locks.h"
+#include "genome/operators.h"
 
 namespace bx {
 
@@ -341,6 +341,22 @@ class Validator {
     if (held.empty())
       return problem("catapult.projectile",
                      "no edge of the arm (node 0) holds the projectile node", p);
+    // the mechanism is locked (genome/locks.h), so that no operator grows a
+    // second arm or changes the projectile
+    auto names = [](unsigned bits) {
+      json a = json::array();
+      for (NodeLock b : kLockBits)
+        if (bits & b) a.push_back(std::string(lock_name(b)));
+      return a;
+    };
+    if (!(g_.nodes[0].lock & kLockInEdges))
+      return problem("nodes[0].lock", "a catapult's arm has its in_edges locked (one arm)", names(g_.nodes[0].lock));
+    const unsigned need = catapult_projectile_lock(true);
+    if ((pn.lock & need) != need)
+      return problem(path + ".lock",
+                     "a catapult's projectile has its joint, in_edges, out_edges and units locked "
+                     "(and its body, unless its size may mutate)",
+                     names(pn.lock));
     int delay = c.release.delay_steps;
     if (delay < kMinReleaseDelaySteps || delay > kMaxReleaseDelaySteps)
       return problem("catapult.release.delay_steps",

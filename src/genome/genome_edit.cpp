@@ -367,6 +367,12 @@ void remove_edge(Genome& g, int node, int k, SourceFix fix, Rng* rng) {
   repair_sources(g, fix, rng);
 }
 
+void remove_edges_to(Genome& g, int n, SourceFix fix, Rng* rng) {
+  for (int i = 0; i < n_nodes(g); ++i)
+    for (int k = static_cast<int>(g.nodes[i].edges.size()) - 1; k >= 0; --k)
+      if (g.nodes[i].edges[k].to == n) remove_edge(g, i, k, fix, rng);
+}
+
 void move_edge(Genome& g, int from, int k, int to, SourceFix fix, Rng* rng) {
   assert(from >= 0 && from < n_nodes(g) && to >= 0 && to < n_nodes(g) && k >= 0 &&
          k < static_cast<int>(g.nodes[from].edges.size()));

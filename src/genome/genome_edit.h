@@ -103,6 +103,10 @@ void remove_nodes(Genome& g, const std::vector<int>& nodes, SourceFix fix = Sour
 /// Removes one node (never the root), as remove_nodes.
 void remove_node(Genome& g, int n, SourceFix fix = SourceFix::Remove, Rng* rng = nullptr);
 
+/// Removes every edge into node `n` (as remove_edge; e.g. a catapult's arm,
+/// which exists once).
+void remove_edges_to(Genome& g, int n, SourceFix fix = SourceFix::Remove, Rng* rng = nullptr);
+
 /// Removes every node not reachable from the root; returns how many.
 int remove_unreachable(Genome& g, SourceFix fix = SourceFix::Remove, Rng* rng = nullptr);
 

@@ -21,6 +21,7 @@
 
 #include "genome/dialect.h"
 #include "genome/locks.h"
+#include "genome/operators.h"
 
 namespace bx {
 
@@ -479,6 +480,12 @@ Genome parse_genome(const json& j) {
       g.global_neurons.push_back(r.neuron((*v)[i], index_path("global_neurons", i)));
   }
   if (const json* v = find(j, "catapult")) g.catapult = r.catapult(*v, "catapult");
+  // a catapult written before locks existed: its mechanism gets the locks
+  // random_catapult() gives it (operators.h), the projectile's size fixed
+  if (is_catapult(g) && g.nodes[0].lock == 0 && g.nodes[g.catapult->projectile].lock == 0) {
+    g.nodes[0].lock = kLockInEdges;
+    g.nodes[g.catapult->projectile].lock = catapult_projectile_lock(false);
+  }
   return g;
 }
 

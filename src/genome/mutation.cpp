@@ -9,7 +9,6 @@
 #include "genome/locks.h"
 #include "genome/genome_edit.h"
 #include "genome/operators.h"
-#include "genome/operators_detail.h"
 
 namespace bx {
 
@@ -655,6 +654,21 @@ struct GraphMutator {
     }
   }
 
+  // A catapult's release (chaumont2007 4.1: the mechanism is fixed "except
+  // its connection to the neural network"): its inputs mutate as a neuron's,
+  // read as from the arm; then with `rate` one random input is added and
+  // with `rate` a random one removed (our choice: a neuron's inputs are fixed
+  // by its arity, the release's are not). Its delay never changes.
+  void release() {
+    std::vector<InputGene>& ins = g.catapult->release.inputs;
+    inputs(0, ins);
+    if (hit()) {
+      InputGene in;
+      if (random_input(g, 0, def, rng, in)) ins.push_back(in);
+    }
+    if (!ins.empty() && hit()) ins.erase(ins.begin() + static_cast<std::ptrdiff_t>(rng.below(ins.size())));
+  }
+
   // a structural mutation; on a genome with locks, undone if it broke one
   // (it drew what it drew: the stream goes on as if it had stood)
   template <class Op>
@@ -671,6 +685,7 @@ struct GraphMutator {
     for (int i = 0; i < n_nodes(); ++i) node(i);
     for (NeuronGene& nr : g.global_neurons)
       if (!nr.locked) neuron(-1, nr);
+    if (is_catapult(g)) release();
     // structure, in a fixed order
     const StructuralRates& s = def.structure;
     structural(s.add_node, [&] { add_node(); });
@@ -691,11 +706,6 @@ struct GraphMutator {
 }  // namespace
 
 void mutate(Genome& g, const OperatorDef& def, double rate, Rng& rng) {
-  if (is_catapult(g)) return detail::mutate_catapult(g, def, rate, rng);
-  detail::mutate_plain(g, def, rate, rng);
-}
-
-void detail::mutate_plain(Genome& g, const OperatorDef& def, double rate, Rng& rng) {
   if (g.nodes.empty()) return;
   Genome before = g;
   if (dialect_rules(g.dialect).operators == OperatorScheme::LimbTree)

@@ -70,9 +70,9 @@ struct StructuralRates {
 };
 
 /// Catapult genomes (chaumont2007 4.1). With `enabled`, random_genome()
-/// makes catapults; mutate(), crossover() and graft() keep a catapult a
-/// catapult (one arm, one projectile, the mechanism unchanged but for its
-/// input wiring) whatever `enabled` says.
+/// makes catapults; mutate(), crossover() and graft() keep a catapult (the
+/// first parent) a catapult, one arm and one projectile, the mechanism
+/// unchanged but for its input wiring, whatever `enabled` says: its locks.
 struct CatapultDef {
   bool enabled = false;
   /// The projectile of a random catapult: a box of this size and density.
@@ -81,6 +81,7 @@ struct CatapultDef {
   double projectile_density = 1000;
   /// Whether mutation changes the projectile's size (chaumont2007 4.2: "in
   /// some experiments"); within size_min..size_max of the body's parts.
+  /// Random catapults' projectiles get no body lock then.
   bool mutate_projectile = false;
   /// The mechanism's delay (chaumont2007 4.1: 30 steps = 0.5 s at 60 Hz).
   int release_delay_steps = 30;
@@ -323,29 +324,34 @@ std::vector<InputGene> random_inputs(const Genome& g, int owner, int count, cons
 /// joint-angle sensor and one actuator (the root none), hinges on y or z,
 /// angles on the lattice; graph dialects: allowed shapes, joints, sensors;
 /// dofs, arities and parameters within range; canonical unused fields;
-/// every source existing (reassigned at random otherwise). A catapult keeps
-/// its projectile (moved to the last node, its edge the arm's last) and its
-/// mechanism; edges to the arm are removed.
+/// every source existing (reassigned at random otherwise). A catapult's
+/// projectile stays a box grown once on its fixed joint.
 void normalize(Genome& g, const OperatorDef& def, Rng& rng);
 
 // ---------------------------------------------------------------- catapults
-// chaumont2007 section 4 (docs/operators.md, "Catapults"). mutate(),
-// crossover(), graft() and normalize() dispatch to catapult versions when a
-// genome given is a catapult; the others never see the projectile.
+// chaumont2007 section 4 (docs/operators.md, "Catapults"). A catapult's arm
+// and projectile are locked (genome/locks.h), so the ordinary operators keep
+// it one arm and one projectile; mutation also rewires its release.
 
 /// Whether `g` is a catapult: Genome::catapult set, naming a node other
 /// than the root as its projectile.
 bool is_catapult(const Genome& g);
 
-/// A random catapult (chaumont2007 4.1, Fig. 3), in canonical form: a random
-/// chaumont2007 genome of at most max_genes - 1 genes whose root is the arm
-/// (edges back to the root removed), its release fed by a number of random
-/// sources of the arm in def.catapult.release_inputs_at_creation and delayed
-/// def.catapult.release_delay_steps; then, as the last node, the projectile
-/// (a box of def.catapult.projectile_size and projectile_density on a fixed
-/// joint), held by the arm's last edge, placed as random_edge() places a
+/// The lock of a catapult's projectile: its joint, units and edges, and its
+/// body unless its size may mutate (chaumont2007 4.2, "in some
+/// experiments": CatapultDef::mutate_projectile). The arm's lock is
+/// kLockInEdges (no second arm).
+unsigned catapult_projectile_lock(bool mutable_size);
+
+/// A random catapult (chaumont2007 4.1, Fig. 3): a random chaumont2007
+/// genome of at most max_genes - 1 genes whose root is the arm (edges back
+/// to the root removed), its release fed by a number of random sources of
+/// the arm in def.catapult.release_inputs_at_creation and delayed
+/// def.catapult.release_delay_steps; the projectile (a box of
+/// def.catapult.projectile_size and projectile_density on a fixed joint) is
+/// node 1, held by the arm's last edge, placed as random_edge() places a
 /// limb (clear of the arm's other children where it can; scale 1, no
-/// reflection, not terminal-only).
+/// reflection, not terminal-only). The arm and projectile are locked.
 Genome random_catapult(const OperatorDef& def, Rng& rng);
 
 }  // namespace bx

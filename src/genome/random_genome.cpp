@@ -594,11 +594,6 @@ void wire_node(Genome& g, int n, const OperatorDef& def, Rng& rng) {
 // ---------------------------------------------------------------- normalize
 
 void normalize(Genome& g, const OperatorDef& def, Rng& rng) {
-  if (is_catapult(g)) return detail::normalize_catapult(g, def, rng);
-  detail::normalize_plain(g, def, rng);
-}
-
-void detail::normalize_plain(Genome& g, const OperatorDef& def, Rng& rng) {
   const DialectRules& r = dialect_rules(g.dialect);
   remove_unreachable(g, SourceFix::Reassign, &rng);
   auto allowed_sensor = [&r](SensorType t) {
@@ -637,8 +632,18 @@ void detail::normalize_plain(Genome& g, const OperatorDef& def, Rng& rng) {
     while (!g.global_neurons.empty())
       remove_global_neuron(g, static_cast<int>(g.global_neurons.size()) - 1, SourceFix::Reassign,
                            &rng);
+  // a catapult (validate()'s check_catapult): one arm, no edge leads to it;
+  // its projectile a box grown once, held by a fixed joint, whatever the
+  // dialect's joints
+  const int projectile = is_catapult(g) ? g.catapult->projectile : -1;
+  if (projectile > 0) remove_edges_to(g, 0, SourceFix::Reassign, &rng);
   for (int i = 0; i < static_cast<int>(g.nodes.size()); ++i) {
     NodeGene& n = g.nodes[i];
+    if (i == projectile) {
+      n.shape = Shape::Box;
+      n.recursive_limit = 1;
+      continue;
+    }
     // body
     if (std::find(r.shapes.begin(), r.shapes.end(), n.shape) == r.shapes.end())
       n.shape = r.shapes[0];

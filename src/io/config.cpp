@@ -116,7 +116,7 @@ const std::vector<Field>& fields() {
       {"catapult", "enabled", Field::Bool, 0, 0, {}, [](RunConfig& c) -> void* { return &c.operators.catapult.enabled; }, "random genomes are catapults (chaumont2007 section 4)"},
       {"catapult", "projectile_size", Field::Vec, 1e-3, 100, {}, [](RunConfig& c) -> void* { return &c.operators.catapult.projectile_size; }, "the projectile of a random catapult: box extents [x, y, z] (m)"},
       {"catapult", "projectile_density", Field::Real, 1, 1e6, {}, [](RunConfig& c) -> void* { return &c.operators.catapult.projectile_density; }, "... and density (kg/m^3)"},
-      {"catapult", "mutate_projectile", Field::Bool, 0, 0, {}, [](RunConfig& c) -> void* { return &c.operators.catapult.mutate_projectile; }, "mutation changes the projectile's size (4.2: \"in some experiments\")"},
+      {"catapult", "mutate_projectile", Field::Bool, 0, 0, {}, [](RunConfig& c) -> void* { return &c.operators.catapult.mutate_projectile; }, "random catapults' projectiles come without a body lock, so mutation changes their size (4.2: \"in some experiments\")"},
       {"catapult", "release_delay_steps", Field::Int, 2, 1001, {}, [](RunConfig& c) -> void* { return &c.operators.catapult.release_delay_steps; }, "brain steps (at brain.rate_hz) until the mechanism releases at the latest (4.1: 30 = 0.5 s at 60 Hz)"},
       {"check", "other_seeds", Field::Int, 0, 1000, {}, [](RunConfig& c) -> void* { return &c.check.other_seeds; }, "check: physics seeds tried besides the scored one"},
       {"check", "min_other_seeds", Field::Real, 0, 1e6, {}, [](RunConfig& c) -> void* { return &c.check.min_other_seeds; }, "check: their median fitness must keep this share of the scored one"},

@@ -1,7 +1,8 @@
 // Catapults (chaumont2007 section 4): the "catapult" field of the file form,
 // every rule validate() adds for it, random catapults, and mutation,
-// crossover and grafting keeping one arm and one projectile, with the first
-// parent's projectile and mechanism and release inputs that stay valid.
+// crossover and grafting keeping one arm and one projectile through the
+// mechanism's locks (genome/locks.h), with the first parent's projectile and
+// mechanism and release inputs that stay valid.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -11,6 +12,7 @@
 #include "genome/dialect.h"
 #include "genome/genome_edit.h"
 #include "genome/genome_json.h"
+#include "genome/locks.h"
 #include "genome/operators.h"
 
 namespace bx {
@@ -40,8 +42,8 @@ constexpr const char* kCatapult = R"({
     {"from": "global", "neuron": 0, "weight": -0.25}]}}
 })";
 
-// The same creature with the projectile as node 1 on the arm's edge 0
-// (valid, but not the canonical form the operators write).
+// The same creature with the projectile as node 1 on the arm's edge 0 (as
+// random catapults have it, but on the arm's first edge).
 constexpr const char* kProjectileFirst = R"({
   "format": "bestiary-genome", "version": 1, "dialect": "chaumont2007",
   "nodes": [
@@ -121,10 +123,18 @@ std::string with_catapult(const std::string& field) {
   return ::testing::AssertionSuccess();
 }
 
-// the operators' canonical form: the projectile last, on the arm's last edge
+// a random catapult's form: the projectile is node 1, on the arm's last edge
 bool canonical(const Genome& g) {
-  int p = g.catapult->projectile;
-  return p + 1 == static_cast<int>(g.nodes.size()) && g.nodes[0].edges.back().to == p;
+  return g.catapult->projectile == 1 && g.nodes[0].edges.back().to == 1;
+}
+
+// the arm's edge that holds the projectile
+const EdgeGene& projectile_edge(const Genome& g) {
+  for (const EdgeGene& e : g.nodes[0].edges)
+    if (e.to == g.catapult->projectile) return e;
+  static const EdgeGene none{};
+  ADD_FAILURE() << "no projectile edge";
+  return none;
 }
 
 const NodeGene& projectile_of(const Genome& g) { return g.nodes[g.catapult->projectile]; }
@@ -246,6 +256,32 @@ class CatapultRules : public ::testing::Test {
 TEST_F(CatapultRules, TheExamplesAreValid) {
   EXPECT_TRUE(validate(g).ok());
   EXPECT_TRUE(validate(parse(kProjectileFirst)).ok());
+}
+
+// A file without locks on its mechanism (written before locks existed) is
+// read with the locks random catapults get; one that gives locks keeps them.
+TEST_F(CatapultRules, AFileWithoutLocksGetsTheMechanismsLocks) {
+  EXPECT_EQ(g.nodes[0].lock, kLockInEdges);
+  EXPECT_EQ(g.nodes[2].lock, catapult_projectile_lock(false));
+  EXPECT_EQ(g.nodes[1].lock, 0u);
+  std::string text = edit(kCatapult, R"({"size": [0.15, 0.15, 0.15], "joint": {"type": "fixed"}})",
+                          R"({"size": [0.15, 0.15, 0.15], "joint": {"type": "fixed"},
+                              "lock": ["joint", "in_edges", "out_edges", "units"]})");
+  // a file that gives some locks gives them all
+  EXPECT_EQ(parse_error(text), "t.json: nodes[0].lock: a catapult's arm has its in_edges locked (one arm), got []");
+  Genome h = parse(edit(text, R"("size": [0.8, 0.1, 0.05],)", R"("size": [0.8, 0.1, 0.05], "lock": ["in_edges"],)"));
+  EXPECT_EQ(h.nodes[2].lock, catapult_projectile_lock(true));
+  EXPECT_EQ(h.nodes[0].lock, 0u + kLockInEdges);
+}
+
+TEST_F(CatapultRules, TheMechanismIsLocked) {
+  g.nodes[0].lock = 0;
+  EXPECT_EQ(error_of(g), "nodes[0].lock: a catapult's arm has its in_edges locked (one arm), got []");
+  g.nodes[0].lock = kLockInEdges;
+  g.nodes[2].lock = kLockJoint | kLockUnits | kLockInEdges;
+  EXPECT_EQ(error_of(g),
+            "nodes[2].lock: a catapult's projectile has its joint, in_edges, out_edges and units locked "
+            "(and its body, unless its size may mutate), got [\"joint\", \"in_edges\", \"units\"]");
 }
 
 TEST_F(CatapultRules, OnlyChaumont2007) {
@@ -511,6 +547,8 @@ TEST(CatapultRandom, ThousandAreValidCatapults) {
     Genome g = random_genome(Dialect::Chaumont2007, def, rng);
     ASSERT_TRUE(one_arm_one_projectile(g)) << "catapult " << i;
     EXPECT_TRUE(canonical(g));
+    EXPECT_EQ(g.nodes[0].lock, kLockInEdges);
+    EXPECT_EQ(projectile_of(g).lock, kLockBody | kLockJoint | kLockInEdges | kLockOutEdges | kLockUnits);
     const NodeGene& p = projectile_of(g);
     EXPECT_EQ(p.size, def.catapult.projectile_size);
     EXPECT_EQ(p.density, def.catapult.projectile_density);
@@ -612,29 +650,27 @@ TEST_P(CatapultMutation, ThousandChildrenKeepArmProjectileAndDelay) {
     EXPECT_LE(g.nodes.size(), 20u);
     EXPECT_EQ(projectile_of(g), projectile_of(parent));
     EXPECT_EQ(g.catapult->release.delay_steps, 17);
-    const EdgeGene& e = g.nodes[0].edges.back();
-    EXPECT_EQ(e.scale, 1.0);
-    EXPECT_TRUE(e.reflect.empty());
-    EXPECT_FALSE(e.terminal_only);
+    EXPECT_TRUE(locks_kept(parent, g).ok()) << locks_kept(parent, g).error();
+    EdgeGene e = projectile_edge(g), pe = projectile_edge(parent);
+    e.to = pe.to;
+    attachment += !(e == pe);
     wiring += g.catapult->release.inputs != parent.catapult->release.inputs;
     count_changed += g.catapult->release.inputs.size() != parent.catapult->release.inputs.size();
-    EdgeGene pe = parent.nodes[0].edges.back();
-    pe.to = e.to;
-    attachment += !(e == pe);
     body += g.nodes.size() != parent.nodes.size() || !(g.nodes[0].size == parent.nodes[0].size);
   }
-  // the mechanism's wiring and the projectile's attachment do mutate
+  // the mechanism's wiring and the body mutate; the projectile's attachment
+  // is the mechanism's (its in-edges locked)
   EXPECT_GT(wiring, 50);
   EXPECT_GT(count_changed, 20);
-  EXPECT_GT(attachment, 100);
+  EXPECT_EQ(attachment, 0);
   EXPECT_GT(body, 100);
 }
 
 TEST_P(CatapultMutation, ProjectileSizeMutatesOnlyWhenAllowed) {
   double rate = GetParam();
   OperatorDef def = catapult_def();
-  def.catapult.mutate_projectile = true;
-  std::vector<Genome> parents = pool(100, 8);
+  def.catapult.mutate_projectile = true;  // random catapults' projectiles without a body lock
+  std::vector<Genome> parents = pool(100, 8, def);
   Rng rng = rng_for(9 + static_cast<std::uint64_t>(rate * 100));
   int changed = 0;
   for (int i = 0; i < kMany; ++i) {
@@ -723,25 +759,26 @@ TEST(CatapultMutationChains, ReleaseFollowsTheNeuronItReads) {
 }
 
 TEST(CatapultMutationChains, ReleaseFollowsTheChildItReads) {
-  // the release reads the body part through the arm's edge 1; the operators
-  // move the projectile's edge (edge 0) to the end
+  // the release reads the body part through the arm's edge 1; new edges of
+  // the arm come after it, and the projectile's edge 0 stays
   Genome g0 = parse(kProjectileFirst);
   OperatorDef def = catapult_def();
   def.structure = {};
-  def.structure.add_neuron = 1;  // something changes: the catapult is rebuilt
+  def.structure.add_neuron = 1;
+  def.structure.add_edge = 1;
   for (std::uint64_t seed = 0; seed < 50; ++seed) {
     Rng rng = rng_for(2000 + seed);
     Genome g = g0;
     mutate(g, def, 0, rng);
     ASSERT_TRUE(one_arm_one_projectile(g));
-    ASSERT_TRUE(canonical(g));
     ASSERT_EQ(g.catapult->release.inputs.size(), 1u);
     const InputGene& in = g.catapult->release.inputs[0];
     EXPECT_EQ(in.place, SourcePlace::Child);
-    EXPECT_EQ(in.edge, 0);
+    EXPECT_EQ(in.edge, 1);
     EXPECT_EQ(in.weight, 0.75);
     EXPECT_EQ(g.nodes[g.nodes[0].edges[in.edge].to].size, g0.nodes[2].size);
     EXPECT_EQ(projectile_of(g), g0.nodes[1]);
+    EXPECT_EQ(g.nodes[0].edges[0], g0.nodes[0].edges[0]);
   }
 }
 
@@ -776,9 +813,9 @@ TEST(CatapultCrossover, ThousandChildrenTakeTheFirstParentsMechanism) {
     const Genome& b = ps.second[rng.below(ps.second.size())];
     Genome c = i % 2 ? crossover(a, b, def, rng) : crossover(a, b, rng);
     ASSERT_TRUE(one_arm_one_projectile(c)) << "child " << i;
-    EXPECT_TRUE(canonical(c));
+    EXPECT_TRUE(locks_kept(a, c).ok()) << locks_kept(a, c).error();
     EXPECT_EQ(projectile_of(c), projectile_of(a));
-    EXPECT_EQ(c.nodes[0].edges.back().face, a.nodes[0].edges.back().face);
+    EXPECT_EQ(projectile_edge(c).face, projectile_edge(a).face);
     EXPECT_EQ(c.catapult->release.delay_steps, a.catapult->release.delay_steps);
     EXPECT_EQ(c.nodes[0].size, a.nodes[0].size);  // a's arm
     // the arms' bodies cross: no more genes than the longer parent
@@ -794,19 +831,22 @@ TEST(CatapultCrossover, ThousandChildrenTakeTheFirstParentsMechanism) {
   EXPECT_GT(from_b, kMany / 4);
 }
 
-TEST(CatapultCrossover, CutIndexesTheBodies) {
-  // a: arm, projectile, body part (3 genes); b: arm, body part, projectile.
-  // Cut 1 keeps a's arm and takes b's body part: the child has 3 genes.
+TEST(CatapultCrossover, TheCutFallsAfterTheMechanism) {
+  // a: arm, projectile, body part; b: arm, body part, projectile. A cut at 1
+  // would fall inside a's mechanism: it moves to 2, after a's kept nodes,
+  // and b's node 2 (its projectile) comes unlocked, as a body part.
   Genome a = parse(kProjectileFirst), b = parse(kCatapult);
-  b.nodes[1].size = {0.5, 0.5, 0.5};
+  b.nodes[2].size = {0.5, 0.5, 0.5};
   OperatorDef def = catapult_def();
   Rng rng = rng_for(22);
   Genome c = crossover_at(a, b, 1, def, rng);
   ASSERT_TRUE(one_arm_one_projectile(c));
   ASSERT_EQ(c.nodes.size(), 3u);
   EXPECT_EQ(c.nodes[0].size, a.nodes[0].size);
-  EXPECT_EQ(c.nodes[1].size, (Vec3{0.5, 0.5, 0.5}));
-  EXPECT_EQ(c.nodes[2], a.nodes[1]);
+  EXPECT_EQ(c.nodes[1], a.nodes[1]);
+  EXPECT_EQ(c.nodes[2].size, (Vec3{0.5, 0.5, 0.5}));
+  EXPECT_EQ(c.nodes[2].lock, 0u);
+  EXPECT_NE(c.nodes[2].joint.type, JointType::Fixed);
 }
 
 TEST(CatapultGraft, ThousandChildrenTakeTheTrunksMechanism) {
@@ -820,7 +860,7 @@ TEST(CatapultGraft, ThousandChildrenTakeTheTrunksMechanism) {
     const Genome& b = ps.second[rng.below(ps.second.size())];
     Genome c = i % 2 ? graft(t, b, def, rng) : graft(t, b, rng);
     ASSERT_TRUE(one_arm_one_projectile(c)) << "child " << i;
-    EXPECT_TRUE(canonical(c));
+    EXPECT_TRUE(locks_kept(t, c).ok()) << locks_kept(t, c).error();
     EXPECT_LE(c.nodes.size(), 20u);
     EXPECT_EQ(projectile_of(c), projectile_of(t));
     EXPECT_EQ(c.catapult->release.delay_steps, t.catapult->release.delay_steps);
@@ -829,7 +869,9 @@ TEST(CatapultGraft, ThousandChildrenTakeTheTrunksMechanism) {
   }
 }
 
-TEST(CatapultMixedParents, TheCatapultParentGivesTheMechanism) {
+// A catapult crossed or grafted with a walker: the child is what its first
+// parent is (locks are the first parent's; the paper never mixes them).
+TEST(CatapultMixedParents, TheFirstParentGivesTheKind) {
   OperatorDef def = catapult_def();
   OperatorDef plain_def = default_operators(Dialect::Chaumont2007);
   plain_def.genes_at_creation = {15, 20};  // some at the gene limit
@@ -842,11 +884,18 @@ TEST(CatapultMixedParents, TheCatapultParentGivesTheMechanism) {
                           graft(cat, plain, def, rng), graft(plain, cat, def, rng)};
     for (int k = 0; k < 4; ++k) {
       const Genome& c = children[k];
-      ASSERT_TRUE(one_arm_one_projectile(c)) << "child " << i << ", form " << k;
-      EXPECT_EQ(projectile_of(c), projectile_of(cat));
-      EXPECT_EQ(c.catapult->release.delay_steps, cat.catapult->release.delay_steps);
-      // the arm is the first parent's root
+      // the root is the first parent's
       EXPECT_EQ(c.nodes[0].size, (k % 2 == 0 ? cat : plain).nodes[0].size);
+      if (k % 2 == 0) {
+        ASSERT_TRUE(one_arm_one_projectile(c)) << "child " << i << ", form " << k;
+        EXPECT_EQ(projectile_of(c), projectile_of(cat));
+        EXPECT_EQ(c.catapult->release.delay_steps, cat.catapult->release.delay_steps);
+      } else {
+        Status s = validate(c);
+        ASSERT_TRUE(s.ok()) << s.error() << "\n" << genome_to_string(c);
+        EXPECT_FALSE(c.catapult.has_value());
+        EXPECT_FALSE(has_locks(c));
+      }
     }
   }
 }
@@ -908,9 +957,8 @@ TEST(CatapultOperators, NormalizeKeepsACatapult) {
   g.nodes[2].edges.push_back({0, Face::PosX, 0, 0, {0, 0, 0}, 1.0, {}, false});
   normalize(g, def, rng);
   ASSERT_TRUE(one_arm_one_projectile(g));
-  EXPECT_TRUE(canonical(g));
-  EXPECT_EQ(g.nodes[1].shape, Shape::Box);
-  EXPECT_EQ(g.catapult->release.inputs[0].edge, 0);  // still the body part
+  EXPECT_EQ(g.nodes[2].shape, Shape::Box);
+  EXPECT_EQ(g.catapult->release.inputs[0].edge, 1);  // still the body part
 }
 
 }  // namespace
