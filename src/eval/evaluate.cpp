@@ -84,9 +84,13 @@ EvalResult evaluate_once(const CreatureModel& m, const SimConfig& cfg, std::uint
   EvalResult res;
   res.warnings = m.warnings;
   reseed_physics(seed);
-  // the seed's start: a turn within +-start_yaw_jitter degrees
-  Rng start(stream_seed({seed, kStartStream}));
-  const double yaw = start.uniform(-1, 1) * cfg.start_yaw_jitter * kPi / 180;
+  // the seed's start: a turn within +-start_yaw_jitter degrees, and a drop
+  // height within +-start_drop_jitter (drawn only when set, so that runs
+  // without it draw as before)
+  Rng draw(stream_seed({seed, kStartStream}));
+  StartPose start;
+  start.yaw = draw.uniform(-1, 1) * cfg.start_yaw_jitter * kPi / 180;
+  if (cfg.start_drop_jitter > 0) start.lift = draw.uniform(-1, 1) * cfg.start_drop_jitter;
   auto task = make_task(m, cfg);
   if (!task) {
     res.note = task.error();
@@ -96,7 +100,7 @@ EvalResult evaluate_once(const CreatureModel& m, const SimConfig& cfg, std::uint
   std::optional<ReplayRecorder> recorder;
   if (replay) recorder.emplace(cfg, *replay);
   try {
-    s.emplace(m, GraphBrain(m.brain), cfg, std::move(*task), yaw);
+    s.emplace(m, GraphBrain(m.brain), cfg, std::move(*task), start);
     if (recorder) recorder->observe(m, *s);
     const long max_steps = s->task->max_steps();
     while (s->physics_steps < max_steps && !s->task->done() && step(m, cfg, *s))

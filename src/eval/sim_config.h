@@ -46,6 +46,12 @@ struct SimConfig {
   /// evaluation under the exact solver too, which, unlike QuickStep, draws
   /// no random numbers (docs/physics.md). 0: every seed starts alike.
   double start_yaw_jitter = 0.5;
+  /// Each physics seed also raises or lowers the drop by a uniform height
+  /// within +-this (m). A turn about the vertical is a symmetry of flat
+  /// ground, so under it seeds barely vary a throw, while a tenth of a
+  /// millimetre of drop can switch it between outcomes (docs/physics.md,
+  /// cause 17). 0: no draw (the default: runs made before it draw as ever).
+  double start_drop_jitter = 0;
   double replay_fps = 30;  ///< frames per simulated second in replays
   /// Diagnostics (`bestiary check`, the rest tests), not a config key: when
   /// non-empty the brain is bypassed and effector e holds effector_clamp[e]

@@ -28,7 +28,7 @@ class WorldObservation : public Observation {
 }  // namespace
 
 EvalState::EvalState(const CreatureModel& m, const ControllerModel& c, const SimConfig& cfg,
-                     std::unique_ptr<Task> t, double yaw)
+                     std::unique_ptr<Task> t, StartPose start)
     : world(cfg.physics),
       controller(c.make_state()),
       task(std::move(t)),
@@ -42,10 +42,10 @@ EvalState::EvalState(const CreatureModel& m, const ControllerModel& c, const Sim
   assert(c.n_sensors() == static_cast<int>(m.sensors.size()));
   assert(c.n_effectors() == static_cast<int>(m.effectors.size()));
   assert(c.n_task_inputs() == task->n_inputs());
-  // the creature resting drop_height above the ground
-  // (turned by `yaw` about the vertical, which keeps its height)
-  const double drop = task->scenario().drop_height;
-  world.add_creature(m, {{0, 0, drop - m.min_z()}, Mat3::rotation({0, 0, 1}, yaw)});
+  // the creature resting drop_height (+ lift) above the ground (turned by
+  // `yaw` about the vertical, which keeps its height)
+  const double drop = task->scenario().drop_height + start.lift;
+  world.add_creature(m, {{0, 0, drop - m.min_z()}, Mat3::rotation({0, 0, 1}, start.yaw)});
   signals = motors_off;
   task->begin(WorldObservation(m, world));
 }

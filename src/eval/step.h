@@ -22,13 +22,20 @@ namespace bx {
 /// world with the creature in it, the controller's state, the task's state
 /// and the counters. Made with the creature placed on the task's scenario;
 /// not copyable.
+/// How one evaluation's start differs from the task's scenario: what a
+/// physics seed draws (evaluate.cpp: task.start_yaw_jitter,
+/// task.start_drop_jitter).
+struct StartPose {
+  double yaw = 0;   ///< a turn about the vertical (rad)
+  double lift = 0;  ///< added to the scenario's drop height (m)
+};
+
 struct EvalState {
-  /// The creature starts as the task's scenario says, turned by `yaw`
-  /// (rad) about the vertical, driven by a fresh state of `controller`
-  /// (which must fit the creature's sensors and effectors and the task's
-  /// inputs).
+  /// The creature starts as the task's scenario says, moved by `start`,
+  /// driven by a fresh state of `controller` (which must fit the creature's
+  /// sensors and effectors and the task's inputs).
   EvalState(const CreatureModel& m, const ControllerModel& controller, const SimConfig& cfg,
-            std::unique_ptr<Task> task, double yaw);
+            std::unique_ptr<Task> task, StartPose start = {});
 
   World world;
   std::unique_ptr<ControllerState> controller;

@@ -86,6 +86,7 @@ const std::vector<Field>& fields() {
       {"task", "trials", Field::Int, 1, 1000, {}, [](RunConfig& c) -> void* { return &c.sim.trials; }, "evaluations per creature under different physics seeds; fitness is their mean (task.trial_score)"},
       {"task", "trial_score", Field::Choice, 0, 0, {"mean", "min"}, [](RunConfig& c) -> void* { return &c.sim.trial_score; }, "how trials make the fitness: their mean, or the least of them (robust to luck)"},
       {"task", "start_yaw_jitter", Field::Real, 0, 180, {}, [](RunConfig& c) -> void* { return &c.sim.start_yaw_jitter; }, "each physics seed turns the start by up to this (degrees) about the vertical"},
+      {"task", "start_drop_jitter", Field::Real, 0, 1, {}, [](RunConfig& c) -> void* { return &c.sim.start_drop_jitter; }, "each physics seed raises or lowers the drop by up to this (m), which samples a chaotic outcome where a turn cannot (docs/physics.md cause 17)"},
       {"throwing", "fitness", Field::Choice, 0, 0, {"distance", "aim"}, [](RunConfig& c) -> void* { return &c.sim.throwing.fitness; }, "distance (chaumont2007 eq. 2: D_p) or aim (eq. 3: D_p - D_t)"},
       {"throwing", "seconds", Field::Real, 0, 1e6, {}, [](RunConfig& c) -> void* { return &c.sim.throwing.seconds; }, "longest evaluation (s); it ends earlier once the projectile rests"},
       {"throwing", "drop_height", Field::Real, 0, 1e3, {}, [](RunConfig& c) -> void* { return &c.sim.throwing.drop_height; }, "gap between the lowest part and the ground at the start (m)"},

@@ -54,7 +54,7 @@ TEST(Step, ATaskWrittenAnywhereDrivesTheLoopInTheOrderPromised) {
   CreatureModel m = grow("walker.json", cfg);
   auto owned = std::make_unique<ScriptedTask>();
   ScriptedTask& task = *owned;
-  EvalState s(m, GraphBrain(m.brain), cfg, std::move(owned), 0);
+  EvalState s(m, GraphBrain(m.brain), cfg, std::move(owned));
   // placed by the scenario: the lowest point `drop` above the ground (the root at the frame's origin)
   EXPECT_NEAR(task.start_z - (task.drop - m.min_z()), 0, 1e-9);
   ASSERT_EQ(task.log, std::vector<char>{'b'});
@@ -101,7 +101,7 @@ TEST(Step, ABlowUpStopsTheLoopAndIsNotObserved) {
   task.drop = 1.0;
   task.off = 0;
   task.last = 1000;
-  EvalState s(m, GraphBrain(m.brain), cfg, std::move(owned), 0);
+  EvalState s(m, GraphBrain(m.brain), cfg, std::move(owned));
   int steps = 0;
   while (step(m, cfg, s)) ++steps;
   EXPECT_TRUE(s.failed);
@@ -175,7 +175,7 @@ TEST(Step, AControllerThatIsNoGraphBrainDrivesTheBodyOnTheTasksInputs) {
     task.hz = hz;
     task.off = 0;
     task.last = static_cast<int>(std::lround(4 / cfg.physics.dt));
-    EvalState s(m, osc, cfg, std::move(owned), 0);
+    EvalState s(m, osc, cfg, std::move(owned));
     // the joint swings both ways, once per period of the task's frequency
     std::vector<double> angle;
     while (!s.task->done() && step(m, cfg, s)) angle.push_back(s.world.joint_position(0, 0));

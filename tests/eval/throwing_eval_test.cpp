@@ -3,6 +3,7 @@
 // earlier when the body drives it, and the aim task scores D_p - D_t.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "develop/develop.h"
@@ -67,6 +68,32 @@ TEST(ThrowingEval, HandMadeCatapultThrowsItsProjectileAtTheDelay) {
     }
   }
   EXPECT_GT(std::abs(gap(replay.frames.back()) - held), 0.4);
+}
+
+// task.start_drop_jitter (docs/physics.md cause 17): each physics seed drops
+// the creature from its own height within +-jitter; without it every seed
+// drops it from the same height.
+TEST(ThrowingEval, EachSeedDropsTheCreatureFromItsOwnHeight) {
+  Genome g = catapult();
+  CreatureModel m = grow(g);
+  SimConfig cfg = default_sim_config(g);
+  cfg.throwing.seconds = 0.05;  // the start is what is looked at
+  auto start_z = [&](std::uint64_t seed) {
+    Replay replay;
+    evaluate(m, cfg, seed, &replay);
+    return replay.frames.at(0).poses[2];  // the arm's height
+  };
+  const double z0 = start_z(1);
+  for (std::uint64_t seed = 2; seed <= 8; ++seed) EXPECT_EQ(start_z(seed), z0);
+  cfg.start_drop_jitter = 0.01;
+  double lo = 1e9, hi = -1e9;
+  for (std::uint64_t seed = 1; seed <= 8; ++seed) {
+    double z = start_z(seed);
+    EXPECT_LE(std::abs(z - z0), 0.01 + 1e-12) << "seed " << seed;
+    lo = std::min(lo, z);
+    hi = std::max(hi, z);
+  }
+  EXPECT_GT(hi - lo, 0.005);  // 8 uniform draws in 2 cm spread over a quarter of it
 }
 
 TEST(ThrowingEval, TheBodyFiresTheReleaseEarlierButCannotHoldIt) {
