@@ -54,6 +54,7 @@ const std::vector<Field>& fields() {
       {"physics", "contact_cfm", Field::Real, -1, 1, {}, [](RunConfig& c) -> void* { return &c.sim.physics.contact_cfm; }, "CFM of contacts (negative: physics.cfm)"},
       {"physics", "stop_erp", Field::Real, -1, 1, {}, [](RunConfig& c) -> void* { return &c.sim.physics.stop_erp; }, "ERP of joint stops (negative: physics.erp)"},
       {"physics", "stop_cfm", Field::Real, -1, 1, {}, [](RunConfig& c) -> void* { return &c.sim.physics.stop_cfm; }, "CFM of joint stops (negative: physics.cfm)"},
+      {"physics", "erp_cfm_dt", Field::Real, 0, 1, {}, [](RunConfig& c) -> void* { return &c.sim.physics.erp_cfm_dt; }, "the step (s) at which the erp and cfm keys are given: at another physics.dt they are restated to keep the spring and damper they make there (0: per step, ODE's way; docs/physics.md cause 18)"},
       {"physics", "fudge_factor", Field::Real, 0, 1, {}, [](RunConfig& c) -> void* { return &c.sim.physics.fudge_factor; }, "share of a motor's force allowed at a joint stop (ODE's dParamFudgeFactor)"},
       {"physics", "contact_max_correcting_vel", Field::Real, 0, 1e6, {}, [](RunConfig& c) -> void* { return &c.sim.physics.contact_max_correcting_vel; }, "fastest depenetration of contacts (m/s; 0: unbounded)"},
       {"physics", "contact_surface_layer", Field::Real, 0, 1, {}, [](RunConfig& c) -> void* { return &c.sim.physics.contact_surface_layer; }, "depth contacts may sink before they push back (m)"},

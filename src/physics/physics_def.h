@@ -58,6 +58,14 @@ struct PhysicsDef {
   double contact_cfm = -1;
   double stop_erp = -1;
   double stop_cfm = -1;
+  /// The step (s) at which the ERP and CFM above are given; 0: at whatever
+  /// step, ODE's way. Each ERP, CFM pair makes every constraint a spring of
+  /// ERP/(dt CFM) and a damper of (1 - ERP)/CFM, so fixed values stiffen
+  /// contacts and joints as the step shrinks, and a change of `dt` changes
+  /// the physics, not only its integration (docs/physics.md, cause 18). Set,
+  /// the pairs are recomputed at `dt` to keep the spring and damper they make
+  /// at this step (softness_at_step).
+  double erp_cfm_dt = 0;
   /// dParamFudgeFactor of every joint stop: how much of a motor's force may
   /// act at a stop (ODE: 1; smaller damps "jumping" at powered stops).
   double fudge_factor = 1;
@@ -87,6 +95,13 @@ struct PhysicsDef {
   double max_joint_gap = 0.05;
   friend bool operator==(const PhysicsDef&, const PhysicsDef&) = default;
 };
+
+/// `def` with its ERP and CFM pairs (world, contacts, stops) restated at
+/// def.dt from def.erp_cfm_dt (keeping the spring kp = ERP/(h CFM) and the
+/// damper kd = (1 - ERP)/CFM they make at step h = erp_cfm_dt: ERP' =
+/// dt kp/(dt kp + kd), CFM' = 1/(dt kp + kd)); as given when erp_cfm_dt is 0
+/// or equal to dt.
+PhysicsDef softness_at_step(PhysicsDef def);
 
 /// How effector signals in [-1,1] move joints.
 enum class MotorModel {

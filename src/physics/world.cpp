@@ -323,10 +323,35 @@ struct World::Impl {
   }
 };
 
-World::World(const PhysicsDef& def) : impl_(std::make_unique<Impl>()) {
+PhysicsDef softness_at_step(PhysicsDef d) {
+  const double h0 = d.erp_cfm_dt, h = d.dt;
+  if (!(h0 > 0) || h == h0) return d;
+  // the pair (erp, cfm) given at h0, restated at h with the same spring and damper
+  auto restate = [&](double& erp, double& cfm) {
+    const double kp = erp / (h0 * cfm), kd = (1 - erp) / cfm;
+    erp = h * kp / (h * kp + kd);
+    cfm = 1 / (h * kp + kd);
+  };
+  const double world_erp = d.erp, world_cfm = d.cfm;
+  restate(d.erp, d.cfm);
+  // a contact or stop pair with a value of its own: both restated from what
+  // it is at h0 (a value it does not set is the world's there)
+  auto own = [&](double& erp, double& cfm) {
+    if (erp < 0 && cfm < 0) return;  // the world's, restated above
+    if (erp < 0) erp = world_erp;
+    if (cfm < 0) cfm = world_cfm;
+    restate(erp, cfm);
+  };
+  own(d.contact_erp, d.contact_cfm);
+  own(d.stop_erp, d.stop_cfm);
+  return d;
+}
+
+World::World(const PhysicsDef& given) : impl_(std::make_unique<Impl>()) {
   ensure_ode_initialized();
   auto& w = *impl_;
-  w.def = def;
+  w.def = softness_at_step(given);
+  const PhysicsDef& def = w.def;
   w.world = dWorldCreate();
   dWorldSetGravity(w.world, 0, 0, def.gravity);
   dWorldSetERP(w.world, def.erp);

@@ -114,6 +114,57 @@ TEST(World, BoxAtRestStaysAtRest) {
   EXPECT_EQ(w.contact_mask(0), 1u << static_cast<int>(Face::NegZ));
 }
 
+// physics.erp_cfm_dt (docs/physics.md cause 18): a resting box sinks into
+// the soft contact until its spring ERP/(dt CFM) carries its weight. With
+// ERP and CFM fixed per step the spring stiffens as the step shrinks and the
+// box sinks less; restated from the step they were given at, it sinks the
+// same at every step.
+TEST(World, ContactSoftnessGivenAtAStepHoldsAtEveryStep) {
+  auto sink = [](double dt, double given_at) {
+    PhysicsDef def;
+    def.dt = dt;
+    def.cfm = 1e-3;  // soft enough that the depth is large against the solver's tolerance
+    def.erp_cfm_dt = given_at;
+    World w(def);
+    CreatureModel m = one_box({0, 0, 0});
+    m.parts[0].mass = 20;
+    w.add_creature(m, {{0, 0, 0.2}, Mat3::identity()});
+    for (int i = 0; i < static_cast<int>(2.0 / dt); ++i) w.step();
+    return 0.2 - w.part_pose(0).p.z;
+  };
+  const double h = 1.0 / 240;
+  // per step: a quarter of the step, four times the spring, a quarter of the sink
+  const double fixed = sink(h, 0), fixed4 = sink(h / 4, 0);
+  EXPECT_GT(fixed, 1e-4);
+  EXPECT_NEAR(fixed4 / fixed, 0.25, 0.03);
+  // restated: the same sink at h, h/2, h/4 (and at h exactly as given)
+  EXPECT_EQ(sink(h, h), fixed);
+  EXPECT_NEAR(sink(h / 2, h) / fixed, 1, 0.02);
+  EXPECT_NEAR(sink(h / 4, h) / fixed, 1, 0.02);
+}
+
+TEST(World, SoftnessAtStepKeepsSpringAndDamper) {
+  PhysicsDef d;
+  d.dt = 0.001;
+  d.erp = 0.2;
+  d.cfm = 1e-5;
+  d.contact_erp = 0.5;  // its cfm is the world's
+  d.erp_cfm_dt = 0.004;
+  PhysicsDef r = softness_at_step(d);
+  auto kp = [](double erp, double cfm, double h) { return erp / (h * cfm); };
+  auto kd = [](double erp, double cfm) { return (1 - erp) / cfm; };
+  EXPECT_NEAR(kp(r.erp, r.cfm, 0.001) / kp(0.2, 1e-5, 0.004), 1, 1e-12);
+  EXPECT_NEAR(kd(r.erp, r.cfm) / kd(0.2, 1e-5), 1, 1e-12);
+  EXPECT_NEAR(kp(r.contact_erp, r.contact_cfm, 0.001) / kp(0.5, 1e-5, 0.004), 1, 1e-12);
+  EXPECT_NEAR(kd(r.contact_erp, r.contact_cfm) / kd(0.5, 1e-5), 1, 1e-12);
+  EXPECT_EQ(r.stop_erp, -1);  // not set: the world's, restated
+  EXPECT_EQ(r.stop_cfm, -1);
+  d.erp_cfm_dt = 0;
+  EXPECT_EQ(softness_at_step(d), d);
+  d.erp_cfm_dt = d.dt;
+  EXPECT_EQ(softness_at_step(d), d);
+}
+
 TEST(World, ContactSensorsReadTheTouchingFace) {
   World w(PhysicsDef{});
   CreatureModel m = one_box({0, 0, 0});
