@@ -117,7 +117,7 @@ const Golden kGolden[] = {
      "--set evolution.population=10 --set evolution.evaluations=40 --set task.seconds=10",
      "ff276c228b2927ab", "b136c7a20b2c2078"},
     {"chaumont2007-catapult-small", "--set evolution.population=10 --set evolution.generations=3",
-     "e8cdcb708f2c9e47", "57e27da5f29cd57b"},
+     "4dd0a22ccfb06e02", "25981423aad3251e"},
     {"sims1994-walker", "--set evolution.population=10 --set evolution.generations=3",
      "f2db05190ff162cf", "1ce8ca88dbdfe94e"},
 };
