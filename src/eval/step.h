@@ -18,10 +18,6 @@
 
 namespace bx {
 
-/// Everything that changes during one evaluation (MuJoCo's mjData): the
-/// world with the creature in it, the controller's state, the task's state
-/// and the counters. Made with the creature placed on the task's scenario;
-/// not copyable.
 /// How one evaluation's start differs from the task's scenario: what a
 /// physics seed draws (evaluate.cpp: task.start_yaw_jitter,
 /// task.start_drop_jitter).
@@ -30,6 +26,10 @@ struct StartPose {
   double lift = 0;  ///< added to the scenario's drop height (m)
 };
 
+/// Everything that changes during one evaluation (MuJoCo's mjData): the
+/// world with the creature in it, the controller's state, the task's state
+/// and the counters. Made with the creature placed on the task's scenario;
+/// not copyable.
 struct EvalState {
   /// The creature starts as the task's scenario says, moved by `start`,
   /// driven by a fresh state of `controller` (which must fit the creature's

@@ -5,12 +5,9 @@
 // projectile; mutation rewires the release (mutation.cpp) and normalize
 // keeps the projectile a box grown once (random_genome.cpp).
 #include <algorithm>
-#include <cassert>
-#include <cmath>
 
 #include "genome/dialect.h"
 #include "genome/genome_edit.h"
-#include "genome/locks.h"
 #include "genome/operators.h"
 #include "genome/operators_detail.h"
 

@@ -194,29 +194,27 @@ Genome crossover_graph(const Genome& a, const Genome& b, const Splice& s, const 
       int to = s.index_of(e.to);
       e.to = to >= 0 ? to : static_cast<int>(rng.below(n));
     }
-  if (!has_locks(a) && !has_locks(b)) {
-    remove_unreachable(g, SourceFix::Reassign, &rng);
-    normalize(g, def, rng);
-    return g;
+  const bool locked = has_locks(a) || has_locks(b);
+  if (locked) {
+    // locks are a's (genome/locks.h): the cut lies after a's kept nodes
+    // (crossover_cut); b's nodes come unlocked, and an edge of theirs (or a
+    // random one) into a node whose in-edges are locked goes to another node
+    for (int i = s.left; i < n; ++i) unlock(g.nodes[i]);
+    std::vector<int> open;
+    for (int i = 0; i < n; ++i)
+      if (!(g.nodes[i].lock & kLockInEdges)) open.push_back(i);
+    for (int i = 0; i < n; ++i)
+      for (int k = 0; k < static_cast<int>(g.nodes[i].edges.size()); ++k) {
+        EdgeGene& e = g.nodes[i].edges[k];
+        bool own = i < s.left && s.index_of(a.nodes[i].edges[k].to) == e.to;
+        if (own || !(g.nodes[e.to].lock & kLockInEdges)) continue;
+        if (!open.empty()) e.to = open[rng.below(open.size())];
+      }
   }
-  // locks are a's (genome/locks.h): the cut lies after a's kept nodes
-  // (crossover_cut); b's nodes come unlocked, and an edge of theirs (or a
-  // random one) into a node whose in-edges are locked goes to another node
-  for (int i = s.left; i < n; ++i) unlock(g.nodes[i]);
-  std::vector<int> open;
-  for (int i = 0; i < n; ++i)
-    if (!(g.nodes[i].lock & kLockInEdges)) open.push_back(i);
-  for (int i = 0; i < n; ++i)
-    for (int k = 0; k < static_cast<int>(g.nodes[i].edges.size()); ++k) {
-      EdgeGene& e = g.nodes[i].edges[k];
-      bool own = i < s.left && s.index_of(a.nodes[i].edges[k].to) == e.to;
-      if (own || !(g.nodes[e.to].lock & kLockInEdges)) continue;
-      if (!open.empty()) e.to = open[rng.below(open.size())];
-    }
   remove_unreachable(g, SourceFix::Reassign, &rng);
   normalize(g, def, rng);
   // what the repairs could not keep: the child is a copy of a
-  if (!locks_kept(a, g)) return a;
+  if (locked && !locks_kept(a, g)) return a;
   return g;
 }
 
@@ -274,7 +272,6 @@ Genome graft(const Genome& trunk, const Genome& branch, const OperatorDef& def, 
     }
   } else {
     // Sims 1994: one of the trunk's edges, chosen at random, among those
-    // that leave room for at least one new node
     // that leave room for at least one new node; never a locked edge
     // (genome/locks.h: out of a node with locked out-edges, into one with
     // locked in-edges)
@@ -324,21 +321,19 @@ Genome graft(const Genome& trunk, const Genome& branch, const OperatorDef& def, 
       src = free[rng.below(free.size())];
     }
   }
-  // connectivity kept where indices exist (miconi2006 5.1), clamped otherwise
-  if (!has_locks(trunk) && !has_locks(branch)) {
-    splice_subgraph(g, parent, edge, branch, src, std::max(1, budget), SourceFix::Clamp, &rng);
-    normalize(g, def, rng);
-    return g;
-  }
   // locks are the trunk's (genome/locks.h): the branch comes unlocked; a
   // child that lost one (a kept node cut off with the replaced branch) is
   // a copy of the trunk
-  Genome loose = branch;
-  for (NodeGene& node : loose.nodes) unlock(node);
-  for (NeuronGene& nr : loose.global_neurons) nr.locked = false;
-  splice_subgraph(g, parent, edge, loose, src, std::max(1, budget), SourceFix::Clamp, &rng);
+  const bool locked = has_locks(trunk) || has_locks(branch);
+  Genome loose;
+  if (locked) {
+    loose = branch;
+    for (NodeGene& node : loose.nodes) unlock(node);
+  }
+  // connectivity kept where indices exist (miconi2006 5.1), clamped otherwise
+  splice_subgraph(g, parent, edge, locked ? loose : branch, src, std::max(1, budget), SourceFix::Clamp, &rng);
   normalize(g, def, rng);
-  if (!locks_kept(trunk, g)) return trunk;
+  if (locked && !locks_kept(trunk, g)) return trunk;
   return g;
 }
 

@@ -343,12 +343,7 @@ class Validator {
                      "no edge of the arm (node 0) holds the projectile node", p);
     // the mechanism is locked (genome/locks.h), so that no operator grows a
     // second arm or changes the projectile
-    auto names = [](unsigned bits) {
-      json a = json::array();
-      for (NodeLock b : kLockBits)
-        if (bits & b) a.push_back(std::string(lock_name(b)));
-      return a;
-    };
+    auto names = [](unsigned bits) { return json(lock_names(bits)); };
     if (!(g_.nodes[0].lock & kLockInEdges))
       return problem("nodes[0].lock", "a catapult's arm has its in_edges locked (one arm)", names(g_.nodes[0].lock));
     const unsigned need = catapult_projectile_lock(true);

@@ -702,8 +702,7 @@ J node_json(const NodeGene& n, NeuronSetId set) {
   o["edges"] = edges;
   if (n.lock != 0) {
     J lock = J::array();
-    for (NodeLock b : kLockBits)
-      if (n.lock & b) lock.push_back(std::string(lock_name(b)));
+    for (const std::string& name : lock_names(n.lock)) lock.push_back(name);
     o["lock"] = lock;
   }
   return o;

@@ -220,6 +220,13 @@ std::string_view lock_name(NodeLock bit) {
   return "?";
 }
 
+std::vector<std::string> lock_names(unsigned bits) {
+  std::vector<std::string> out;
+  for (NodeLock b : kLockBits)
+    if (bits & b) out.emplace_back(lock_name(b));
+  return out;
+}
+
 std::optional<NodeLock> parse_lock(std::string_view name) {
   for (NodeLock b : kLockBits)
     if (lock_name(b) == name) return b;

@@ -22,6 +22,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "core/result.h"
 #include "genome/genome.h"
@@ -53,6 +54,8 @@ std::optional<std::string> lock_problem(const Genome& g);
 /// The JSON names of the lock bits, in bit order: body, joint, in_edges,
 /// out_edges, units.
 std::string_view lock_name(NodeLock bit);
+/// The names of the bits set in `bits`, in bit order (a node's JSON "lock").
+std::vector<std::string> lock_names(unsigned bits);
 std::optional<NodeLock> parse_lock(std::string_view name);
 inline constexpr NodeLock kLockBits[] = {kLockBody, kLockJoint, kLockInEdges, kLockOutEdges, kLockUnits};
 

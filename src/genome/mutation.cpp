@@ -708,15 +708,16 @@ struct GraphMutator {
 void mutate(Genome& g, const OperatorDef& def, double rate, Rng& rng) {
   if (g.nodes.empty()) return;
   Genome before = g;
+  const bool locked = has_locks(before);
   if (dialect_rules(g.dialect).operators == OperatorScheme::LimbTree)
     mutate_miconi(g, def, rate, rng);
   else
-    GraphMutator{g, def, rate, rng, dialect_rules(g.dialect), has_locks(before)}.run();
+    GraphMutator{g, def, rate, rng, dialect_rules(g.dialect), locked}.run();
   // an unchanged genome is left exactly as it was
   if (!(g == before)) normalize(g, def, rng);
   // the repairs keep valid locked genes as they are; should one not, the
   // mutation is undone rather than a lock broken
-  if (has_locks(before) && !locks_kept(before, g)) g = std::move(before);
+  if (locked && !locks_kept(before, g)) g = std::move(before);
 }
 
 }  // namespace bx
