@@ -49,7 +49,10 @@ int cmd_check(const CheckArgs& a) {
     std::fprintf(stderr, "checking %s: %d parts, %zu effectors, seed %llu ...\n", subject->label.c_str(),
                  m.n_parts(), m.effectors.size(), static_cast<unsigned long long>(subject->seed));
   if (!a.json && !subject->settings.empty()) std::fprintf(stderr, "%s\n", subject->settings.c_str());
-  CheckReport rep = check_creature(m, sim, subject->seed, subject->cfg.check);
+  // a run's elite: its other seeds against the mean selection saw
+  const int evaluations = subject->scored_settings ? subject->evaluations : 1;
+  CheckReport rep = check_creature(m, sim, subject->seed, subject->cfg.check, evaluations,
+                                   subject->cfg.evolution.failed_fitness);
   const EvalResult& s = rep.scored;
   const EvalDiagnostics& d = s.diagnostics;
 
@@ -58,6 +61,8 @@ int cmd_check(const CheckArgs& a) {
     out["subject"] = subject->label;
     out["seed"] = subject->seed;
     out["fitness"] = s.fitness;
+    out["scored_fitness"] = rep.scored_fitness;
+    if (!rep.scored_by_seed.empty()) out["scored_by_seed"] = rep.scored_by_seed;
     out["stored_fitness"] = subject->stored_fitness ? nlohmann::json(*subject->stored_fitness) : nlohmann::json(nullptr);
     out["failed"] = s.failed;
     out["failure"] = s.failure;
@@ -82,6 +87,12 @@ int cmd_check(const CheckArgs& a) {
   if (subject->stored_fitness) std::printf(" (stored %.6g)", *subject->stored_fitness);
   std::printf(", seed %llu\n", static_cast<unsigned long long>(subject->seed));
   if (s.failed) std::printf("  failed: %s\n", s.failure.c_str());
+  if (!rep.scored_by_seed.empty()) {
+    // other seeds are compared with what selection saw
+    std::printf("  scored as the mean of %zu evaluations:", rep.scored_by_seed.size());
+    for (double f : rep.scored_by_seed) std::printf(" %.4g", f);
+    std::printf(" = %.6g (other seeds' ratios are to this)\n", rep.scored_fitness);
+  }
   for (const auto& v : rep.variants) {
     std::printf("  %-14s fitness %-12.6g ratio %s", v.name.c_str(), v.result.fitness, ratio_text(v.ratio).c_str());
     if (v.result.failed) std::printf("  (failed: %s)", v.result.failure.c_str());

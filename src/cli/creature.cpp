@@ -116,6 +116,7 @@ Result<Creature> from_run(const RunTarget& t, const CreatureFlags& f) {
   c.seed = ind->seed;
   c.label = t.dir + " individual " + std::to_string(ind->id) + " (generation " + std::to_string(ind->generation) + ")";
   c.stored_fitness = ind->fitness;
+  c.evaluations = ind->evaluations;
   c.individual = *ind;
   c.run_dir = t.dir;
   c.scored_settings = f.set.empty() && !f.seconds;
@@ -189,6 +190,13 @@ Result<Creature> from_genome(const std::string& path, const CreatureFlags& f) {
       c.scored_settings = genome_same && config_same && f.set.empty() && !f.seconds;
       if (genome_same && prov.contains("fitness") && prov["fitness"].is_number())
         c.stored_fitness = prov["fitness"].get<double>();
+      if (prov.contains("evaluations")) {
+        if (!prov["evaluations"].is_number_integer() || prov["evaluations"].get<std::int64_t>() < 1 ||
+            prov["evaluations"].get<std::int64_t>() > 1000000)
+          return Error{path + ": provenance.evaluations: expected a whole number >= 1, got " +
+                       prov["evaluations"].dump().substr(0, 40)};
+        c.evaluations = static_cast<int>(prov["evaluations"].get<std::int64_t>());
+      }
       if (c.scored_settings)
         c.settings = "as scored (" + scored_by + "): its run's config and evaluation seed " + std::to_string(c.seed);
       else if (!genome_same)
@@ -240,6 +248,14 @@ Status set_seconds(SimConfig& sim, const std::optional<double>& seconds) {
   return Ok{};
 }
 
+std::string Creature::evaluations_note() const {
+  if (evaluations <= 1 || !stored_fitness) return "";
+  char buf[128];
+  std::snprintf(buf, sizeof buf, "(evaluation 1 of %d; the stored fitness %.6g is their mean)", evaluations,
+                *stored_fitness);
+  return buf;
+}
+
 std::string fitness_line(double fitness, const std::optional<double>& stored) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "fitness %.6g", fitness);
@@ -276,6 +292,7 @@ json provenance_json(const Creature& c, const std::string& config_text) {
     p["individual"] = c.individual->id;
     p["generation"] = c.individual->generation;
     p["fitness"] = c.individual->fitness;
+    p["evaluations"] = c.individual->evaluations;
   }
   p["seed"] = std::to_string(c.seed);  // text: JSON numbers lose 64-bit integers in many readers
   p["genome_hash"] = fnv1a64(genome_to_string(c.genome));

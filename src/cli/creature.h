@@ -44,6 +44,9 @@ struct Creature {
   std::uint64_t seed = 1;
   std::string label;                    ///< "RUN individual 12 (generation 3)", or the file
   std::optional<double> stored_fitness; ///< the fitness its run recorded, when known
+  /// How many evaluations the stored fitness is the mean of (a run's elite,
+  /// evolution.elite_evaluations): under repeat_seed(seed, 0..n-1).
+  int evaluations = 1;
   std::optional<Individual> individual; ///< a run's individual, as stored
   std::string run_dir;                  ///< its run, if any
   /// Where the settings come from, and whether they are the scored ones; one
@@ -51,8 +54,13 @@ struct Creature {
   std::string settings;
   bool scored_settings = false;  ///< the config and seed that scored it, unchanged
 
-  /// The stored fitness when this evaluation should reproduce it.
-  std::optional<double> scored_fitness() const { return scored_settings ? stored_fitness : std::nullopt; }
+  /// The stored fitness when one evaluation should reproduce it.
+  std::optional<double> scored_fitness() const {
+    return scored_settings && evaluations == 1 ? stored_fitness : std::nullopt;
+  }
+  /// Under several evaluations, what one evaluation shows: "(evaluation 1
+  /// of N; the stored fitness S is their mean)"; else "".
+  std::string evaluations_note() const;
 };
 
 /// True when `target` names a run (RUN_DIR, RUN_DIR:ID, RUN_DIR:gen=G).
@@ -63,7 +71,8 @@ bool names_run(const std::string& target);
 Result<Creature> resolve_creature(const std::string& target, const CreatureFlags& flags);
 
 /// A run's individual's provenance, for the genome file `best --out` writes:
-/// run, individual, generation, fitness, seed, and the run's config (its
+/// run, individual, generation, fitness (and how many evaluations it is the
+/// mean of), seed, and the run's config (its
 /// text and a hash), so the file alone reproduces the scored evaluation.
 nlohmann::json provenance_json(const Creature& c, const std::string& config_text);
 

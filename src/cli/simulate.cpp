@@ -69,6 +69,21 @@ int cmd_simulate(const SimulateArgs& a) {
     if (Status s = save_replay(a.replay, m, replay, res, info); !s) return fail(s.error());
   }
 
+  // a run's elite scored as the mean of several evaluations: the others too,
+  // folded as the run folded them, so the mean reproduces the stored fitness
+  std::vector<double> each;
+  double mean = 0;
+  if (creature->scored_settings && creature->evaluations > 1) {
+    const double failed_fitness = creature->cfg.evolution.failed_fitness;
+    mean = res.failed ? failed_fitness : res.fitness;
+    each.push_back(mean);
+    for (int k = 1; k < creature->evaluations; ++k) {
+      EvalResult r = evaluate(m, cfg, repeat_seed(seed, k));
+      each.push_back(r.failed ? failed_fitness : r.fitness);
+      mean = fold_mean(mean, k, each.back());
+    }
+  }
+
   // report
   double bl = m.body_length();
   if (a.json) {
@@ -84,6 +99,10 @@ int cmd_simulate(const SimulateArgs& a) {
     out["failure"] = res.failure;
     out["note"] = res.note;
     if (!res.trial_fitness.empty()) out["trial_fitness"] = res.trial_fitness;
+    if (!each.empty()) {
+      out["evaluation_fitness"] = each;
+      out["mean_fitness"] = mean;
+    }
     if (m.projectile >= 0) {
       out["release_time"] = res.release_time >= 0 ? nlohmann::json(res.release_time) : nlohmann::json(nullptr);
       out["target_miss"] = res.target_miss >= 0 ? nlohmann::json(res.target_miss) : nlohmann::json(nullptr);
@@ -112,6 +131,12 @@ int cmd_simulate(const SimulateArgs& a) {
     std::printf("distance %.4f m (%.2f body lengths)\n", res.distance, bl > 0 ? res.distance / bl : 0.0);
   }
   std::printf("%s\n", fitness_line(res.fitness, creature->scored_fitness()).c_str());
+  if (!each.empty()) {
+    // the run scored it as the mean of several evaluations, each under its own seed
+    std::printf("the run's fitness is the mean of %zu evaluations (the lines above are the first's):", each.size());
+    for (double f : each) std::printf(" %.6g", f);
+    std::printf("\n%s\n", fitness_line(mean, creature->stored_fitness).c_str());
+  }
   if (!res.trial_fitness.empty()) {
     // task.trials > 1: the lines above are the first trial's, the fitness the mean
     std::printf("fitness is the mean of %zu trials (the lines above are the first's):",

@@ -31,13 +31,26 @@ std::uint64_t check_seed(std::uint64_t seed, int k) {
 }
 
 CheckReport check_creature(const CreatureModel& m, const SimConfig& cfg, std::uint64_t seed,
-                           const CheckDef& def) {
+                           const CheckDef& def, int evaluations, double failed_fitness) {
   CheckReport rep;
   rep.scored = evaluate(m, cfg, seed);
   const double scored = rep.scored.fitness;
-  auto run = [&](std::string name, const SimConfig& c, std::uint64_t s) {
+  // what selection saw: the mean over the creature's evaluations, folded as the run folded them
+  rep.scored_fitness = scored;
+  if (evaluations > 1) {
+    rep.scored_fitness = rep.scored.failed ? failed_fitness : scored;
+    rep.scored_by_seed.push_back(rep.scored_fitness);
+    for (int k = 1; k < evaluations; ++k) {
+      const EvalResult r = evaluate(m, cfg, repeat_seed(seed, k));
+      const double f = r.failed ? failed_fitness : r.fitness;
+      rep.scored_by_seed.push_back(f);
+      rep.scored_fitness = fold_mean(rep.scored_fitness, k, f);
+    }
+  }
+  auto ratio = [](double f, double of) { return of > 0 ? f / of : 0; };
+  auto run = [&](std::string name, const SimConfig& c, std::uint64_t s, double of) {
     CheckVariant v{std::move(name), evaluate(m, c, s), 0, {}};
-    v.ratio = scored > 0 ? v.result.fitness / scored : 0;
+    v.ratio = ratio(v.result.fitness, of);
     rep.variants.push_back(std::move(v));
     return rep.variants.back().ratio;
   };
@@ -45,7 +58,7 @@ CheckReport check_creature(const CreatureModel& m, const SimConfig& cfg, std::ui
   // other physics seeds: their median, so one lucky or unlucky seed does not decide
   std::vector<double> seeds;
   for (int k = 1; k <= def.other_seeds; ++k)
-    seeds.push_back(run("seed " + std::to_string(k + 1), cfg, check_seed(seed, k)));
+    seeds.push_back(run("seed " + std::to_string(k + 1), cfg, check_seed(seed, k), rep.scored_fitness));
   if (!seeds.empty()) rep.median_other_seeds = median(seeds);
 
   // convergence: smaller steps, a better solved step; with converge_seeds > 1
@@ -58,13 +71,13 @@ CheckReport check_creature(const CreatureModel& m, const SimConfig& cfg, std::ui
   const double base = median(at_dt);
   std::vector<std::pair<std::string, double>> converged;
   auto converge = [&](const std::string& name, const SimConfig& c) {
-    if (ks == 1) return converged.push_back({name, run(name, c, seed)});
+    if (ks == 1) return converged.push_back({name, run(name, c, seed, scored)});
     CheckVariant v{name + " (median of " + std::to_string(ks) + " seeds)", evaluate(m, c, seed), 0, {}};
     std::vector<double> f{v.result.fitness};
     for (int k = 1; k < ks; ++k) f.push_back(evaluate(m, c, check_seed(seed, k)).fitness);
     v.seed_fitness = f;
     v.result.fitness = median(f);
-    v.ratio = base > 0 ? v.result.fitness / base : 0;
+    v.ratio = ratio(v.result.fitness, base);
     rep.variants.push_back(v);
     converged.push_back({v.name, v.ratio});
   };
@@ -84,12 +97,12 @@ CheckReport check_creature(const CreatureModel& m, const SimConfig& cfg, std::ui
   if (!rep.scored.diagnostics.effector_mean.empty()) {
     SimConfig c = cfg;
     c.effector_clamp = rep.scored.diagnostics.effector_mean;
-    clamped = run("clamped", c, seed);
+    clamped = run("clamped", c, seed, scored);
   }
 
   // the gates
-  if (!(scored > 0)) {
-    rep.failures.push_back("the scored fitness " + fixed(scored) + " is not positive");
+  if (!(scored > 0) || !(rep.scored_fitness > 0)) {
+    rep.failures.push_back("the scored fitness " + fixed(std::min(scored, rep.scored_fitness)) + " is not positive");
     return rep;
   }
   if (!seeds.empty() && rep.median_other_seeds < def.min_other_seeds)

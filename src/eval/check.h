@@ -44,7 +44,13 @@ struct CheckVariant {
 
 /// What a check found.
 struct CheckReport {
-  EvalResult scored;
+  EvalResult scored;  ///< the evaluation under the creature's own seed
+  /// The fitness the ratios of other seeds are taken against: the scored
+  /// evaluation's, or for a creature scored as the mean of several
+  /// evaluations (a run's elite, evolution.elite_evaluations) their mean.
+  double scored_fitness = 0;
+  /// Under several evaluations: each one's fitness, the own seed's first.
+  std::vector<double> scored_by_seed;
   std::vector<CheckVariant> variants;
   double median_other_seeds = 0;  ///< ratio
   std::vector<std::string> failures;  ///< each gate that failed, with its figures; empty: passed
@@ -52,9 +58,14 @@ struct CheckReport {
 };
 
 /// Checks the creature's evaluation under `cfg` and `seed` (the one that
-/// scored it) against the gates.
+/// scored it) against the gates. A creature whose fitness is the mean of
+/// `evaluations` (under repeat_seed(seed, 0..evaluations-1)) has its other
+/// seeds compared with that mean, what selection saw; the steps, iterations
+/// and clamped effectors compare with the own seed's evaluation, like with
+/// like. A failed one of those evaluations counts as `failed_fitness`, as
+/// in the run (evolution.failed_fitness).
 CheckReport check_creature(const CreatureModel& m, const SimConfig& cfg, std::uint64_t seed,
-                           const CheckDef& def);
+                           const CheckDef& def, int evaluations = 1, double failed_fitness = 0);
 
 /// The physics seed of a check's k-th other seed (k from 1), unlike any trial's.
 std::uint64_t check_seed(std::uint64_t seed, int k);

@@ -135,6 +135,15 @@ std::uint64_t trial_seed(std::uint64_t seed, int trial) {
   return trial == 0 ? seed : stream_seed({seed, kTrialStream, static_cast<std::uint64_t>(trial)});
 }
 
+// the stream of repeated evaluations' seeds (check's is 6, the start's 7)
+constexpr std::uint64_t kRepeatStream = 8;
+
+std::uint64_t repeat_seed(std::uint64_t seed, int k) {
+  return k == 0 ? seed : stream_seed({seed, kRepeatStream, static_cast<std::uint64_t>(k)});
+}
+
+double fold_mean(double mean, int n, double next) { return mean + (next - mean) / (n + 1); }
+
 EvalResult evaluate(const CreatureModel& m, const SimConfig& cfg, std::uint64_t seed,
                     Replay* replay) {
   EvalResult res = evaluate_once(m, cfg, seed, replay);

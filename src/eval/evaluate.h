@@ -91,4 +91,15 @@ long brain_steps_due(long physics_steps, double dt, double brain_hz);
 /// The physics seed of trial `trial` (0-based) of an evaluation under `seed`.
 std::uint64_t trial_seed(std::uint64_t seed, int trial);
 
+/// The seed of evaluation `k` (0-based) of a creature first evaluated under
+/// `seed`: `seed` itself for k = 0, then fresh ones (a run's elites are
+/// evaluated again so, evolution.elite_evaluations). Unlike any trial's or
+/// check's seed.
+std::uint64_t repeat_seed(std::uint64_t seed, int k);
+
+/// The mean of n + 1 fitnesses from the mean of the first n (n >= 1) and the next:
+/// the one way a run and the commands that reproduce its scores fold
+/// repeated evaluations, so both get the same double.
+double fold_mean(double mean, int n, double next);
+
 }  // namespace bx

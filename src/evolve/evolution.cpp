@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <numeric>
+#include <set>
 
 #include <cassert>
 
@@ -131,6 +132,60 @@ std::vector<Individual> Evolution::evaluate(std::vector<Child> children, Evoluti
   return born;
 }
 
+int Evolution::elite_count(int n) const {
+  return std::clamp(static_cast<int>(std::lround(evo_.elite_fraction * n)), 1, n);
+}
+
+// The elite that will survive into the next generation, each evaluated again
+// under a fresh seed until it has elite_evaluations, its fitness the mean; one
+// whose mean falls out of the elite makes room for the next, evaluated in turn.
+// Returns the individuals born in earlier steps that were evaluated again;
+// those born in this step are updated in `born`.
+std::vector<Individual> Evolution::reevaluate_elite(EvolutionState& s, Evaluator& eval, long& failed,
+                                                    std::vector<Individual>& born) const {
+  if (evo_.elite_evaluations <= 1 || evo_.algorithm != Algorithm::Generational) return {};
+  const int n = static_cast<int>(s.population.size());
+  const int elite = elite_count(n);
+  std::set<int> touched;
+  for (;;) {
+    std::vector<int> order(n);
+    std::iota(order.begin(), order.end(), 0);
+    std::partial_sort(order.begin(), order.begin() + elite, order.end(),
+                      [&](int x, int y) { return better(s.population[x], s.population[y]); });
+    std::vector<int> due;
+    for (int k = 0; k < elite; ++k)
+      if (s.population[order[k]].evaluations < evo_.elite_evaluations) due.push_back(order[k]);
+    if (due.empty()) break;
+    std::vector<EvalJob> jobs;
+    for (int i : due) {
+      const Individual& ind = s.population[i];
+      jobs.push_back({ind.genotype.get(), repeat_seed(ind.seed, ind.evaluations)});
+    }
+    std::vector<EvalOutcome> out = eval.evaluate(jobs);
+    for (std::size_t k = 0; k < due.size(); ++k) {
+      Individual& ind = s.population[due[k]];
+      double f = out[k].result.fitness;
+      if (!out[k].viable || out[k].result.failed) {
+        f = evo_.failed_fitness;
+        ++failed;
+      }
+      ind.fitness = fold_mean(ind.fitness, ind.evaluations, f);
+      ++ind.evaluations;
+      touched.insert(due[k]);
+    }
+    s.evaluations += static_cast<long>(due.size());
+  }
+  std::vector<Individual> earlier;
+  for (int i : touched) {
+    const Individual& ind = s.population[i];
+    auto b = std::find_if(born.begin(), born.end(), [&](const Individual& x) { return x.id == ind.id; });
+    if (b != born.end()) *b = ind;
+    else earlier.push_back(ind);
+  }
+  std::sort(earlier.begin(), earlier.end(), [](const Individual& a, const Individual& b) { return a.id < b.id; });
+  return earlier;
+}
+
 GenerationStats Evolution::stats(const EvolutionState& s) const {
   GenerationStats st;
   st.generation = s.generation;
@@ -163,6 +218,7 @@ GenerationResult Evolution::initial(EvolutionState& s, Evaluator& eval) const {
   GenerationResult res;
   res.born = evaluate(std::move(children), s, eval, failed);
   s.population = res.born;
+  res.reevaluated = reevaluate_elite(s, eval, failed, res.born);
   s.generation = 0;
   res.stats = stats(s);
   res.stats.rejected = rejected;
@@ -176,7 +232,7 @@ GenerationResult Evolution::generational(EvolutionState& s, Evaluator& eval) con
   std::vector<Individual> sorted = s.population;
   std::sort(sorted.begin(), sorted.end(), better);
   int n = static_cast<int>(sorted.size());
-  int elite = std::clamp(static_cast<int>(std::lround(evo_.elite_fraction * n)), 1, n);
+  int elite = elite_count(n);
   std::vector<Individual> survivors(sorted.begin(), sorted.begin() + elite);
 
   // the rest are children of survivors: asexual, crossover or grafting
@@ -202,6 +258,7 @@ GenerationResult Evolution::generational(EvolutionState& s, Evaluator& eval) con
   res.born = evaluate(std::move(children), s, eval, failed);
   s.population = std::move(survivors);
   s.population.insert(s.population.end(), res.born.begin(), res.born.end());
+  res.reevaluated = reevaluate_elite(s, eval, failed, res.born);
   s.generation = g;
   res.stats = stats(s);
   res.stats.rejected = rejected;

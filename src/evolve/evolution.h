@@ -26,13 +26,16 @@ namespace bx {
 struct Individual {
   std::int64_t id = -1;
   std::shared_ptr<const Genotype> genotype;  ///< immutable, so copies of an individual share it
+  /// The mean over its evaluations: the first, when it was born, and those
+  /// under fresh seeds while it was among the elite (evolution.elite_evaluations).
   double fitness = 0;
-  double distance = 0;
+  double distance = 0;  ///< the first evaluation's, the one a replay shows
   std::string failure;  ///< why it failed (crash, timeout, explosion) or scored 0 by rule
   std::int64_t parent1 = -1, parent2 = -1;
   std::string op;       ///< random, mutation, crossover, graft
   int generation = 0;   ///< the generation (steady state: the report interval) it was born in
-  std::uint64_t seed = 0;  ///< the seed of the evaluation that scored it
+  std::uint64_t seed = 0;  ///< the seed of its first evaluation (the k-th's: repeat_seed(seed, k))
+  int evaluations = 1;     ///< how many evaluations `fitness` is the mean of
 };
 
 /// Statistics of one generation (steady state: one report interval).
@@ -56,7 +59,12 @@ struct EvolutionState {
 /// The outcome of one step.
 struct GenerationResult {
   GenerationStats stats;
-  std::vector<Individual> born;  ///< individuals created and evaluated, in id order
+  /// individuals created and evaluated, in id order, as they stand after the
+  /// step (an elite among them may have been evaluated again)
+  std::vector<Individual> born;
+  /// Individuals born before this step and evaluated again in it
+  /// (evolution.elite_evaluations), as they stand after it, in id order.
+  std::vector<Individual> reevaluated;
 };
 
 /// Draws a parent index from survivors sorted best first, by rank (weight
@@ -104,6 +112,9 @@ class Evolution {
   GenerationResult generational(EvolutionState& s, Evaluator& eval) const;
   GenerationResult steady_state(EvolutionState& s, Evaluator& eval) const;
   GenerationStats stats(const EvolutionState& s) const;
+  int elite_count(int n) const;
+  std::vector<Individual> reevaluate_elite(EvolutionState& s, Evaluator& eval, long& failed,
+                                           std::vector<Individual>& born) const;
 
   std::shared_ptr<const GenotypeOps> ops_;
   EvolutionDef evo_;

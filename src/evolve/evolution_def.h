@@ -31,6 +31,11 @@ struct EvolutionDef {
   double asexual_rate = 0.10;     ///< per-parameter mutation probability of asexual children
   double sexual_mutation_chance = 0.10;  ///< chance that a crossover/graft child is mutated
   double sexual_rate = 0.05;      ///< its per-site probability
+  /// Evaluations an elite's fitness is the mean of: after each generation
+  /// the best elite_fraction are evaluated again, each under a fresh seed,
+  /// until every one has this many, so a lucky evaluation does not keep a
+  /// creature alive (issue 11). 1: each creature is evaluated once (the paper).
+  int elite_evaluations = 1;
   // steady state (miconi2006)
   long evaluations = 500000;      ///< cycles after the initial population (6.1: 500,000)
   double mutation_rate = 0.04;    ///< P_mut (5.1)

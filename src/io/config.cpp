@@ -107,6 +107,7 @@ const std::vector<Field>& fields() {
       {"evolution", "asexual_rate", Field::Real, 0, 1, {}, [](RunConfig& c) -> void* { return &c.evolution.asexual_rate; }, "generational: per-parameter mutation probability of asexual children"},
       {"evolution", "sexual_mutation_chance", Field::Real, 0, 1, {}, [](RunConfig& c) -> void* { return &c.evolution.sexual_mutation_chance; }, "generational: chance that a crossover/graft child is mutated"},
       {"evolution", "sexual_rate", Field::Real, 0, 1, {}, [](RunConfig& c) -> void* { return &c.evolution.sexual_rate; }, "generational: ... at this per-site probability"},
+      {"evolution", "elite_evaluations", Field::Int, 1, 1000, {}, [](RunConfig& c) -> void* { return &c.evolution.elite_evaluations; }, "generational: the survivors are evaluated again under fresh seeds until each fitness is the mean of this many (1: once)"},
       {"evolution", "evaluations", Field::Long, 0, 1e12, {}, [](RunConfig& c) -> void* { return &c.evolution.evaluations; }, "steady state: tournaments after the initial population"},
       {"evolution", "mutation_rate", Field::Real, 0, 1, {}, [](RunConfig& c) -> void* { return &c.evolution.mutation_rate; }, "steady state: P_mut of the mutation operator"},
       {"evolution", "asexual_mutations", Field::Int, 1, 1000, {}, [](RunConfig& c) -> void* { return &c.evolution.asexual_mutations; }, "steady state: mutations applied to make an asexual child"},
@@ -353,6 +354,9 @@ Status apply_config_toml(RunConfig& cfg, std::string_view text, std::string_view
   if (std::abs(e.p_asexual + e.p_crossover + e.p_graft - 1) > 1e-9)
     return Error{std::string(source) + ": evolution.p_asexual + p_crossover + p_graft: must sum to 1, got " +
                  num(std::round((e.p_asexual + e.p_crossover + e.p_graft) * 1e9) / 1e9)};
+  if (e.elite_evaluations > 1 && e.algorithm != Algorithm::Generational)
+    return Error{std::string(source) + ": evolution.elite_evaluations = " + std::to_string(e.elite_evaluations) +
+                 ": the steady-state algorithm keeps no elite (set it to 1, or use the generational one)"};
   cfg = out;
   return Ok{};
 }

@@ -26,7 +26,8 @@ CREATE TABLE generation (
 CREATE TABLE individual (
   id INTEGER PRIMARY KEY, gen INTEGER NOT NULL, genome TEXT NOT NULL,
   fitness REAL NOT NULL, distance REAL NOT NULL, parent1 INTEGER, parent2 INTEGER,
-  operator TEXT NOT NULL, failure TEXT NOT NULL, seed TEXT, kind TEXT NOT NULL DEFAULT 'graph');
+  operator TEXT NOT NULL, failure TEXT NOT NULL, seed TEXT, kind TEXT NOT NULL DEFAULT 'graph',
+  evaluations INTEGER NOT NULL DEFAULT 1);
 CREATE INDEX individual_gen ON individual (gen);
 CREATE TABLE checkpoint (id INTEGER PRIMARY KEY CHECK (id = 1), gen INTEGER NOT NULL, state TEXT NOT NULL);
 )";
@@ -144,6 +145,11 @@ Result<std::unique_ptr<RunStore>> RunStore::open(const std::string& path) {
   if (has_kind.ok() && has_kind.step() == SQLITE_ROW && has_kind.i64(0) == 0)
     store->kind_column_ =
         writable && exec(*db, "ALTER TABLE individual ADD COLUMN kind TEXT NOT NULL DEFAULT 'graph'").ok();
+  // and before an elite's fitness could be the mean of several evaluations
+  Stmt has_evaluations(*db, "SELECT count(*) FROM pragma_table_info('individual') WHERE name = 'evaluations'");
+  if (has_evaluations.ok() && has_evaluations.step() == SQLITE_ROW && has_evaluations.i64(0) == 0)
+    store->evaluations_column_ =
+        writable && exec(*db, "ALTER TABLE individual ADD COLUMN evaluations INTEGER NOT NULL DEFAULT 1").ok();
   return store;
 }
 
@@ -177,7 +183,8 @@ Status RunStore::check_integrity() const {
   const char* numeric[][2] = {
       {"generation", "evaluations"}, {"generation", "best"}, {"generation", "mean"}, {"generation", "median"},
       {"generation", "best_id"},     {"generation", "rejected"}, {"generation", "failed"},
-      {"individual", "gen"},         {"individual", "fitness"}, {"individual", "distance"}};
+      {"individual", "gen"},         {"individual", "fitness"}, {"individual", "distance"},
+      {"individual", "evaluations"}};
   for (const auto& [table, column] : numeric) {
     std::string sql = std::string("SELECT rowid, ") + column + " FROM " + table + " WHERE typeof(" + column +
                       ") NOT IN ('integer', 'real') LIMIT 1";
@@ -204,7 +211,7 @@ std::string RunStore::meta(const std::string& key) const {
 }
 
 Status RunStore::write_generation(const GenerationStats& st, const std::vector<Individual>& born,
-                                  const Checkpoint& cp) {
+                                  const std::vector<Individual>& reevaluated, const Checkpoint& cp) {
   if (Status s = exec(db_, "BEGIN IMMEDIATE"); !s) return s;
   auto rollback = [&](const std::string& what) {
     std::string msg = what + ": " + sqlite3_errmsg(db_);
@@ -214,16 +221,26 @@ Status RunStore::write_generation(const GenerationStats& st, const std::vector<I
   // individuals born in this generation
   {
     Stmt ins(db_, "INSERT INTO individual (id, gen, genome, fitness, distance, parent1, parent2, operator, failure, "
-                  "seed, kind) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+                  "seed, kind, evaluations) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
     for (const auto& ind : born) {
       ins.bind(1, ind.id).bind(2, static_cast<std::int64_t>(ind.generation))
           .bind(3, ind.genotype->to_json().dump()).bind(4, ind.fitness).bind(5, ind.distance);
       if (ind.parent1 >= 0) ins.bind(6, ind.parent1); else ins.bind_null(6);
       if (ind.parent2 >= 0) ins.bind(7, ind.parent2); else ins.bind_null(7);
       ins.bind(8, ind.op).bind(9, ind.failure).bind(10, std::to_string(ind.seed))
-          .bind(11, std::string(ind.genotype->kind()));
+          .bind(11, std::string(ind.genotype->kind())).bind(12, static_cast<std::int64_t>(ind.evaluations));
       if (ins.step() != SQLITE_DONE) return rollback("storing individual " + std::to_string(ind.id));
       ins.reset();
+    }
+  }
+  // earlier individuals evaluated again: their mean and count
+  {
+    Stmt up(db_, "UPDATE individual SET fitness = ?, evaluations = ? WHERE id = ?");
+    for (const auto& ind : reevaluated) {
+      up.bind(1, ind.fitness).bind(2, static_cast<std::int64_t>(ind.evaluations)).bind(3, ind.id);
+      if (up.step() != SQLITE_DONE || sqlite3_changes(db_) != 1)
+        return rollback("updating individual " + std::to_string(ind.id));
+      up.reset();
     }
   }
   // the generation's statistics
@@ -299,14 +316,16 @@ std::vector<GenerationStats> RunStore::generations() const {
 
 Result<Individual> RunStore::individual(std::int64_t id) const {
   const std::string sql = std::string("SELECT id, gen, genome, fitness, distance, parent1, parent2, operator, failure, ") +
-                          (seed_column_ ? "seed" : "''") + ", " + (kind_column_ ? "kind" : "'graph'") +
-                          " FROM individual WHERE id = ?";
+                          (seed_column_ ? "seed" : "''") + ", " + (kind_column_ ? "kind" : "'graph'") + ", " +
+                          (evaluations_column_ ? "evaluations" : "1") + " FROM individual WHERE id = ?";
   Stmt s(db_, sql.c_str());
   s.bind(1, id);
   const std::string who = "individual " + std::to_string(id);
   if (s.step() != SQLITE_ROW) return Error{"no " + who};
-  for (auto [c, field] : {std::pair{1, "generation"}, {3, "fitness"}, {4, "distance"}})
+  for (auto [c, field] : {std::pair{1, "generation"}, {3, "fitness"}, {4, "distance"}, {11, "evaluations"}})
     if (Status t = number_column(s.raw(), c, who + "'s " + field); !t) return Error{t.error()};
+  if (s.i64(11) < 1)
+    return Error{who + "'s evaluations is " + std::to_string(s.i64(11)) + ", not a count (at least 1)"};
   for (auto [c, field] : {std::pair{5, "parent1"}, {6, "parent2"}})
     if (!s.null(c))
       if (Status t = number_column(s.raw(), c, who + "'s " + field); !t) return Error{t.error()};
@@ -323,6 +342,7 @@ Result<Individual> RunStore::individual(std::int64_t id) const {
   ind.parent2 = s.null(6) ? -1 : s.i64(6);
   ind.op = s.text(7);
   ind.failure = s.text(8);
+  ind.evaluations = static_cast<int>(std::min<std::int64_t>(s.i64(11), 1 << 30));
   // the stored evaluation seed; an older database's individual was evaluated
   // with the seed derived from the run's master seed and its id
   const std::string seed = s.text(9);

@@ -1,6 +1,7 @@
 // The run database (SQLite, Revolve2's convention): the run with its seed and
 // build version; per generation its statistics; per individual its genotype
-// (kind and JSON form), fitness, parents, operator and failure; and the checkpoint, written in the
+// (kind and JSON form), fitness (the mean of its evaluations) and their
+// count, parents, operator and failure; and the checkpoint, written in the
 // same transaction as the generation it closes, so the database is always at
 // a generation boundary, whenever the process is killed.
 #pragma once
@@ -37,10 +38,11 @@ class RunStore {
   static Result<std::unique_ptr<RunStore>> open(const std::string& path);
   ~RunStore();
 
-  /// Stores one generation: its statistics, the individuals born in it and
-  /// the checkpoint after it, all or nothing.
+  /// Stores one generation: its statistics, the individuals born in it,
+  /// the new fitness and evaluation count of earlier ones evaluated again,
+  /// and the checkpoint after it, all or nothing.
   Status write_generation(const GenerationStats& stats, const std::vector<Individual>& born,
-                          const Checkpoint& cp);
+                          const std::vector<Individual>& reevaluated, const Checkpoint& cp);
   /// The last checkpoint, if any generation was stored; an error names a
   /// malformed one.
   Result<std::optional<Checkpoint>> checkpoint() const;
@@ -76,6 +78,7 @@ class RunStore {
   bool read_only_ = false;
   bool seed_column_ = true;  ///< false: an older database opened read-only, without individual.seed
   bool kind_column_ = true;  ///< false: one without individual.kind (its genotypes are graph genomes)
+  bool evaluations_column_ = true;  ///< false: one without individual.evaluations (each was evaluated once)
 };
 
 }  // namespace bx

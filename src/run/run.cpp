@@ -264,14 +264,15 @@ Status drive_run(const std::string& dir, const RunOptions& opt) {
 
   for (int done = 0; !evo.finished(state); ++done) {
     if (opt.stop_after > 0 && done >= opt.stop_after) break;
+    const long evaluations_before = state.evaluations;
     GenerationResult res = evo.step(state, *evaluator);
     Checkpoint cp{state.generation, state.evaluations, state.next_id, {}};
     for (const auto& ind : state.population) cp.population.push_back(ind.id);
-    if (Status s = store.write_generation(res.stats, res.born, cp); !s)
+    if (Status s = store.write_generation(res.stats, res.born, res.reevaluated, cp); !s)
       return Error{run_db_path(dir) + ": " + s.error()};
 
     // progress: one updating line on a terminal, else a line per generation
-    evals_this_session += static_cast<long>(res.born.size());
+    evals_this_session += state.evaluations - evaluations_before;  // elites evaluated again too
     double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     double rate = elapsed > 0 ? evals_this_session / elapsed : 0;
     int gens_left = total - 1 - state.generation;

@@ -115,6 +115,36 @@ TEST_F(Runs, CatapultRunsAreTheSameForAnyWorkersAndResumeExactly) {
   EXPECT_EQ(dump(stopped), expected);
 }
 
+// evolution.elite_evaluations: elites evaluated again change rows of earlier
+// generations; the database still resumes exactly after any generation
+TEST_F(Runs, ElitesEvaluatedAgainResumeExactly) {
+  std::string text = kConfig;
+  text.insert(text.find("[task]"), "elite_evaluations = 3\n");
+  std::string whole = make("whole", 9, text.c_str());
+  ASSERT_TRUE(drive_run(whole, {2, true, 0}).ok());
+  std::string expected = dump(whole);
+  // the elite (2 of 10) has 3 evaluations each; the database has them
+  EXPECT_GE(std::stoi(bxtest::query(run_db_path(whole), "SELECT count(*) FROM individual WHERE evaluations = 3")), 2);
+  // (one whose mean fell out of the elite on the way keeps fewer)
+  EXPECT_EQ(bxtest::query(run_db_path(whole), "SELECT count(*) FROM individual WHERE evaluations NOT IN (1, 2, 3)"),
+            "0|\n");
+  for (int stop : {1, 2}) {
+    std::string dir = make("stop" + std::to_string(stop), 9, text.c_str());
+    ASSERT_TRUE(drive_run(dir, {2, true, stop}).ok());
+    ASSERT_TRUE(drive_run(dir, {1, true, 0}).ok());
+    EXPECT_EQ(dump(dir), expected) << "stopped after " << stop;
+  }
+  // each evaluation is counted: 10 + 3 x 8 children, and 2 more for each elite entrant
+  auto store = RunStore::open(run_db_path(whole));
+  ASSERT_TRUE(store.ok());
+  auto gens = (*store)->generations();
+  ASSERT_EQ(gens.size(), 4u);
+  EXPECT_GT(gens.back().evaluations, 34);
+  auto best = (*store)->best_individual();
+  ASSERT_TRUE(best.ok());
+  EXPECT_EQ(best->evaluations, 3);
+}
+
 TEST_F(Runs, CreateRefusesAnExistingDirectory) {
   std::string dir = make("taken");
   auto cfg = read_run_config(kConfig, "test.toml");
