@@ -65,7 +65,8 @@ Evolution::Evolution(std::shared_ptr<const GenotypeOps> ops, EvolutionDef evo, s
 
 bool Evolution::finished(const EvolutionDef& evo, const EvolutionState& s) {
   if (evo.algorithm == Algorithm::Generational) return s.generation + 1 >= evo.generations;
-  return s.generation >= 0 && s.evaluations >= evo.population + evo.evaluations;
+  // the budget counts creatures born (tournaments); elites evaluated again cost extra
+  return s.generation >= 0 && s.next_id >= evo.population + evo.evaluations;
 }
 
 int Evolution::total_generations() const { return bx::total_generations(evo_); }
@@ -136,14 +137,15 @@ int Evolution::elite_count(int n) const {
   return std::clamp(static_cast<int>(std::lround(evo_.elite_fraction * n)), 1, n);
 }
 
-// The elite that will survive into the next generation, each evaluated again
+// The elite that will survive into the next generation (steady state: the
+// best elite_fraction at the end of a report interval), each evaluated again
 // under a fresh seed until it has elite_evaluations, its fitness the mean; one
 // whose mean falls out of the elite makes room for the next, evaluated in turn.
 // Returns the individuals born in earlier steps that were evaluated again;
 // those born in this step are updated in `born`.
 std::vector<Individual> Evolution::reevaluate_elite(EvolutionState& s, Evaluator& eval, long& failed,
                                                     std::vector<Individual>& born) const {
-  if (evo_.elite_evaluations <= 1 || evo_.algorithm != Algorithm::Generational) return {};
+  if (evo_.elite_evaluations <= 1) return {};
   const int n = static_cast<int>(s.population.size());
   const int elite = elite_count(n);
   std::set<int> touched;
@@ -269,16 +271,18 @@ GenerationResult Evolution::generational(EvolutionState& s, Evaluator& eval) con
 GenerationResult Evolution::steady_state(EvolutionState& s, Evaluator& eval) const {
   const long every = evo_.report_every > 0 ? evo_.report_every : evo_.population;
   const long total = evo_.population + evo_.evaluations;
-  const long until = std::min(total, s.evaluations + every);
+  // creatures born so far: the budget and the intervals count tournaments, so
+  // that elites evaluated again (elite_evaluations) do not shift them
+  const long until = std::min(total, static_cast<long>(s.next_id) + every);
   const int pop = static_cast<int>(s.population.size());
   long rejected = 0, failed = 0;
   GenerationResult res;
 
-  while (s.evaluations < until) {
+  while (s.next_id < until) {
     // one batch of tournaments over disjoint triples of the current population
-    int n = static_cast<int>(std::min<long>({evo_.batch, until - s.evaluations, pop / 3}));
+    int n = static_cast<int>(std::min<long>({evo_.batch, until - static_cast<long>(s.next_id), pop / 3}));
     n = std::max(n, 1);
-    Rng rng(stream_seed({seed_, kTournament, static_cast<std::uint64_t>(s.evaluations)}));
+    Rng rng(stream_seed({seed_, kTournament, static_cast<std::uint64_t>(s.next_id)}));
     std::vector<int> idx(pop);
     std::iota(idx.begin(), idx.end(), 0);
     for (int i = 0; i < 3 * n; ++i) std::swap(idx[i], idx[i + rng.below(pop - i)]);
@@ -312,6 +316,7 @@ GenerationResult Evolution::steady_state(EvolutionState& s, Evaluator& eval) con
     for (std::size_t k = 0; k < born.size(); ++k) s.population[replaced[k]] = born[k];
     res.born.insert(res.born.end(), born.begin(), born.end());
   }
+  res.reevaluated = reevaluate_elite(s, eval, failed, res.born);
   s.generation += 1;
   res.stats = stats(s);
   res.stats.rejected = rejected;

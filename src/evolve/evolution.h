@@ -51,8 +51,8 @@ struct GenerationStats {
 /// Where a run stands; what a checkpoint holds.
 struct EvolutionState {
   int generation = -1;    ///< last completed generation
-  long evaluations = 0;   ///< cumulative evaluations
-  std::int64_t next_id = 0;
+  long evaluations = 0;   ///< cumulative evaluations, elites evaluated again included
+  std::int64_t next_id = 0;  ///< also the count of creatures born: a steady-state budget counts these
   std::vector<Individual> population;
 };
 

@@ -23,7 +23,7 @@ struct EvolutionDef {
   int population = 300;           ///< chaumont2007 5.2: 300; miconi2006 6.1: 500
   // generational (chaumont2007)
   int generations = 100;          ///< chaumont2007 5.2: 100
-  double elite_fraction = 0.2;    ///< the best 20% survive (5.2)
+  double elite_fraction = 0.2;    ///< the best 20% survive (5.2); steady state: the elite elite_evaluations re-evaluates
   Selection selection = Selection::Rank;
   double p_asexual = 0.4;         ///< children from mutation alone (5.7)
   double p_crossover = 0.3;       ///< children from crossover (5.7)
@@ -31,11 +31,6 @@ struct EvolutionDef {
   double asexual_rate = 0.10;     ///< per-parameter mutation probability of asexual children
   double sexual_mutation_chance = 0.10;  ///< chance that a crossover/graft child is mutated
   double sexual_rate = 0.05;      ///< its per-site probability
-  /// Evaluations an elite's fitness is the mean of: after each generation
-  /// the best elite_fraction are evaluated again, each under a fresh seed,
-  /// until every one has this many, so a lucky evaluation does not keep a
-  /// creature alive (issue 11). 1: each creature is evaluated once (the paper).
-  int elite_evaluations = 1;
   // steady state (miconi2006)
   long evaluations = 500000;      ///< cycles after the initial population (6.1: 500,000)
   double mutation_rate = 0.04;    ///< P_mut (5.1)
@@ -45,6 +40,12 @@ struct EvolutionDef {
   /// paper's strictly sequential loop. Results never depend on the workers.
   int batch = 8;
   // both
+  /// Evaluations an elite's fitness is the mean of: after each generation
+  /// (steady state: report interval) the best elite_fraction are evaluated
+  /// again, each under a fresh seed, until every one has this many, so a
+  /// lucky evaluation does not keep a creature alive nor make the run's best
+  /// (issue 11). 1: each creature is evaluated once (the papers).
+  int elite_evaluations = 1;
   int max_regenerations = 1000;   ///< non-viable children redrawn at most this often, then a random genome
   double evaluation_timeout = 120;  ///< seconds before a worker's evaluation is abandoned
   /// Fitness of an evaluation that blew up, crashed or timed out: "an

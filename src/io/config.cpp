@@ -99,7 +99,7 @@ const std::vector<Field>& fields() {
       {"evolution", "algorithm", Field::Choice, 0, 0, {"generational", "steady_state"}, [](RunConfig& c) -> void* { return &c.evolution.algorithm; }, "generational (chaumont2007) or steady_state (miconi2006)"},
       {"evolution", "population", Field::Int, 3, 1000000, {}, [](RunConfig& c) -> void* { return &c.evolution.population; }, "individuals in the population"},
       {"evolution", "generations", Field::Int, 1, 1000000, {}, [](RunConfig& c) -> void* { return &c.evolution.generations; }, "generational: generations, the random one included"},
-      {"evolution", "elite_fraction", Field::Real, 0, 1, {}, [](RunConfig& c) -> void* { return &c.evolution.elite_fraction; }, "generational: fraction of the best that survive"},
+      {"evolution", "elite_fraction", Field::Real, 0, 1, {}, [](RunConfig& c) -> void* { return &c.evolution.elite_fraction; }, "generational: fraction of the best that survive (steady state: that elite_evaluations evaluates again)"},
       {"evolution", "selection", Field::Choice, 0, 0, {"rank", "proportionate", "uniform"}, [](RunConfig& c) -> void* { return &c.evolution.selection; }, "generational: rank, proportionate or uniform choice of parents among survivors"},
       {"evolution", "p_asexual", Field::Real, 0, 1, {}, [](RunConfig& c) -> void* { return &c.evolution.p_asexual; }, "share of children by mutation alone (steady state: asexual_mutations of the tournament's best)"},
       {"evolution", "p_crossover", Field::Real, 0, 1, {}, [](RunConfig& c) -> void* { return &c.evolution.p_crossover; }, "share of children by crossover (steady state: then mutated at mutation_rate)"},
@@ -107,11 +107,11 @@ const std::vector<Field>& fields() {
       {"evolution", "asexual_rate", Field::Real, 0, 1, {}, [](RunConfig& c) -> void* { return &c.evolution.asexual_rate; }, "generational: per-parameter mutation probability of asexual children"},
       {"evolution", "sexual_mutation_chance", Field::Real, 0, 1, {}, [](RunConfig& c) -> void* { return &c.evolution.sexual_mutation_chance; }, "generational: chance that a crossover/graft child is mutated"},
       {"evolution", "sexual_rate", Field::Real, 0, 1, {}, [](RunConfig& c) -> void* { return &c.evolution.sexual_rate; }, "generational: ... at this per-site probability"},
-      {"evolution", "elite_evaluations", Field::Int, 1, 1000, {}, [](RunConfig& c) -> void* { return &c.evolution.elite_evaluations; }, "generational: the survivors are evaluated again under fresh seeds until each fitness is the mean of this many (1: once)"},
-      {"evolution", "evaluations", Field::Long, 0, 1e12, {}, [](RunConfig& c) -> void* { return &c.evolution.evaluations; }, "steady state: tournaments after the initial population"},
+      {"evolution", "evaluations", Field::Long, 0, 1e12, {}, [](RunConfig& c) -> void* { return &c.evolution.evaluations; }, "steady state: tournaments after the initial population (elites evaluated again come on top)"},
       {"evolution", "mutation_rate", Field::Real, 0, 1, {}, [](RunConfig& c) -> void* { return &c.evolution.mutation_rate; }, "steady state: P_mut of the mutation operator"},
       {"evolution", "asexual_mutations", Field::Int, 1, 1000, {}, [](RunConfig& c) -> void* { return &c.evolution.asexual_mutations; }, "steady state: mutations applied to make an asexual child"},
       {"evolution", "batch", Field::Int, 1, 100000, {}, [](RunConfig& c) -> void* { return &c.evolution.batch; }, "steady state: tournaments evaluated together (disjoint triples); 1 = strictly sequential"},
+      {"evolution", "elite_evaluations", Field::Int, 1, 1000, {}, [](RunConfig& c) -> void* { return &c.evolution.elite_evaluations; }, "the elite (elite_fraction) is evaluated again under fresh seeds after each generation (steady state: report interval) until each fitness is the mean of this many (1: once)"},
       {"evolution", "max_regenerations", Field::Int, 0, 1000000, {}, [](RunConfig& c) -> void* { return &c.evolution.max_regenerations; }, "non-viable children redrawn at most this often, then a random genome"},
       {"evolution", "evaluation_timeout", Field::Real, 0.1, 1e6, {}, [](RunConfig& c) -> void* { return &c.evolution.evaluation_timeout; }, "seconds before a worker's evaluation is abandoned as failed"},
       {"evolution", "failed_fitness", Field::Real, -1e12, 1e12, {}, [](RunConfig& c) -> void* { return &c.evolution.failed_fitness; }, "fitness of an evaluation that blew up, crashed or timed out (below any real score)"},
@@ -354,9 +354,6 @@ Status apply_config_toml(RunConfig& cfg, std::string_view text, std::string_view
   if (std::abs(e.p_asexual + e.p_crossover + e.p_graft - 1) > 1e-9)
     return Error{std::string(source) + ": evolution.p_asexual + p_crossover + p_graft: must sum to 1, got " +
                  num(std::round((e.p_asexual + e.p_crossover + e.p_graft) * 1e9) / 1e9)};
-  if (e.elite_evaluations > 1 && e.algorithm != Algorithm::Generational)
-    return Error{std::string(source) + ": evolution.elite_evaluations = " + std::to_string(e.elite_evaluations) +
-                 ": the steady-state algorithm keeps no elite (set it to 1, or use the generational one)"};
   cfg = out;
   return Ok{};
 }

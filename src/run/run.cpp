@@ -150,6 +150,7 @@ Result<RunProgress> run_progress(const std::string& dir) {
   if (*cp) {
     state.generation = (*cp)->generation;
     state.evaluations = (*cp)->evaluations;
+    state.next_id = (*cp)->next_id;
   }
   p.generations_done = state.generation + 1;
   p.generations_total = total_generations(run->cfg.evolution);
@@ -175,15 +176,15 @@ Status extend_run(const std::string& dir, const std::vector<std::string>& overri
   if (!cp_r) return Error{cp_r.error()};
   const auto& cp = *cp_r;
   const int done = cp ? cp->generation + 1 : 0;
-  const long evaluations = cp ? cp->evaluations : 0;
+  const long born = cp ? static_cast<long>(cp->next_id) : 0;  // creatures born: the budget's count
   const EvolutionDef &was = old->evolution, &now = cfg->evolution;
   if (generational && now.generations < done)
     return Error{"--set evolution.generations=" + std::to_string(now.generations) + ": the run has done " +
                  std::to_string(done) + " generations already"};
   if (!generational) {
-    if (now.population + now.evaluations < evaluations)
+    if (now.population + now.evaluations < born)
       return Error{"--set evolution.evaluations=" + std::to_string(now.evaluations) + ": the run has done " +
-                   std::to_string(evaluations - now.population) + " already"};
+                   std::to_string(born - now.population) + " already"};
     // a longer run's intervals match this one's only if its budget ended on one
     const long every = was.report_every > 0 ? was.report_every : was.population;
     if (now.evaluations > was.evaluations && was.evaluations % every != 0)

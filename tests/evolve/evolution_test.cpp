@@ -246,15 +246,18 @@ class NoisyTarget : public Evaluator {
   double amplitude_;
 };
 
-// evolution.elite_evaluations: after every generation the elite that will
-// survive has each been evaluated that many times under its own seeds, its
-// fitness their mean, and the run's best overstates its true fitness less
+// evolution.elite_evaluations: after every generation (steady state: report
+// interval) the elite has each been evaluated that many times under its own
+// seeds, its fitness their mean, and it overstates its true fitness less
 // than when each creature is evaluated once (the winner's curse).
-TEST(EliteEvaluations, EverySurvivorIsTheMeanOfItsEvaluationsAndLuckCountsLess) {
+class EliteEvaluations : public ::testing::TestWithParam<Algorithm> {};
+
+TEST_P(EliteEvaluations, EveryEliteIsTheMeanOfItsEvaluationsAndLuckCountsLess) {
   auto ops = std::make_shared<FloatVectorOps>(FloatVectorDef{10, -1, 1, 0.1});
   auto run = [&](int n, std::vector<GenerationResult>* results = nullptr) {
-    EvolutionDef e = float_evolution(Algorithm::Generational);
+    EvolutionDef e = float_evolution(GetParam());
     e.generations = 15;
+    e.evaluations = 450;
     e.elite_evaluations = n;
     Evolution evo(ops, e, 11);
     NoisyTarget problem(0.3, 0.3);
@@ -290,6 +293,9 @@ TEST(EliteEvaluations, EverySurvivorIsTheMeanOfItsEvaluationsAndLuckCountsLess) 
       if (results) results->push_back(r);
     }
     if (n == 1) EXPECT_EQ(problem.evaluations, born);
+    // the budget counts creatures born, whatever the re-evaluations
+    EXPECT_EQ(born, e.algorithm == Algorithm::Generational ? e.population * e.generations - 6 * (e.generations - 1)
+                                                             : e.population + e.evaluations);
     // the elite's luck: how far its stored fitness overstates the true one, on average
     std::sort(s.population.begin(), s.population.end(),
               [](const Individual& a, const Individual& b) { return a.fitness > b.fitness; });
@@ -307,6 +313,12 @@ TEST(EliteEvaluations, EverySurvivorIsTheMeanOfItsEvaluationsAndLuckCountsLess) 
   EXPECT_GT(luck1, 0.2);
   EXPECT_LT(luck4, 0.7 * luck1) << luck1;
 }
+
+INSTANTIATE_TEST_SUITE_P(Both, EliteEvaluations,
+                         ::testing::Values(Algorithm::Generational, Algorithm::SteadyState),
+                         [](const auto& info) {
+                           return info.param == Algorithm::Generational ? "Generational" : "SteadyState";
+                         });
 
 TEST(Breeding, GraftingNeedsAKindThatHasIt) {
   EvolutionDef e = float_evolution(Algorithm::Generational);

@@ -48,9 +48,6 @@ TEST(Config, BadInputNamesTheKeyAndTheValue) {
   EXPECT_EQ(apply_error("[evolution]\nalgorithm = \"generational\"\np_asexual = 0.5\np_crossover = 0.3\n"
                         "p_graft = 0.4\n"),
             "run.toml: evolution.p_asexual + p_crossover + p_graft: must sum to 1, got 1.2");
-  EXPECT_EQ(apply_error("[evolution]\nalgorithm = \"steady_state\"\nelite_evaluations = 3\n"),
-            "run.toml: evolution.elite_evaluations = 3: the steady-state algorithm keeps no elite (set it to 1, "
-            "or use the generational one)");
   EXPECT_EQ(apply_error("[evolution]\nelite_evaluations = 0\n"),
             "run.toml: evolution.elite_evaluations: out of range [1, 1000], got 0");
 }
