@@ -115,9 +115,9 @@ const Golden kGolden[] = {
      "36a3adedefab3510", "5b23c06d4730eabc"},
     {"miconi2006-small",
      "--set evolution.population=10 --set evolution.evaluations=40 --set task.seconds=10",
-     "ff276c228b2927ab", "b136c7a20b2c2078"},
+     "eea8133503290a65", "b136c7a20b2c2078"},
     {"chaumont2007-catapult-small", "--set evolution.population=10 --set evolution.generations=3",
-     "4dd0a22ccfb06e02", "25981423aad3251e"},
+     "914ce00636adbf54", "2b7743550c220f2e"},
     {"sims1994-walker", "--set evolution.population=10 --set evolution.generations=3",
      "f2db05190ff162cf", "1ce8ca88dbdfe94e"},
 };
