@@ -14,7 +14,8 @@ second half at least half as far as over the first half, and more than half a
 body length; "exploded" when that doubled run ended in an explosion test.
 
 For every run also `bestiary check` of its best: its fitness re-simulated
-under 5 other physics seeds (the median ratio to the scored fitness), at dt/2
+under 5 other physics seeds (the median ratio to the scored fitness: an
+elite's mean over its evaluations, evolution.elite_evaluations), at dt/2
 and dt/4, at twice the solver iterations and with every effector clamped to
 its mean, the largest joint separation, and the verdict (its gates are the
 run's [check] config keys, or --check-set's).
@@ -105,7 +106,9 @@ def check_row(preset, seed, run_dir, check_set=()):
     cell = lambda n: ("failed" if ratio[n]["failed"] else f"{ratio[n]['ratio']:.2f}") if n in ratio else "-"
     verdict = "pass" if c["passed"] else "FAIL: " + "; ".join(c["failures"])
     active = sum(1 for sd in c["effector_sd"] if sd >= 0.1)
-    return (f"| {preset} | {seed} | {c['fitness']:.4g} | {c['median_other_seeds']:.2f} | {cell('dt/2')} | "
+    # the fitness selection saw: under elite_evaluations the mean of several evaluations
+    scored = c.get("scored_fitness", c["fitness"])
+    return (f"| {preset} | {seed} | {scored:.4g} | {c['median_other_seeds']:.2f} | {cell('dt/2')} | "
             f"{cell('dt/4')} | {cell('2x iterations')} | {cell('clamped')} | "
             f"{active}/{len(c['effector_sd'])} | {100 * c['max_joint_gap']:.1f} | {verdict} |")
 
