@@ -99,6 +99,14 @@ CheckReport check_creature(const CreatureModel& m, const SimConfig& cfg, std::ui
     c.effector_clamp = rep.scored.diagnostics.effector_mean;
     clamped = run("clamped", c, seed, scored);
   }
+  // every joint held still, the controller still acting on the task (a
+  // catapult's release): a throw that keeps its distance is a fall
+  double held = -1;
+  if (!m.effectors.empty()) {
+    SimConfig c = cfg;
+    c.hold_joints = true;
+    held = run("held", c, seed, scored);
+  }
 
   // the gates
   if (!(scored > 0) || !(rep.scored_fitness > 0)) {
@@ -113,6 +121,8 @@ CheckReport check_creature(const CreatureModel& m, const SimConfig& cfg, std::ui
       rep.failures.push_back(name + " keeps " + fixed(ratio) + " < " + fixed(def.min_converged));
   if (clamped > def.max_clamped)
     rep.failures.push_back("clamped effectors keep " + fixed(clamped) + " > " + fixed(def.max_clamped));
+  if (held > def.max_held)
+    rep.failures.push_back("held joints keep " + fixed(held) + " > " + fixed(def.max_held));
   return rep;
 }
 

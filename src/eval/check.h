@@ -21,6 +21,11 @@ struct CheckDef {
   double min_other_seeds = 0.75;  ///< their median must keep this much
   double min_converged = 0.75;    ///< dt/2, dt/4 and twice the iterations each keep this much
   double max_clamped = 0.25;      ///< effectors held at their means keep at most this much
+  /// Every joint held still by its motor (the controller still releasing a
+  /// catapult's projectile) keeps at most this much: a throw that survives
+  /// it is a fall, not a swing (docs/physics.md cause 20). A walker held
+  /// still goes nowhere, so for locomotion this gate asks what `clamped` asks.
+  double max_held = 0.5;
   /// dt/2, dt/4 and twice the iterations are each evaluated under this many
   /// seeds (the scored one and the first other seeds) and compared by their
   /// median with the median at dt under the same seeds. 1: one evaluation
@@ -32,7 +37,7 @@ struct CheckDef {
 
 /// One re-evaluation of a check.
 struct CheckVariant {
-  std::string name;   ///< "seed 2", "dt/2", "dt/4", "2x iterations", "clamped"
+  std::string name;   ///< "seed 2", "dt/2", "dt/4", "2x iterations", "clamped", "held"
   /// its evaluation (under converge_seeds > 1: the scored seed's, with the
   /// median fitness over the seeds)
   EvalResult result;

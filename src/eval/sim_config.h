@@ -57,6 +57,12 @@ struct SimConfig {
   /// non-empty the brain is bypassed and effector e holds effector_clamp[e]
   /// (one value: every effector holds it) whenever the controller is on.
   std::vector<double> effector_clamp;
+  /// Diagnostics (`bestiary check`'s "held"), not a config key: whenever the
+  /// controller is on, every effector's motor holds its joint still (target
+  /// speed 0 at its full force) instead of following its signal, while the
+  /// controller still takes the task's actions (a catapult's release): what
+  /// is left of a throw then is a fall, not a swing.
+  bool hold_joints = false;
   friend bool operator==(const SimConfig&, const SimConfig&) = default;
 };
 

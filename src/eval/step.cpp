@@ -74,7 +74,8 @@ bool step(const CreatureModel& m, const SimConfig& cfg, EvalState& s) {
 
   // act: the motors follow the controller only while the task has it on
   const bool on = s.task->controller_on();
-  s.signals = !on ? std::span<const double>(s.motors_off)
+  const bool hold = on && cfg.hold_joints;
+  s.signals = !on || hold ? std::span<const double>(s.motors_off)
              : s.clamp.empty() ? s.controller->effectors() : std::span<const double>(s.clamp);
   if (on) {
     // the signals' activity, for diagnostics
@@ -85,7 +86,13 @@ bool step(const CreatureModel& m, const SimConfig& cfg, EvalState& s) {
     ++s.driven_steps;
   }
   s.world.apply_effectors(m, cfg.motor, s.signals);
-  if (!on && cfg.motor.off_brake > 0) s.world.brake_effectors(m, cfg.motor);
+  if (hold) {
+    MotorDef full = cfg.motor;
+    full.off_brake = 1;  // every motor holds its joint with all its force
+    s.world.brake_effectors(m, full);
+  } else if (!on && cfg.motor.off_brake > 0) {
+    s.world.brake_effectors(m, cfg.motor);
+  }
 
   // step, and end a blown-up simulation with a failing score
   s.world.step();

@@ -125,6 +125,7 @@ const std::vector<Field>& fields() {
       {"check", "min_other_seeds", Field::Real, 0, 1e6, {}, [](RunConfig& c) -> void* { return &c.check.min_other_seeds; }, "check: their median fitness must keep this share of the scored one"},
       {"check", "min_converged", Field::Real, 0, 1e6, {}, [](RunConfig& c) -> void* { return &c.check.min_converged; }, "check: dt/2, dt/4 and twice the solver iterations each keep this share"},
       {"check", "max_clamped", Field::Real, 0, 1e6, {}, [](RunConfig& c) -> void* { return &c.check.max_clamped; }, "check: with every effector held at its mean, at most this share"},
+      {"check", "max_held", Field::Real, 0, 1e6, {}, [](RunConfig& c) -> void* { return &c.check.max_held; }, "check: with every joint held still by its motor (a catapult still releasing), at most this share"},
       {"check", "converge_seeds", Field::Int, 1, 100, {}, [](RunConfig& c) -> void* { return &c.check.converge_seeds; }, "check: dt/2, dt/4 and 2x iterations each as the median over this many seeds, against the median at dt (for chaotic tasks)"},
   };
   return f;

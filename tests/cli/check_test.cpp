@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <map>
 #include <vector>
 
@@ -33,14 +34,38 @@ TEST(Check, AnOscillatingSnakePassesEveryGate) {
   ASSERT_EQ(r.code, 0) << r.out << r.err;
   auto j = nlohmann::json::parse(r.out);
   EXPECT_TRUE(j["passed"].get<bool>());
-  EXPECT_EQ(j["variants"].size(), 9u);  // 5 seeds, dt/2, dt/4, 2x iterations, clamped
+  EXPECT_EQ(j["variants"].size(), 10u);  // 5 seeds, dt/2, dt/4, 2x iterations, clamped, held
   EXPECT_GT(ratio(j, "dt/2"), 0.75);
   EXPECT_GT(ratio(j, "dt/4"), 0.75);
   EXPECT_LT(ratio(j, "clamped"), 0.05);  // its motion comes from its oscillating effectors
+  EXPECT_LT(ratio(j, "held"), 0.05);     // and, held still, it goes nowhere
   for (double sd : j["effector_sd"]) EXPECT_GT(sd, 0.5);
   // its torque motors slam joints into their stops: 1.8 cm at worst (sims1994's
   // torque against light parts, docs/physics.md), not the decimetres of QuickStep
   EXPECT_LT(j["max_joint_gap"].get<double>(), 0.03);
+}
+
+// The held gate tells a throw from a fall: with every joint held still by its
+// motor (the release still fired by the controller), catapult-small seed 3's
+// best, a pillar that tips over with constant signals, keeps 0.72 of its
+// throw; seed 1's, which crouches and swings its arm, keeps 0.26.
+TEST(Check, AThrowThatSurvivesHeldJointsIsAFall) {
+  const std::string quick = " --set check.other_seeds=0 --set check.converge_seeds=1 --json";
+  Outcome fall = bestiary("check " + creature("catapult_toppler.json") + quick);
+  ASSERT_EQ(fall.code, 1) << fall.out << fall.err;
+  auto f = nlohmann::json::parse(fall.out);
+  EXPECT_GT(ratio(f, "held"), 0.6);
+  EXPECT_GT(ratio(f, "clamped"), 0.9);  // the clamped gate, off for throws, could not tell
+  EXPECT_EQ(f["failures"][0], "held joints keep " + [&] {
+    char b[16];
+    std::snprintf(b, sizeof b, "%.3g", ratio(f, "held"));
+    return std::string(b);
+  }() + " > 0.5");
+  Outcome thrown = bestiary("check " + creature("catapult_thrower.json") + quick);
+  ASSERT_EQ(thrown.code, 0) << thrown.out << thrown.err;
+  auto t = nlohmann::json::parse(thrown.out);
+  EXPECT_LT(ratio(t, "held"), 0.4);
+  EXPECT_LT(ratio(t, "clamped"), 0.25);
 }
 
 TEST(Check, ACreatureWithAConstantEffectorFailsTheClampedGate) {
