@@ -16,8 +16,8 @@ body length; "exploded" when that doubled run ended in an explosion test.
 For every run also `bestiary check` of its best: its fitness re-simulated
 under 5 other physics seeds (the median ratio to the scored fitness: an
 elite's mean over its evaluations, evolution.elite_evaluations), at dt/2
-and dt/4, at twice the solver iterations and with every effector clamped to
-its mean, the largest joint separation, and the verdict (its gates are the
+and dt/4, at twice the solver iterations, with every effector clamped to
+its mean and with every joint held still by its motor, the largest joint separation, and the verdict (its gates are the
 run's [check] config keys, or --check-set's).
 
 For a throwing run (chaumont2007's catapults) instead: the best fitness of the
@@ -109,7 +109,7 @@ def check_row(preset, seed, run_dir, check_set=()):
     # the fitness selection saw: under elite_evaluations the mean of several evaluations
     scored = c.get("scored_fitness", c["fitness"])
     return (f"| {preset} | {seed} | {scored:.4g} | {c['median_other_seeds']:.2f} | {cell('dt/2')} | "
-            f"{cell('dt/4')} | {cell('2x iterations')} | {cell('clamped')} | "
+            f"{cell('dt/4')} | {cell('2x iterations')} | {cell('clamped')} | {cell('held')} | "
             f"{active}/{len(c['effector_sd'])} | {100 * c['max_joint_gap']:.1f} | {verdict} |")
 
 
@@ -263,8 +263,8 @@ def main():
         print("\n".join(t[1] for t in throws))
     if checks:
         print("\n| preset | seed | best (scored) | other seeds (median) | dt/2 | dt/4 | 2x iterations "
-              "| clamped | active effectors (s.d. >= 0.1) | largest joint gap (cm) | check |")
-        print("|" + "---|" * 11)
+              "| clamped | held | active effectors (s.d. >= 0.1) | largest joint gap (cm) | check |")
+        print("|" + "---|" * 12)
         print("\n".join(checks))
     if not rows:
         return
