@@ -249,7 +249,7 @@ Status set_seconds(SimConfig& sim, const std::optional<double>& seconds) {
 }
 
 std::string Creature::evaluations_note() const {
-  if (evaluations <= 1 || !stored_fitness) return "";
+  if (!scored_settings || evaluations <= 1 || !stored_fitness) return "";
   char buf[128];
   std::snprintf(buf, sizeof buf, "(evaluation 1 of %d; the stored fitness %.6g is their mean)", evaluations,
                 *stored_fitness);

@@ -58,8 +58,8 @@ struct Creature {
   std::optional<double> scored_fitness() const {
     return scored_settings && evaluations == 1 ? stored_fitness : std::nullopt;
   }
-  /// Under several evaluations, what one evaluation shows: "(evaluation 1
-  /// of N; the stored fitness S is their mean)"; else "".
+  /// Evaluated as scored under several evaluations, what one evaluation
+  /// shows: "(evaluation 1 of N; the stored fitness S is their mean)"; else "".
   std::string evaluations_note() const;
 };
 

@@ -73,16 +73,8 @@ int cmd_simulate(const SimulateArgs& a) {
   // folded as the run folded them, so the mean reproduces the stored fitness
   std::vector<double> each;
   double mean = 0;
-  if (creature->scored_settings && creature->evaluations > 1) {
-    const double failed_fitness = creature->cfg.evolution.failed_fitness;
-    mean = res.failed ? failed_fitness : res.fitness;
-    each.push_back(mean);
-    for (int k = 1; k < creature->evaluations; ++k) {
-      EvalResult r = evaluate(m, cfg, repeat_seed(seed, k));
-      each.push_back(r.failed ? failed_fitness : r.fitness);
-      mean = fold_mean(mean, k, each.back());
-    }
-  }
+  if (creature->scored_settings && creature->evaluations > 1)
+    mean = repeated_fitness(m, cfg, seed, creature->evaluations, creature->cfg.evolution.failed_fitness, res, &each);
 
   // report
   double bl = m.body_length();

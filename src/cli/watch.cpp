@@ -79,7 +79,7 @@ void print_result(const Creature& c, const EvalResult& res) {
   if (!c.settings.empty()) std::printf("%s\n", c.settings.c_str());
   std::printf("%s: simulated %.2f s, seed %llu, distance %.4f m, %s\n", c.label.c_str(), res.seconds,
               static_cast<unsigned long long>(c.seed), res.distance, fitness_line(res.fitness, c.scored_fitness()).c_str());
-  if (c.scored_settings && c.evaluations > 1) std::printf("%s\n", c.evaluations_note().c_str());
+  if (std::string note = c.evaluations_note(); !note.empty()) std::printf("%s\n", note.c_str());
   if (res.failed) std::printf("failed: %s\n", res.failure.c_str());
 }
 

@@ -36,17 +36,9 @@ CheckReport check_creature(const CreatureModel& m, const SimConfig& cfg, std::ui
   rep.scored = evaluate(m, cfg, seed);
   const double scored = rep.scored.fitness;
   // what selection saw: the mean over the creature's evaluations, folded as the run folded them
-  rep.scored_fitness = scored;
-  if (evaluations > 1) {
-    rep.scored_fitness = rep.scored.failed ? failed_fitness : scored;
-    rep.scored_by_seed.push_back(rep.scored_fitness);
-    for (int k = 1; k < evaluations; ++k) {
-      const EvalResult r = evaluate(m, cfg, repeat_seed(seed, k));
-      const double f = r.failed ? failed_fitness : r.fitness;
-      rep.scored_by_seed.push_back(f);
-      rep.scored_fitness = fold_mean(rep.scored_fitness, k, f);
-    }
-  }
+  rep.scored_fitness = evaluations > 1 ? repeated_fitness(m, cfg, seed, evaluations, failed_fitness, rep.scored,
+                                                          &rep.scored_by_seed)
+                                       : scored;
   auto ratio = [](double f, double of) { return of > 0 ? f / of : 0; };
   auto run = [&](std::string name, const SimConfig& c, std::uint64_t s, double of) {
     CheckVariant v{std::move(name), evaluate(m, c, s), 0, {}};

@@ -144,6 +144,19 @@ std::uint64_t repeat_seed(std::uint64_t seed, int k) {
 
 double fold_mean(double mean, int n, double next) { return mean + (next - mean) / (n + 1); }
 
+double repeated_fitness(const CreatureModel& m, const SimConfig& cfg, std::uint64_t seed, int evaluations,
+                        double failed_fitness, const EvalResult& first, std::vector<double>* each) {
+  auto scored = [&](const EvalResult& r) { return r.failed ? failed_fitness : r.fitness; };
+  double mean = scored(first);
+  if (each) each->assign(1, mean);
+  for (int k = 1; k < evaluations; ++k) {
+    const double f = scored(evaluate(m, cfg, repeat_seed(seed, k)));
+    if (each) each->push_back(f);
+    mean = fold_mean(mean, k, f);
+  }
+  return mean;
+}
+
 EvalResult evaluate(const CreatureModel& m, const SimConfig& cfg, std::uint64_t seed,
                     Replay* replay) {
   EvalResult res = evaluate_once(m, cfg, seed, replay);

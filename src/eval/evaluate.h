@@ -102,4 +102,12 @@ std::uint64_t repeat_seed(std::uint64_t seed, int k);
 /// repeated evaluations, so both get the same double.
 double fold_mean(double mean, int n, double next);
 
+/// The fitness a run gave a creature it evaluated `evaluations` times (an
+/// elite, evolution.elite_evaluations): the fold_mean of its evaluations
+/// under repeat_seed(seed, 0..evaluations-1), a failed one counting as
+/// `failed_fitness`. `first` is evaluation 0, already simulated; each
+/// evaluation's fitness goes to `each` when given.
+double repeated_fitness(const CreatureModel& m, const SimConfig& cfg, std::uint64_t seed, int evaluations,
+                        double failed_fitness, const EvalResult& first, std::vector<double>* each = nullptr);
+
 }  // namespace bx

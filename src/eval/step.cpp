@@ -86,13 +86,8 @@ bool step(const CreatureModel& m, const SimConfig& cfg, EvalState& s) {
     ++s.driven_steps;
   }
   s.world.apply_effectors(m, cfg.motor, s.signals);
-  if (hold) {
-    MotorDef full = cfg.motor;
-    full.off_brake = 1;  // every motor holds its joint with all its force
-    s.world.brake_effectors(m, full);
-  } else if (!on && cfg.motor.off_brake > 0) {
-    s.world.brake_effectors(m, cfg.motor);
-  }
+  if (hold) s.world.brake_effectors(m, cfg.motor, 1);  // every joint held with all its motor's force
+  else if (!on && cfg.motor.off_brake > 0) s.world.brake_effectors(m, cfg.motor, cfg.motor.off_brake);
 
   // step, and end a blown-up simulation with a failing score
   s.world.step();

@@ -516,11 +516,11 @@ void World::fix_part_to_world(int i) {
   dJointSetFixed(j);
 }
 
-void World::brake_effectors(const CreatureModel& m, const MotorDef& motor) {
+void World::brake_effectors(const CreatureModel& m, const MotorDef& motor, double share) {
   auto& w = *impl_;
   for (const EffectorModel& em : m.effectors) {
     const double full = motor.model == MotorModel::Servo ? motor.max_force : motor.strength * em.cross_section;
-    w.drive(w.joints[em.joint], em.dof, 0, motor.off_brake * full);
+    w.drive(w.joints[em.joint], em.dof, 0, share * full);
   }
 }
 

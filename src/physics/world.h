@@ -56,9 +56,10 @@ class World {
   void apply_effectors(const CreatureModel& m, const MotorDef& motor,
                        std::span<const double> signals);
 
-  /// Brakes every motor (MotorDef::off_brake): speed 0 with that share of its
-  /// full force, in place of what apply_effectors set.
-  void brake_effectors(const CreatureModel& m, const MotorDef& motor);
+  /// Brakes every motor: speed 0 with `share` of its full force (MotorDef::
+  /// off_brake while a task holds the controller off; 1 to hold each joint
+  /// still), in place of what apply_effectors set.
+  void brake_effectors(const CreatureModel& m, const MotorDef& motor, double share);
 
   /// Advances one step: contacts, solver, then the contact flags of sensors.
   void step();

@@ -287,12 +287,18 @@ TEST_P(EliteEvaluations, EveryEliteIsTheMeanOfItsEvaluationsAndLuckCountsLess) {
         EXPECT_LT(ind.generation, s.generation);
         auto in = std::find_if(s.population.begin(), s.population.end(),
                                [&](const Individual& x) { return x.id == ind.id; });
-        if (in != s.population.end()) EXPECT_EQ(in->fitness, ind.fitness);
+        if (in != s.population.end()) {
+          EXPECT_EQ(in->fitness, ind.fitness);
+        }
       }
-      if (n == 1) EXPECT_TRUE(r.reevaluated.empty());
+      if (n == 1) {
+        EXPECT_TRUE(r.reevaluated.empty());
+      }
       if (results) results->push_back(r);
     }
-    if (n == 1) EXPECT_EQ(problem.evaluations, born);
+    if (n == 1) {
+      EXPECT_EQ(problem.evaluations, born);
+    }
     // the budget counts creatures born, whatever the re-evaluations
     EXPECT_EQ(born, e.algorithm == Algorithm::Generational ? e.population * e.generations - 6 * (e.generations - 1)
                                                              : e.population + e.evaluations);
