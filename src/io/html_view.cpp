@@ -66,7 +66,8 @@ std::string view_data_json(const std::vector<LabelledReplay>& replays,
       assert(m.replay_index < static_cast<int>(replays.size()));
       members.push_back({{"id", m.id}, {"gen", m.gen}, {"fitness", m.fitness},
                          {"parent1", id_or_null(m.parent1)}, {"parent2", id_or_null(m.parent2)},
-                         {"operator", m.op}, {"replay_index", m.replay_index >= 0 ? json(m.replay_index) : json(nullptr)}});
+                         {"operator", m.op}, {"replay_index", m.replay_index >= 0 ? json(m.replay_index) : json(nullptr)},
+                         {"evaluations", m.evaluations}});
     }
     out += json{{"name", run->name}, {"seed", run->seed}, {"dialect", run->dialect},
                 {"algorithm", run->algorithm}, {"population", run->population},

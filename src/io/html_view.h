@@ -39,6 +39,7 @@ struct RunMember {
   std::int64_t parent1 = -1, parent2 = -1;
   std::string op;        ///< the operator that made it
   int replay_index = -1; ///< its replay on the page, or -1 when it was not re-simulated
+  int evaluations = 1;   ///< how many evaluations `fitness` is the mean of; its replay is the first
 };
 
 /// A run as its page shows it: where it came from, its generations, the

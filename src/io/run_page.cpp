@@ -132,7 +132,7 @@ Result<RunPage> gather_run_page(const RunStore& store, const std::string& source
   for (const auto& [id, ind] : members) {
     auto r = replay_of.find(id);
     run.members.push_back({id, ind.generation, ind.fitness, ind.parent1, ind.parent2, ind.op,
-                           r == replay_of.end() ? -1 : r->second});
+                           r == replay_of.end() ? -1 : r->second, ind.evaluations});
   }
   return page;
 }

@@ -120,8 +120,10 @@ TEST(Check, ConvergenceCanCompareMediansOverSeveralSeeds) {
 TEST(Check, ARunsBestIsCheckedWithItsOwnConfigAndSeed) {
   fs::path dir = fs::temp_directory_path() / ("bx_check_run_" + std::to_string(::getpid()));
   fs::remove_all(dir);
+  // each creature evaluated once (the next test: an elite's mean of several)
   Outcome run = bestiary("run quick --out " + dir.string() +
-                         " --set evolution.population=12 --set evolution.generations=2 --quiet");
+                         " --set evolution.population=12 --set evolution.generations=2"
+                         " --set evolution.elite_evaluations=1 --quiet");
   ASSERT_EQ(run.code, 0) << run.err;
   Outcome r = bestiary("check " + dir.string() + " --json");
   ASSERT_TRUE(r.code == 0 || r.code == 1) << r.err;
@@ -153,9 +155,11 @@ TEST(Check, AnEliteScoredAsAMeanIsCheckedAndSimulatedAsTheMean) {
   ASSERT_EQ(j["scored_by_seed"].size(), 3u);
   EXPECT_EQ(j["scored_by_seed"][0].get<double>(), j["fitness"].get<double>());
   // the other seeds' ratios are to the mean
-  for (const auto& v : j["variants"])
-    if (v["name"].get<std::string>().rfind("seed ", 0) == 0 && stored > 0)
+  for (const auto& v : j["variants"]) {
+    if (v["name"].get<std::string>().rfind("seed ", 0) == 0 && stored > 0) {
       EXPECT_DOUBLE_EQ(v["ratio"].get<double>(), v["fitness"].get<double>() / stored) << v["name"];
+    }
+  }
   Outcome s = bestiary("simulate " + dir.string() + " --json");
   ASSERT_EQ(s.code, 0) << s.err;
   auto sj = nlohmann::json::parse(s.out);

@@ -30,7 +30,7 @@ TEST(ViewData, HoldsARunItsMembersAndGenomes) {
   run.seed = "18446744073709551615";
   run.population = 10;
   run.generations = {{0, 1.5, 0.5, 0.25, 3, 10, 2, 1}, {1, 2.5, 1.0, 0.75, 12, 20, 0, 0}};
-  run.members = {{3, 0, 1.5, -1, -1, "random", 0}, {12, 1, 2.5, 3, 7, "crossover", 1}, {7, 0, 0.5, -1, -1, "random", -1}};
+  run.members = {{3, 0, 1.5, -1, -1, "random", 0}, {12, 1, 2.5, 3, 7, "crossover", 1, 3}, {7, 0, 0.5, -1, -1, "random", -1}};
   run.best_id = 12;
   run.replay_cap = 2;
   auto d = json::parse(bx::view_data_json({{"g0", kTinyReplay}, {"g1", kTinyReplay, "{\"format\": \"bestiary-genome\"}\n"}}, run));
@@ -40,7 +40,7 @@ TEST(ViewData, HoldsARunItsMembersAndGenomes) {
   EXPECT_EQ(d["run"]["generations"][0],
             json::parse(R"({"gen":0,"best":1.5,"mean":0.5,"median":0.25,"best_id":3,"evaluations":10,"rejected":2,"failed":1})"));
   EXPECT_EQ(d["run"]["members"][1],
-            json::parse(R"({"id":12,"gen":1,"fitness":2.5,"parent1":3,"parent2":7,"operator":"crossover","replay_index":1})"));
+            json::parse(R"({"id":12,"gen":1,"fitness":2.5,"parent1":3,"parent2":7,"operator":"crossover","replay_index":1,"evaluations":3})"));
   // no parent, no replay: null
   EXPECT_TRUE(d["run"]["members"][2]["parent1"].is_null());
   EXPECT_TRUE(d["run"]["members"][2]["replay_index"].is_null());

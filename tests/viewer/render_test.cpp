@@ -82,6 +82,8 @@ TEST_F(RenderCommand, ARunsIndividualHasItsStoredFitness) {
   auto gens = (*store)->generations();
   ASSERT_EQ(gens.size(), 2u);
   std::string id = std::to_string(gens.back().best_id);
+  auto stored = (*store)->individual(gens.back().best_id);
+  ASSERT_TRUE(stored.ok()) << stored.error();
 
   fs::path out = dir / "one.gif";
   r = bestiary("render " + run.string() + ":" + id + " --out " + out.string() +
@@ -96,7 +98,13 @@ TEST_F(RenderCommand, ARunsIndividualHasItsStoredFitness) {
       ++as_scored;
     }
   }
-  EXPECT_EQ(as_scored, 1) << r.out;
+  // an elite evaluated again (quick: 3 times) is rendered as its first evaluation and says so
+  const int n = stored->evaluations;
+  EXPECT_EQ(as_scored, n == 1 ? 1 : 0) << r.out;
+  if (n > 1) {
+    EXPECT_NE(r.out.find("(evaluation 1 of " + std::to_string(n) + "; the stored fitness "), std::string::npos)
+        << r.out;
+  }
   // the settings, said once
   EXPECT_NE(r.out.find("as scored: "), std::string::npos) << r.out;
   EXPECT_EQ(r.out.find("as scored: "), r.out.rfind("as scored: ")) << r.out;

@@ -215,7 +215,8 @@ export function createViewer(ui, data) {
    * The present moment: time, replay, root part's and centre of mass's
    * positions; the replay's fitness; in a run, the individual shown, the
    * generation it is shown as the best of (null for none), whose lineage is
-   * listed and the fitness the run stored for it; for a catapult, the
+   * listed, the fitness the run stored for it and how many evaluations that
+   * is the mean of (the replay is the first); for a catapult, the
    * projectile's centre and whether its flight is drawn.
    */
   function state() {
@@ -225,6 +226,7 @@ export function createViewer(ui, data) {
       t: s.t, replayIndex: s.index, playing: s.playing, camera: rig.mode,
       individual: run ? pick.member.id : null, generation: run ? pick.gen : null, anchor: run ? pick.anchor : null,
       fitness: s.entry.replay.result.fitness ?? null, storedFitness: run ? pick.member.fitness : null,
+      evaluations: run ? pick.member.evaluations ?? 1 : null,
       root: [p.x, p.y, p.z], com: comAt(frames, s.t), sparklines: sparks.rows, signals: signals.rows,
       projectile: s.throw ? centreAt(frames, s.throw.projectile, s.t) : null,
       flight: flight ? flight.drawn && s.flight : false,

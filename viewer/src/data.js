@@ -210,6 +210,8 @@ export function parseRun(run, nReplays, path = 'run') {
     num(m.fitness, `${at}.fitness`);
     for (const k of ['parent1', 'parent2']) if (!isId(m[k])) fail(`${at}.${k}`, 'expected an id or null', m[k]);
     if (typeof m.operator !== 'string') fail(`${at}.operator`, 'expected a string', m.operator);
+    // (pages written before elites were evaluated again have none: one evaluation)
+    if (m.evaluations !== undefined) int(m.evaluations, `${at}.evaluations`, 1);
     if (m.replay_index !== null && int(m.replay_index, `${at}.replay_index`, 0) >= nReplays)
       fail(`${at}.replay_index`, `no such replay (the page has ${nReplays})`, m.replay_index);
   });

@@ -44,7 +44,7 @@ export function infoRows(entry) {
 
 /**
  * What a run says about `member` ({id, gen, fitness, parent1, parent2,
- * operator}) as [name, text] rows; `best` is the run's overall best's id and
+ * operator, evaluations?}) as [name, text] rows; `best` is the run's overall best's id and
  * `bestOf` the generations it was the best of (numbers, in order).
  */
 export function memberRows(member, best, bestOf) {
@@ -56,7 +56,9 @@ export function memberRows(member, best, bestOf) {
     ['parents', parents.length ? parents.join(' and ') : 'none'],
   ];
   if (bestOf.length) rows.push(['best of', `generation${bestOf.length > 1 ? 's' : ''} ${generationRanges(bestOf)}`]);
-  rows.push(['stored fitness', fitness(member.fitness)]);
+  const n = member.evaluations ?? 1;
+  rows.push(['stored fitness', fitness(member.fitness) +
+    (n > 1 ? ` (the mean of ${n} evaluations under fresh seeds; the replay is the first)` : '')]);
   return rows;
 }
 

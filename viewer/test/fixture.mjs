@@ -67,7 +67,7 @@ export function makeRun() {
     population: 10, planned_generations: 6, replay_cap: 3,
     generations: [gen(0, 1, 3, 2, 0), gen(1, 2, 7, 1, 1), gen(2, 3, 12, 0, 0), gen(3, 3, 12, 4, 2), gen(4, 5, 20, 0, 0)],
     members: [
-      member(20, 4, 5, 12, null, 'mutation', 0),
+      { ...member(20, 4, 5, 12, null, 'mutation', 0), evaluations: 3 },
       member(3, 0, 1, null, null, 'random', 1),
       member(7, 1, 2, 3, null, 'mutation', null),
       member(12, 2, 3, 7, 3, 'crossover', 2),

@@ -178,7 +178,8 @@ async function inspectRun(page, a) {
     const s = window.bestiary.state();
     return {
       replayIndex: s.replayIndex, individual: s.individual, generation: s.generation, anchor: s.anchor,
-      fitness: s.fitness, storedFitness: s.storedFitness, label: document.querySelector('#info h1').textContent,
+      fitness: s.fitness, storedFitness: s.storedFitness, evaluations: s.evaluations,
+      label: document.querySelector('#info h1').textContent,
     };
   });
   const lineage = () => page.$$eval('#picker .lineage-item', (bs) => bs.map((b) => ({
