@@ -112,7 +112,7 @@ TEST_F(RunPage, OpensOnTheBestAndReplaysEachCreatureAsTheRunScoredIt) {
   EXPECT_GE(depth, 1) << "the small run's best should descend from generation 0";
   // all of them fit under the cap; each replay is its creature's scored evaluation
   ASSERT_EQ(page->replays.size(), run.members.size());
-  int elites_evaluated_again = 0;
+  int elites_evaluated_again = 0;  // (quick evaluates its elite 3 times)
   for (const auto& [id, m] : members) {
     ASSERT_GE(m.replay_index, 0) << id;
     const bx::LabelledReplay& r = page->replays[m.replay_index];
@@ -144,6 +144,7 @@ TEST_F(RunPage, OpensOnTheBestAndReplaysEachCreatureAsTheRunScoredIt) {
     EXPECT_EQ(r.genome, bx::genome_to_string(*bx::graph_genome(*stored->genotype))) << id;
     EXPECT_EQ(r.label, "individual " + std::to_string(id) + ", generation " + std::to_string(m.gen));
   }
+  EXPECT_GT(elites_evaluated_again, 0) << "the small run should show an elite's mean";
 }
 
 TEST_F(RunPage, ACapKeepsTheBestAndItsLineageAndSaysWhatItLeftOut) {
