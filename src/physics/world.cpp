@@ -18,6 +18,19 @@ namespace {
 
 bool def_stop(double v) { return v >= 0; }
 
+// ODE reads an angle in (-pi, pi]: a stop at +-pi sits where the reading
+// wraps, so a joint pushed past it reads as beyond its other stop, which then
+// turns it on the long way round; under a constant signal the limb spins like
+// a wheel (docs/physics.md cause 22). Angular stops are kept this far inside.
+constexpr double kAngleWrapMargin = 0.25;
+
+Limit inside_angle_wrap(Limit l) {
+  const double bound = kPi - kAngleWrapMargin;
+  l.lo = std::clamp(l.lo, -bound, bound);
+  l.hi = std::clamp(l.hi, -bound, bound);
+  return l;
+}
+
 bool is_linear_dof(JointType t, int dof) {
   return t == JointType::Slider || (t == JointType::Cylindrical && dof == 0);
 }
@@ -497,15 +510,16 @@ void World::add_creature(const CreatureModel& m, const Pose& placement) {
         break;
     }
     // limits per degree of freedom, with the stops' own ERP, CFM and fudge
-    for (std::size_t d = 0; d < jm.limits.size(); ++d) {
+    j.limits = jm.limits;
+    for (std::size_t d = 0; d < j.limits.size(); ++d) {
       int dof = static_cast<int>(d);
-      w.set_param(j, dof, dParamLoStop, jm.limits[d].lo);
-      w.set_param(j, dof, dParamHiStop, jm.limits[d].hi);
+      if (!is_linear_dof(jm.type, dof)) j.limits[d] = inside_angle_wrap(j.limits[d]);
+      w.set_param(j, dof, dParamLoStop, j.limits[d].lo);
+      w.set_param(j, dof, dParamHiStop, j.limits[d].hi);
       if (def_stop(w.def.stop_erp)) w.set_param(j, dof, dParamStopERP, w.def.stop_erp);
       if (def_stop(w.def.stop_cfm)) w.set_param(j, dof, dParamStopCFM, w.def.stop_cfm);
       w.set_param(j, dof, dParamFudgeFactor, w.def.fudge_factor);
     }
-    j.limits = jm.limits;
   }
 }
 

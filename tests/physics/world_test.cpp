@@ -221,6 +221,40 @@ TEST(World, ServoReachesItsTargetVelocityWithinTheLimits) {
   EXPECT_NEAR(out[0], 1.0, 0.1);
 }
 
+// ODE reads a hinge's angle in (-pi, pi]: a stop at -pi is where the reading
+// wraps. A limb driven into it must stay there, not pass it, read as beyond
+// the other stop and be turned the long way round, spinning under a constant
+// signal (docs/physics.md cause 22; an evolved walker went 43 m so).
+TEST(World, ALimbDrivenIntoAStopAtMinusPiStaysThereAndDoesNotSpin) {
+  PhysicsDef def;
+  def.gravity = 0;
+  World w(def);
+  CreatureModel m = pendulum(0.5, 0);
+  m.joints[0].limits = {{-kPi, 0}};
+  EffectorModel e;
+  e.joint = 0;
+  m.effectors.push_back(e);
+  w.add_creature(m, {{0, 0, 0}, Mat3::identity()});
+  w.fix_part_to_world(0);
+  MotorDef motor;
+  motor.model = MotorModel::Servo;
+  motor.max_speed = 8;
+  motor.max_force = 50;
+  double s[1] = {-1};
+  double lowest = 0, highest = -kPi;
+  for (int i = 0; i < 2000; ++i) {
+    w.apply_effectors(m, motor, s);
+    w.step();
+    lowest = std::min(lowest, w.joint_position(0, 0));
+    highest = std::max(highest, w.joint_position(0, 0));
+  }
+  // it reached the stop (kept a little inside -pi) and never came round to the positive side
+  EXPECT_LT(lowest, -2.8);
+  EXPECT_LE(highest, 0.01);
+  EXPECT_NEAR(w.joint_position(0, 0), -(kPi - 0.25), 0.05);
+  EXPECT_NEAR(w.joint_rate(0, 0), 0, 0.05);
+}
+
 TEST(World, AMotorsResponseTimeSmoothsASignalThatFlipsEveryStep) {
   // a motor cannot follow a command that flips sign every brain step (a
   // period-2 oscillation of the brain): with motor.response_time the signal
