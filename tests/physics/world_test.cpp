@@ -51,6 +51,19 @@ CreatureModel pendulum(double length, double start_angle) {
   return m;
 }
 
+// the pendulum with one effector on its hinge and the given stops, in a
+// world without gravity, its pivot fixed: for motor tests
+CreatureModel driven_pendulum(World& w, Limit stops) {
+  CreatureModel m = pendulum(0.5, 0);
+  m.joints[0].limits = {stops};
+  EffectorModel e;
+  e.joint = 0;
+  m.effectors.push_back(e);
+  w.add_creature(m, {{0, 0, 0}, Mat3::identity()});
+  w.fix_part_to_world(0);
+  return m;
+}
+
 TEST(World, FreeFallMatchesClosedForm) {
   PhysicsDef def;
   def.dt = 0.001;
@@ -187,13 +200,7 @@ TEST(World, ServoReachesItsTargetVelocityWithinTheLimits) {
   PhysicsDef def;
   def.gravity = 0;
   World w(def);
-  CreatureModel m = pendulum(0.5, 0);
-  m.joints[0].limits = {{-0.3, 0.3}};
-  EffectorModel e;
-  e.joint = 0;
-  m.effectors.push_back(e);
-  w.add_creature(m, {{0, 0, 0}, Mat3::identity()});
-  w.fix_part_to_world(0);
+  CreatureModel m = driven_pendulum(w, {-0.3, 0.3});
   MotorDef motor;
   motor.model = MotorModel::Servo;
   motor.max_speed = 2;
@@ -229,13 +236,7 @@ TEST(World, ALimbDrivenIntoAStopAtMinusPiStaysThereAndDoesNotSpin) {
   PhysicsDef def;
   def.gravity = 0;
   World w(def);
-  CreatureModel m = pendulum(0.5, 0);
-  m.joints[0].limits = {{-kPi, 0}};
-  EffectorModel e;
-  e.joint = 0;
-  m.effectors.push_back(e);
-  w.add_creature(m, {{0, 0, 0}, Mat3::identity()});
-  w.fix_part_to_world(0);
+  CreatureModel m = driven_pendulum(w, {-kPi, 0});
   MotorDef motor;
   motor.model = MotorModel::Servo;
   motor.max_speed = 8;
@@ -442,13 +443,7 @@ TEST(World, PDMotorHoldsTheTargetAngleFromTheSignal) {
   PhysicsDef def;
   def.gravity = 0;
   World w(def);
-  CreatureModel m = pendulum(0.5, 0);
-  m.joints[0].limits = {{-1.0, 1.0}};
-  EffectorModel e;
-  e.joint = 0;
-  m.effectors.push_back(e);
-  w.add_creature(m, {{0, 0, 0}, Mat3::identity()});
-  w.fix_part_to_world(0);
+  CreatureModel m = driven_pendulum(w, {-1.0, 1.0});
   MotorDef motor;
   motor.model = MotorModel::PD;
   motor.kp = 0.25;
