@@ -57,7 +57,7 @@ struct World::Impl {
     std::array<Vec3, 2> on_parent, on_child;
     Vec3 axis_local;
     bool linear = false;
-    std::vector<Limit> limits;  // per degree of freedom, as the model gives them
+    std::vector<Limit> limits;  // per degree of freedom, as ODE has them (angular ones inside_angle_wrap)
   };
 
   PhysicsDef def;
