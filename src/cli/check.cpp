@@ -49,7 +49,7 @@ int cmd_check(const CheckArgs& a) {
     std::fprintf(stderr, "checking %s: %d parts, %zu effectors, seed %llu ...\n", subject->label.c_str(),
                  m.n_parts(), m.effectors.size(), static_cast<unsigned long long>(subject->seed));
   if (!a.json && !subject->settings.empty()) std::fprintf(stderr, "%s\n", subject->settings.c_str());
-  // a run's elite: its other seeds against the mean selection saw
+  // a run's elite: its other seeds against the score selection saw (mean or least)
   const int evaluations = subject->scored_settings ? subject->evaluations : 1;
   CheckReport rep = check_creature(m, sim, subject->seed, subject->cfg.check, evaluations,
                                    subject->cfg.evolution.failed_fitness);
@@ -89,7 +89,7 @@ int cmd_check(const CheckArgs& a) {
   if (s.failed) std::printf("  failed: %s\n", s.failure.c_str());
   if (!rep.scored_by_seed.empty()) {
     // other seeds are compared with what selection saw
-    std::printf("  scored as the mean of %zu evaluations:", rep.scored_by_seed.size());
+    std::printf("  scored as the %s of %zu evaluations:", score_name(sim.trial_score), rep.scored_by_seed.size());
     for (double f : rep.scored_by_seed) std::printf(" %.4g", f);
     std::printf(" = %.6g (other seeds' ratios are to this)\n", rep.scored_fitness);
   }

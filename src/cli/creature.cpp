@@ -251,8 +251,8 @@ Status set_seconds(SimConfig& sim, const std::optional<double>& seconds) {
 std::string Creature::evaluations_note() const {
   if (!scored_settings || evaluations <= 1 || !stored_fitness) return "";
   char buf[128];
-  std::snprintf(buf, sizeof buf, "(evaluation 1 of %d; the stored fitness %.6g is their mean)", evaluations,
-                *stored_fitness);
+  std::snprintf(buf, sizeof buf, "(evaluation 1 of %d; the stored fitness %.6g is their %s)", evaluations,
+                *stored_fitness, score_name(cfg.sim.trial_score));
   return buf;
 }
 

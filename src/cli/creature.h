@@ -44,8 +44,9 @@ struct Creature {
   std::uint64_t seed = 1;
   std::string label;                    ///< "RUN individual 12 (generation 3)", or the file
   std::optional<double> stored_fitness; ///< the fitness its run recorded, when known
-  /// How many evaluations the stored fitness is the mean of (a run's elite,
-  /// evolution.elite_evaluations): under repeat_seed(seed, 0..n-1).
+  /// How many evaluations the stored fitness is the mean (or least: the
+  /// run's task.trial_score) of (a run's elite, evolution.elite_evaluations):
+  /// under repeat_seed(seed, 0..n-1).
   int evaluations = 1;
   std::optional<Individual> individual; ///< a run's individual, as stored
   std::string run_dir;                  ///< its run, if any
@@ -59,7 +60,8 @@ struct Creature {
     return scored_settings && evaluations == 1 ? stored_fitness : std::nullopt;
   }
   /// Evaluated as scored under several evaluations, what one evaluation
-  /// shows: "(evaluation 1 of N; the stored fitness S is their mean)"; else "".
+  /// shows: "(evaluation 1 of N; the stored fitness S is their mean)" (or least,
+  /// as the run's task.trial_score folds them); else "".
   std::string evaluations_note() const;
 };
 

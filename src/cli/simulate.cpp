@@ -69,8 +69,8 @@ int cmd_simulate(const SimulateArgs& a) {
     if (Status s = save_replay(a.replay, m, replay, res, info); !s) return fail(s.error());
   }
 
-  // a run's elite scored as the mean of several evaluations: the others too,
-  // folded as the run folded them, so the mean reproduces the stored fitness
+  // a run's elite scored as the mean (or least) of several evaluations: the
+  // others too, folded as the run folded them, so it reproduces the stored fitness
   std::vector<double> each;
   double mean = 0;
   if (creature->scored_settings && creature->evaluations > 1)
@@ -93,7 +93,7 @@ int cmd_simulate(const SimulateArgs& a) {
     if (!res.trial_fitness.empty()) out["trial_fitness"] = res.trial_fitness;
     if (!each.empty()) {
       out["evaluation_fitness"] = each;
-      out["mean_fitness"] = mean;
+      out["scored_fitness"] = mean;
     }
     if (m.projectile >= 0) {
       out["release_time"] = res.release_time >= 0 ? nlohmann::json(res.release_time) : nlohmann::json(nullptr);
@@ -124,14 +124,15 @@ int cmd_simulate(const SimulateArgs& a) {
   }
   std::printf("%s\n", fitness_line(res.fitness, creature->scored_fitness()).c_str());
   if (!each.empty()) {
-    // the run scored it as the mean of several evaluations, each under its own seed
-    std::printf("the run's fitness is the mean of %zu evaluations (the lines above are the first's):", each.size());
+    // the run scored it as the mean (or least) of several evaluations, each under its own seed
+    std::printf("the run's fitness is the %s of %zu evaluations (the lines above are the first's):",
+                score_name(cfg.trial_score), each.size());
     for (double f : each) std::printf(" %.6g", f);
     std::printf("\n%s\n", fitness_line(mean, creature->stored_fitness).c_str());
   }
   if (!res.trial_fitness.empty()) {
-    // task.trials > 1: the lines above are the first trial's, the fitness the mean
-    std::printf("fitness is the mean of %zu trials (the lines above are the first's):",
+    // task.trials > 1: the lines above are the first trial's, the fitness the mean or least
+    std::printf("fitness is the %s of %zu trials (the lines above are the first's):", score_name(cfg.trial_score),
                 res.trial_fitness.size());
     for (double f : res.trial_fitness) std::printf(" %.6g", f);
     std::printf("\n");

@@ -142,19 +142,23 @@ std::uint64_t repeat_seed(std::uint64_t seed, int k) {
   return k == 0 ? seed : stream_seed({seed, kRepeatStream, static_cast<std::uint64_t>(k)});
 }
 
-double fold_mean(double mean, int n, double next) { return mean + (next - mean) / (n + 1); }
+const char* score_name(TrialScore how) { return how == TrialScore::Min ? "least" : "mean"; }
+
+double fold_score(TrialScore how, double so_far, int n, double next) {
+  return how == TrialScore::Min ? std::min(so_far, next) : so_far + (next - so_far) / (n + 1);
+}
 
 double repeated_fitness(const CreatureModel& m, const SimConfig& cfg, std::uint64_t seed, int evaluations,
                         double failed_fitness, const EvalResult& first, std::vector<double>* each) {
   auto scored = [&](const EvalResult& r) { return r.failed ? failed_fitness : r.fitness; };
-  double mean = scored(first);
-  if (each) each->assign(1, mean);
+  double score = scored(first);
+  if (each) each->assign(1, score);
   for (int k = 1; k < evaluations; ++k) {
     const double f = scored(evaluate(m, cfg, repeat_seed(seed, k)));
     if (each) each->push_back(f);
-    mean = fold_mean(mean, k, f);
+    score = fold_score(cfg.trial_score, score, k, f);
   }
-  return mean;
+  return score;
 }
 
 EvalResult evaluate(const CreatureModel& m, const SimConfig& cfg, std::uint64_t seed,

@@ -97,16 +97,19 @@ std::uint64_t trial_seed(std::uint64_t seed, int trial);
 /// check's seed.
 std::uint64_t repeat_seed(std::uint64_t seed, int k);
 
-/// The mean of n + 1 fitnesses from the mean of the first n (n >= 1) and the next:
-/// the one way a run and the commands that reproduce its scores fold
+/// The score of n + 1 evaluations from that of the first n (n >= 1) and the
+/// next, as task.trial_score folds trials: their mean, or the least of them.
+/// The one way a run and the commands that reproduce its scores fold
 /// repeated evaluations, so both get the same double.
-double fold_mean(double mean, int n, double next);
+double fold_score(TrialScore how, double so_far, int n, double next);
+/// What fold_score takes of the evaluations, for messages: "mean" or "least".
+const char* score_name(TrialScore how);
 
 /// The fitness a run gave a creature it evaluated `evaluations` times (an
-/// elite, evolution.elite_evaluations): the fold_mean of its evaluations
-/// under repeat_seed(seed, 0..evaluations-1), a failed one counting as
-/// `failed_fitness`. `first` is evaluation 0, already simulated; each
-/// evaluation's fitness goes to `each` when given.
+/// elite, evolution.elite_evaluations): the fold_score (cfg.trial_score) of
+/// its evaluations under repeat_seed(seed, 0..evaluations-1), a failed one
+/// counting as `failed_fitness`. `first` is evaluation 0, already simulated;
+/// each evaluation's fitness goes to `each` when given.
 double repeated_fitness(const CreatureModel& m, const SimConfig& cfg, std::uint64_t seed, int evaluations,
                         double failed_fitness, const EvalResult& first, std::vector<double>* each = nullptr);
 

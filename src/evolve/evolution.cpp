@@ -58,8 +58,9 @@ Status check_breeding(const EvolutionDef& evo, const GenotypeOps& ops) {
   return Ok{};
 }
 
-Evolution::Evolution(std::shared_ptr<const GenotypeOps> ops, EvolutionDef evo, std::uint64_t seed)
-    : ops_(std::move(ops)), evo_(evo), seed_(seed) {
+Evolution::Evolution(std::shared_ptr<const GenotypeOps> ops, EvolutionDef evo, std::uint64_t seed,
+                     TrialScore fold)
+    : ops_(std::move(ops)), evo_(evo), seed_(seed), fold_(fold) {
   assert(ops_ && check_breeding(evo_, *ops_).ok());
 }
 
@@ -139,8 +140,9 @@ int Evolution::elite_count(int n) const {
 
 // The elite that will survive into the next generation (steady state: the
 // best elite_fraction at the end of a report interval), each evaluated again
-// under a fresh seed until it has elite_evaluations, its fitness the mean; one
-// whose mean falls out of the elite makes room for the next, evaluated in turn.
+// under a fresh seed until it has elite_evaluations, its fitness their mean or
+// least (fold_: task.trial_score); one whose score falls out of the elite
+// makes room for the next, evaluated in turn.
 // Returns the individuals born in earlier steps that were evaluated again;
 // those born in this step are updated in `born`.
 std::vector<Individual> Evolution::reevaluate_elite(EvolutionState& s, Evaluator& eval, long& failed,
@@ -171,7 +173,7 @@ std::vector<Individual> Evolution::reevaluate_elite(EvolutionState& s, Evaluator
         f = evo_.failed_fitness;
         ++failed;
       }
-      ind.fitness = fold_mean(ind.fitness, ind.evaluations, f);
+      ind.fitness = fold_score(fold_, ind.fitness, ind.evaluations, f);
       ++ind.evaluations;
       touched.insert(due[k]);
     }

@@ -26,8 +26,9 @@ namespace bx {
 struct Individual {
   std::int64_t id = -1;
   std::shared_ptr<const Genotype> genotype;  ///< immutable, so copies of an individual share it
-  /// The mean over its evaluations: the first, when it was born, and those
-  /// under fresh seeds while it was among the elite (evolution.elite_evaluations).
+  /// The mean (or least: Evolution's fold) over its evaluations: the first,
+  /// when it was born, and those under fresh seeds while it was among the
+  /// elite (evolution.elite_evaluations).
   double fitness = 0;
   double distance = 0;  ///< the first evaluation's, the one a replay shows
   std::string failure;  ///< why it failed (crash, timeout, explosion) or scored 0 by rule
@@ -35,7 +36,7 @@ struct Individual {
   std::string op;       ///< random, mutation, crossover, graft
   int generation = 0;   ///< the generation (steady state: the report interval) it was born in
   std::uint64_t seed = 0;  ///< the seed of its first evaluation (the k-th's: repeat_seed(seed, k))
-  int evaluations = 1;     ///< how many evaluations `fitness` is the mean of
+  int evaluations = 1;     ///< how many evaluations `fitness` folds (their mean, or least: Evolution's fold)
 };
 
 /// Statistics of one generation (steady state: one report interval).
@@ -86,7 +87,11 @@ Status check_breeding(const EvolutionDef& evo, const GenotypeOps& ops);
 class Evolution {
  public:
   /// `ops` breeds the run's genotypes; check_breeding(evo, *ops) must hold.
-  Evolution(std::shared_ptr<const GenotypeOps> ops, EvolutionDef evo, std::uint64_t seed);
+  /// `fold` is how an elite's evaluations make its fitness: the run's
+  /// task.trial_score, so an elite evaluated again is scored as one creature
+  /// evaluated over as many trials (fold_score).
+  Evolution(std::shared_ptr<const GenotypeOps> ops, EvolutionDef evo, std::uint64_t seed,
+            TrialScore fold = TrialScore::Mean);
 
   /// True when the run has done all its generations or evaluations.
   bool finished(const EvolutionState& s) const { return finished(evo_, s); }
@@ -119,6 +124,7 @@ class Evolution {
   std::shared_ptr<const GenotypeOps> ops_;
   EvolutionDef evo_;
   std::uint64_t seed_;
+  TrialScore fold_;
 };
 
 }  // namespace bx

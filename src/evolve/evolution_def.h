@@ -40,7 +40,8 @@ struct EvolutionDef {
   /// paper's strictly sequential loop. Results never depend on the workers.
   int batch = 8;
   // both
-  /// Evaluations an elite's fitness is the mean of: after each generation
+  /// Evaluations an elite's fitness is the mean (task.trial_score = min: the
+  /// least) of: after each generation
   /// (steady state: report interval) the best elite_fraction are evaluated
   /// again, each under a fresh seed, until every one has this many, so a
   /// lucky evaluation does not keep a creature alive nor make the run's best

@@ -70,7 +70,8 @@ std::string view_data_json(const std::vector<LabelledReplay>& replays,
                          {"evaluations", m.evaluations}});
     }
     out += json{{"name", run->name}, {"seed", run->seed}, {"dialect", run->dialect},
-                {"algorithm", run->algorithm}, {"population", run->population},
+                {"algorithm", run->algorithm}, {"evaluation_score", run->evaluation_score},
+                {"population", run->population},
                 {"planned_generations", run->planned_generations}, {"generations", gens},
                 {"members", members}, {"best_id", run->best_id}, {"replay_cap", run->replay_cap}}
                .dump();

@@ -39,7 +39,7 @@ struct RunMember {
   std::int64_t parent1 = -1, parent2 = -1;
   std::string op;        ///< the operator that made it
   int replay_index = -1; ///< its replay on the page, or -1 when it was not re-simulated
-  int evaluations = 1;   ///< how many evaluations `fitness` is the mean of; its replay is the first
+  int evaluations = 1;   ///< how many evaluations `fitness` folds (RunView::evaluation_score); its replay is the first
 };
 
 /// A run as its page shows it: where it came from, its generations, the
@@ -48,6 +48,9 @@ struct RunView {
   std::string name;     ///< the preset or config file it was made from
   std::string seed;     ///< the master seed, as text (64 bits do not fit a JavaScript number)
   std::string dialect, algorithm;
+  /// How a member's evaluations make its stored fitness: "mean" or "least"
+  /// (task.trial_score; score_name).
+  std::string evaluation_score = "mean";
   int population = 0;
   int planned_generations = 0;  ///< generations (report intervals) it has when finished
   std::vector<RunGeneration> generations;
@@ -58,7 +61,7 @@ struct RunView {
 
 /// The page's data as JSON text:
 /// {"replays": [{"label", "replay", "genome"?}...], "run": null | {"name", "seed",
-/// "dialect", "algorithm", "population", "planned_generations", "generations":
+/// "dialect", "algorithm", "evaluation_score", "population", "planned_generations", "generations":
 /// [{"gen", "best", "mean", "median", "best_id", "evaluations", "rejected",
 /// "failed"}...], "members": [{"id", "gen", "fitness", "parent1", "parent2"
 /// (null when none), "operator", "replay_index" (null when none)}...],

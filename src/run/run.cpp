@@ -224,7 +224,7 @@ Status drive_run(const std::string& dir, const RunOptions& opt) {
   const RunConfig& cfg = run->cfg;
   auto ops = genotype_ops(cfg);
   if (Status s = check_breeding(cfg.evolution, *ops); !s) return s;
-  Evolution evo(ops, cfg.evolution, run->seed);
+  Evolution evo(ops, cfg.evolution, run->seed, cfg.sim.trial_score);
   // config.toml is the run's config for people to read: the stored one rules
   std::string note;
   const std::string stored = *store.config_text();

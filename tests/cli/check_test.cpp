@@ -137,15 +137,18 @@ TEST(Check, ARunsBestIsCheckedWithItsOwnConfigAndSeed) {
 }
 
 // A run whose elites are the mean of several evaluations
-// (evolution.elite_evaluations): check compares other seeds with that mean,
-// and simulate, directly or from the genome file `best --out` writes,
-// reproduces it bit for bit.
-TEST(Check, AnEliteScoredAsAMeanIsCheckedAndSimulatedAsTheMean) {
-  fs::path dir = fs::temp_directory_path() / ("bx_check_mean_" + std::to_string(::getpid()));
+// (evolution.elite_evaluations), or under task.trial_score = min their least:
+// check compares other seeds with that score, and simulate, directly or from
+// the genome file `best --out` writes, reproduces it bit for bit.
+class CheckElite : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(CheckElite, AnEliteScoredOverSeveralEvaluationsIsCheckedAndSimulatedAsScored) {
+  const std::string score = GetParam();  // task.trial_score
+  fs::path dir = fs::temp_directory_path() / ("bx_check_" + score + "_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   Outcome run = bestiary("run quick --out " + dir.string() +
                          " --set evolution.population=12 --set evolution.generations=2"
-                         " --set evolution.elite_evaluations=3 --quiet");
+                         " --set evolution.elite_evaluations=3 --set task.trial_score=" + score + " --quiet");
   ASSERT_EQ(run.code, 0) << run.err;
   Outcome r = bestiary("check " + dir.string() + " --json");
   ASSERT_TRUE(r.code == 0 || r.code == 1) << r.err;
@@ -154,7 +157,11 @@ TEST(Check, AnEliteScoredAsAMeanIsCheckedAndSimulatedAsTheMean) {
   EXPECT_EQ(j["scored_fitness"].get<double>(), stored);
   ASSERT_EQ(j["scored_by_seed"].size(), 3u);
   EXPECT_EQ(j["scored_by_seed"][0].get<double>(), j["fitness"].get<double>());
-  // the other seeds' ratios are to the mean
+  if (score == "min") {
+    const std::vector<double> each = j["scored_by_seed"].get<std::vector<double>>();
+    EXPECT_EQ(stored, *std::min_element(each.begin(), each.end()));
+  }
+  // the other seeds' ratios are to the score
   for (const auto& v : j["variants"]) {
     if (v["name"].get<std::string>().rfind("seed ", 0) == 0 && stored > 0) {
       EXPECT_DOUBLE_EQ(v["ratio"].get<double>(), v["fitness"].get<double>() / stored) << v["name"];
@@ -163,18 +170,25 @@ TEST(Check, AnEliteScoredAsAMeanIsCheckedAndSimulatedAsTheMean) {
   Outcome s = bestiary("simulate " + dir.string() + " --json");
   ASSERT_EQ(s.code, 0) << s.err;
   auto sj = nlohmann::json::parse(s.out);
-  EXPECT_EQ(sj["mean_fitness"].get<double>(), stored);
+  EXPECT_EQ(sj["scored_fitness"].get<double>(), stored);
   EXPECT_EQ(sj["evaluation_fitness"], j["scored_by_seed"]);
   Outcome text = bestiary("simulate " + dir.string());
-  EXPECT_NE(text.out.find("the run's fitness is the mean of 3 evaluations"), std::string::npos) << text.out;
+  const std::string word = score == "min" ? "least" : "mean";
+  EXPECT_NE(text.out.find("the run's fitness is the " + word + " of 3 evaluations"), std::string::npos) << text.out;
   EXPECT_NE(text.out.find("(the stored fitness, bit for bit)"), std::string::npos) << text.out;
   fs::path file = dir / "best.json";
   ASSERT_EQ(bestiary("best " + dir.string() + " --out " + file.string()).code, 0);
   Outcome f = bestiary("simulate " + file.string() + " --json");
   ASSERT_EQ(f.code, 0) << f.err;
-  EXPECT_EQ(nlohmann::json::parse(f.out)["mean_fitness"].get<double>(), stored);
+  EXPECT_EQ(nlohmann::json::parse(f.out)["scored_fitness"].get<double>(), stored);
+  // the run page says how the stored fitnesses fold
+  ASSERT_EQ(bestiary("show " + dir.string() + " --out " + (dir / "view.html").string()).code, 0);
+  EXPECT_NE(bxtest::slurp(dir / "view.html").find("\"evaluation_score\":\"" + word + "\""), std::string::npos);
   fs::remove_all(dir);
 }
+
+INSTANTIATE_TEST_SUITE_P(Scores, CheckElite, ::testing::Values("mean", "min"),
+                         [](const auto& info) { return info.param == "min" ? "Least" : "Mean"; });
 
 TEST(Check, BadInputIsOneLineAndExitCodeTwo) {
   Outcome r = bestiary("check /nonexistent/genome.json");

@@ -118,7 +118,10 @@ export function createViewer(ui, data) {
         Object.assign(pick, { member: m, gen: bestOf(run, m.id)[0] ?? null, anchor: m.id });
       }
       const lineage = lineageOf(byId, pick.anchor);
-      showInfo(ui.info, entry, { member: pick.member, best: run.best_id, bestOf: bestOf(run, pick.member.id) });
+      showInfo(ui.info, entry, {
+        member: pick.member, best: run.best_id, bestOf: bestOf(run, pick.member.id),
+        score: run.evaluation_score ?? 'mean',
+      });
       picker.setCurrent({ index: i, gen: pick.gen, anchor: pick.anchor, lineage, member: pick.member });
       runPanel.setCurrent(pick.member, lineage);
     } else {

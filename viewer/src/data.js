@@ -191,6 +191,9 @@ export function parseRun(run, nReplays, path = 'run') {
   obj(run, path);
   for (const k of ['name', 'seed', 'dialect', 'algorithm'])
     if (typeof run[k] !== 'string') fail(`${path}.${k}`, 'expected a string', run[k]);
+  // (pages written before an elite's evaluations could fold to their least have none: the mean)
+  if (run.evaluation_score !== undefined && !['mean', 'least'].includes(run.evaluation_score))
+    fail(`${path}.evaluation_score`, 'expected "mean" or "least"', run.evaluation_score);
   int(run.population, `${path}.population`, 1);
   int(run.planned_generations, `${path}.planned_generations`, 0);
   int(run.replay_cap, `${path}.replay_cap`, 0);

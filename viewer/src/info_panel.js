@@ -34,20 +34,25 @@ export function infoRows(entry) {
     rows.push(['distance', num(res.distance, metres)]);
   }
   rows.push(['fitness', num(res.fitness, fitness)]);
-  // task.trials > 1: the fitness is a mean; what is shown is the first trial
+  // task.trials > 1: the fitness is their mean or, under task.trial_score =
+  // min, the least (a copy of one trial's: a mean equals the least only when
+  // all are equal); what is shown is the first trial
   const trials = res.trial_fitness;
   if (Array.isArray(trials) && trials.length > 1) {
-    rows.push(['trials', `mean of ${trials.length}: ${trials.map(fitness).join(', ')} (shown: the first)`]);
+    const least = Math.min(...trials);
+    const word = res.fitness === least && trials.some((f) => f !== least) ? 'least' : 'mean';
+    rows.push(['trials', `${word} of ${trials.length}: ${trials.map(fitness).join(', ')} (shown: the first)`]);
   }
   return rows;
 }
 
 /**
  * What a run says about `member` ({id, gen, fitness, parent1, parent2,
- * operator, evaluations?}) as [name, text] rows; `best` is the run's overall best's id and
- * `bestOf` the generations it was the best of (numbers, in order).
+ * operator, evaluations?}) as [name, text] rows; `best` is the run's overall best's id,
+ * `bestOf` the generations it was the best of (numbers, in order) and `score` what
+ * the stored fitness takes of several evaluations ('mean' or 'least').
  */
-export function memberRows(member, best, bestOf) {
+export function memberRows(member, best, bestOf, score = 'mean') {
   const parent = (id) => (id === null ? null : `#${id}`);
   const parents = [parent(member.parent1), parent(member.parent2)].filter((p) => p !== null);
   const rows = [
@@ -58,7 +63,7 @@ export function memberRows(member, best, bestOf) {
   if (bestOf.length) rows.push(['best of', `generation${bestOf.length > 1 ? 's' : ''} ${generationRanges(bestOf)}`]);
   const n = member.evaluations ?? 1;
   rows.push(['stored fitness', fitness(member.fitness) +
-    (n > 1 ? ` (the mean of ${n} evaluations under fresh seeds; the replay is the first)` : '')]);
+    (n > 1 ? ` (the ${score} of ${n} evaluations under fresh seeds; the replay is the first)` : '')]);
   return rows;
 }
 
@@ -74,7 +79,7 @@ function download(name, text) {
 
 /**
  * Fills `container` with the facts of `entry` ({label, replay, genome?});
- * in a run, `run` is {member, best, bestOf} (memberRows).
+ * in a run, `run` is {member, best, bestOf, score?} (memberRows).
  */
 export function showInfo(container, entry, run = null) {
   const res = entry.replay.result ?? {};
@@ -82,7 +87,7 @@ export function showInfo(container, entry, run = null) {
   const value = (k, v) => (k === 'projectile'
     ? el('dd', {}, el('span', { class: 'swatch', style: `background:${cssColor(PROJECTILE_COLOR)}` }), v)
     : el('dd', {}, v ?? '?'));
-  const rows = [...(run ? memberRows(run.member, run.best, run.bestOf) : []), ...infoRows(entry)];
+  const rows = [...(run ? memberRows(run.member, run.best, run.bestOf, run.score) : []), ...infoRows(entry)];
   container.replaceChildren(
     el('h1', {}, entry.label),
     el('dl', {}, ...rows.flatMap(([k, v]) => [el('dt', {}, k), value(k, v)])),

@@ -40,5 +40,11 @@ test('a fitness averaged over trials says so, and which trial is shown', () => {
   const r = rows(replay);
   assert.equal(r.fitness, '2');
   assert.equal(r.trials, 'mean of 3: 1, 2.5, 2.5 (shown: the first)');
+  // task.trial_score = min: the fitness is the least trial's
+  replay.result.fitness = 1;
+  assert.equal(rows(replay).trials, 'least of 3: 1, 2.5, 2.5 (shown: the first)');
+  // all equal: their mean and least agree
+  replay.result.trial_fitness = [1, 1, 1];
+  assert.equal(rows(replay).trials, 'mean of 3: 1, 1, 1 (shown: the first)');
   assert.equal(rows(makeCatapult()).trials, undefined); // one trial: no row
 });

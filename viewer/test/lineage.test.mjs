@@ -40,6 +40,9 @@ test('a member: its id, birth, parents, generations as the best and stored fitne
   assert.equal(rows(20)['best of'], 'generation 4');
   // an elite evaluated again: its stored fitness is a mean, its replay one evaluation
   assert.equal(rows(20)['stored fitness'], '5 (the mean of 3 evaluations under fresh seeds; the replay is the first)');
+  // task.trial_score = min: their least
+  assert.equal(Object.fromEntries(memberRows(membersById(run).get(20), run.best_id, [4], 'least'))['stored fitness'],
+    '5 (the least of 3 evaluations under fresh seeds; the replay is the first)');
   assert.equal(rows(3).parents, 'none');
   assert.equal(lineageText(membersById(run).get(12)), 'gen 2 · #12 · crossover with #3 · 3');
 });
