@@ -50,9 +50,7 @@ int cmd_check(const CheckArgs& a) {
                  m.n_parts(), m.effectors.size(), static_cast<unsigned long long>(subject->seed));
   if (!a.json && !subject->settings.empty()) std::fprintf(stderr, "%s\n", subject->settings.c_str());
   // a run's elite: its other seeds against the score selection saw (mean or least)
-  const int evaluations = subject->scored_settings ? subject->evaluations : 1;
-  CheckReport rep = check_creature(m, sim, subject->seed, subject->cfg.check, evaluations,
-                                   subject->cfg.evolution.failed_fitness);
+  CheckReport rep = check_creature(m, sim, subject->seed, subject->cfg.check, subject->repeats());
   const EvalResult& s = rep.scored;
   const EvalDiagnostics& d = s.diagnostics;
 
@@ -89,7 +87,9 @@ int cmd_check(const CheckArgs& a) {
   if (s.failed) std::printf("  failed: %s\n", s.failure.c_str());
   if (!rep.scored_by_seed.empty()) {
     // other seeds are compared with what selection saw
-    std::printf("  scored as the %s of %zu evaluations:", score_name(sim.trial_score), rep.scored_by_seed.size());
+    const std::string halves = half_step_text(subject->repeats());
+    std::printf("  scored as the %s of %zu evaluations%s:", score_name(sim.trial_score), rep.scored_by_seed.size(),
+                halves.empty() ? "" : (" (" + halves + ")").c_str());
     for (double f : rep.scored_by_seed) std::printf(" %.4g", f);
     std::printf(" = %.6g (other seeds' ratios are to this)\n", rep.scored_fitness);
   }

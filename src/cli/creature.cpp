@@ -248,6 +248,10 @@ Status set_seconds(SimConfig& sim, const std::optional<double>& seconds) {
   return Ok{};
 }
 
+Repeats Creature::repeats() const {
+  return elite_repeats(cfg.evolution, scored_settings ? evaluations : 1);
+}
+
 std::string Creature::evaluations_note() const {
   if (!scored_settings || evaluations <= 1 || !stored_fitness) return "";
   char buf[128];

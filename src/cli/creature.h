@@ -59,6 +59,9 @@ struct Creature {
   std::optional<double> scored_fitness() const {
     return scored_settings && evaluations == 1 ? stored_fitness : std::nullopt;
   }
+  /// How its run evaluated it again, as repeated_fitness reproduces it (one
+  /// evaluation unless the settings are the scored ones).
+  Repeats repeats() const;
   /// Evaluated as scored under several evaluations, what one evaluation
   /// shows: "(evaluation 1 of N; the stored fitness S is their mean)" (or least,
   /// as the run's task.trial_score folds them); else "".

@@ -74,7 +74,7 @@ int cmd_simulate(const SimulateArgs& a) {
   std::vector<double> each;
   double mean = 0;
   if (creature->scored_settings && creature->evaluations > 1)
-    mean = repeated_fitness(m, cfg, seed, creature->evaluations, creature->cfg.evolution.failed_fitness, res, &each);
+    mean = repeated_fitness(m, cfg, seed, creature->repeats(), res, &each);
 
   // report
   double bl = m.body_length();
@@ -125,8 +125,9 @@ int cmd_simulate(const SimulateArgs& a) {
   std::printf("%s\n", fitness_line(res.fitness, creature->scored_fitness()).c_str());
   if (!each.empty()) {
     // the run scored it as the mean (or least) of several evaluations, each under its own seed
-    std::printf("the run's fitness is the %s of %zu evaluations (the lines above are the first's):",
-                score_name(cfg.trial_score), each.size());
+    const std::string halves = half_step_text(creature->repeats());
+    std::printf("the run's fitness is the %s of %zu evaluations (the lines above are the first's%s):",
+                score_name(cfg.trial_score), each.size(), halves.empty() ? "" : ("; " + halves).c_str());
     for (double f : each) std::printf(" %.6g", f);
     std::printf("\n%s\n", fitness_line(mean, creature->stored_fitness).c_str());
   }

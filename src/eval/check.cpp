@@ -31,14 +31,13 @@ std::uint64_t check_seed(std::uint64_t seed, int k) {
 }
 
 CheckReport check_creature(const CreatureModel& m, const SimConfig& cfg, std::uint64_t seed,
-                           const CheckDef& def, int evaluations, double failed_fitness) {
+                           const CheckDef& def, const Repeats& repeats) {
   CheckReport rep;
   rep.scored = evaluate(m, cfg, seed);
   const double scored = rep.scored.fitness;
-  // what selection saw: the mean over the creature's evaluations, folded as the run folded them
-  rep.scored_fitness = evaluations > 1 ? repeated_fitness(m, cfg, seed, evaluations, failed_fitness, rep.scored,
-                                                          &rep.scored_by_seed)
-                                       : scored;
+  // what selection saw: the mean (or least) over the creature's evaluations, folded as the run folded them
+  rep.scored_fitness =
+      repeats.evaluations > 1 ? repeated_fitness(m, cfg, seed, repeats, rep.scored, &rep.scored_by_seed) : scored;
   auto ratio = [](double f, double of) { return of > 0 ? f / of : 0; };
   auto run = [&](std::string name, const SimConfig& c, std::uint64_t s, double of) {
     CheckVariant v{std::move(name), evaluate(m, c, s), 0, {}};

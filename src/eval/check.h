@@ -51,8 +51,8 @@ struct CheckVariant {
 struct CheckReport {
   EvalResult scored;  ///< the evaluation under the creature's own seed
   /// The fitness the ratios of other seeds are taken against: the scored
-  /// evaluation's, or for a creature scored as the mean of several
-  /// evaluations (a run's elite, evolution.elite_evaluations) their mean.
+  /// evaluation's, or for a creature scored over several evaluations (a
+  /// run's elite, evolution.elite_evaluations) their mean or least.
   double scored_fitness = 0;
   /// Under several evaluations: each one's fitness, the own seed's first.
   std::vector<double> scored_by_seed;
@@ -63,14 +63,13 @@ struct CheckReport {
 };
 
 /// Checks the creature's evaluation under `cfg` and `seed` (the one that
-/// scored it) against the gates. A creature whose fitness is the mean of
-/// `evaluations` (under repeat_seed(seed, 0..evaluations-1)) has its other
-/// seeds compared with that mean, what selection saw; the steps, iterations
-/// and clamped effectors compare with the own seed's evaluation, like with
-/// like. A failed one of those evaluations counts as `failed_fitness`, as
-/// in the run (evolution.failed_fitness).
+/// scored it) against the gates. A creature its run evaluated several times
+/// (`repeats`: under repeat_seed(seed, 0..evaluations-1), the mean or least
+/// as cfg.trial_score folds) has its other seeds compared with that score,
+/// what selection saw; the steps, iterations, clamped and held effectors
+/// compare with the own seed's evaluation, like with like.
 CheckReport check_creature(const CreatureModel& m, const SimConfig& cfg, std::uint64_t seed,
-                           const CheckDef& def, int evaluations = 1, double failed_fitness = 0);
+                           const CheckDef& def, const Repeats& repeats = {});
 
 /// The physics seed of a check's k-th other seed (k from 1), unlike any trial's.
 std::uint64_t check_seed(std::uint64_t seed, int k);

@@ -148,13 +148,33 @@ double fold_score(TrialScore how, double so_far, int n, double next) {
   return how == TrialScore::Min ? std::min(so_far, next) : so_far + (next - so_far) / (n + 1);
 }
 
-double repeated_fitness(const CreatureModel& m, const SimConfig& cfg, std::uint64_t seed, int evaluations,
-                        double failed_fitness, const EvalResult& first, std::vector<double>* each) {
-  auto scored = [&](const EvalResult& r) { return r.failed ? failed_fitness : r.fitness; };
+SimConfig half_step_config(const SimConfig& cfg) {
+  SimConfig c = cfg;
+  c.physics.dt /= 2;
+  return c;
+}
+
+bool repeat_half_step(const Repeats& r, int k) { return r.half_step && k % 2 == 1; }
+
+std::string half_step_text(const Repeats& r) {
+  std::vector<std::string> which;
+  for (int k = 1; k < r.evaluations; ++k)
+    if (repeat_half_step(r, k)) which.push_back(std::to_string(k + 1));
+  if (which.empty()) return "";
+  std::string s = which.size() == 1 ? "evaluation " : "evaluations ";
+  for (std::size_t i = 0; i < which.size(); ++i)
+    s += (i == 0 ? "" : i + 1 == which.size() ? " and " : ", ") + which[i];
+  return s + " at half the step";
+}
+
+double repeated_fitness(const CreatureModel& m, const SimConfig& cfg, std::uint64_t seed, const Repeats& r,
+                        const EvalResult& first, std::vector<double>* each) {
+  auto scored = [&](const EvalResult& e) { return e.failed ? r.failed_fitness : e.fitness; };
+  const SimConfig halved = half_step_config(cfg);
   double score = scored(first);
   if (each) each->assign(1, score);
-  for (int k = 1; k < evaluations; ++k) {
-    const double f = scored(evaluate(m, cfg, repeat_seed(seed, k)));
+  for (int k = 1; k < r.evaluations; ++k) {
+    const double f = scored(evaluate(m, repeat_half_step(r, k) ? halved : cfg, repeat_seed(seed, k)));
     if (each) each->push_back(f);
     score = fold_score(cfg.trial_score, score, k, f);
   }

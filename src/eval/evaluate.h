@@ -105,12 +105,33 @@ double fold_score(TrialScore how, double so_far, int n, double next);
 /// What fold_score takes of the evaluations, for messages: "mean" or "least".
 const char* score_name(TrialScore how);
 
-/// The fitness a run gave a creature it evaluated `evaluations` times (an
+/// `cfg` stepped at half its physics.dt, all else as it was (times, the brain's
+/// rate and, given as at a step, ERP and CFM follow: cause 18).
+SimConfig half_step_config(const SimConfig& cfg);
+
+/// How a run evaluated a creature again (an elite; its evolution config).
+struct Repeats {
+  int evaluations = 1;        ///< how many in all (evolution.elite_evaluations reached)
+  double failed_fitness = 0;  ///< what a failed one counts (evolution.failed_fitness)
+  /// The 2nd, 4th, ... at half the step (evolution.elite_half_step).
+  bool half_step = false;
+};
+
+/// Whether a run steps evaluation k (0-based) of a creature at half its step.
+bool repeat_half_step(const Repeats& r, int k);
+
+/// For messages: which of them stepped at half the step, counted from 1
+/// ("evaluation 2 at half the step", "evaluations 2 and 4 at half the
+/// step"), or "" when none did.
+std::string half_step_text(const Repeats& r);
+
+/// The fitness a run gave a creature it evaluated `r.evaluations` times (an
 /// elite, evolution.elite_evaluations): the fold_score (cfg.trial_score) of
-/// its evaluations under repeat_seed(seed, 0..evaluations-1), a failed one
-/// counting as `failed_fitness`. `first` is evaluation 0, already simulated;
-/// each evaluation's fitness goes to `each` when given.
-double repeated_fitness(const CreatureModel& m, const SimConfig& cfg, std::uint64_t seed, int evaluations,
-                        double failed_fitness, const EvalResult& first, std::vector<double>* each = nullptr);
+/// its evaluations under repeat_seed(seed, 0..evaluations-1), each at half
+/// the step where repeat_half_step says, a failed one counting as
+/// `r.failed_fitness`. `first` is evaluation 0, already simulated; each
+/// evaluation's fitness goes to `each` when given.
+double repeated_fitness(const CreatureModel& m, const SimConfig& cfg, std::uint64_t seed, const Repeats& r,
+                        const EvalResult& first, std::vector<double>* each = nullptr);
 
 }  // namespace bx

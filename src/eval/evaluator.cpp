@@ -46,7 +46,8 @@ EvalOutcome evaluate_genotype(const Genotype& g, const SimConfig& cfg, std::uint
 std::vector<EvalOutcome> SerialEvaluator::evaluate(const std::vector<EvalJob>& jobs) {
   std::vector<EvalOutcome> out;
   out.reserve(jobs.size());
-  for (const auto& j : jobs) out.push_back(evaluate_genotype(*j.genotype, cfg_, j.seed));
+  const SimConfig halved = half_step_config(cfg_);
+  for (const auto& j : jobs) out.push_back(evaluate_genotype(*j.genotype, j.half_step ? halved : cfg_, j.seed));
   return out;
 }
 
@@ -93,6 +94,7 @@ bool receive_message(int fd, std::string& s) {
 
 // the worker's life: read a job, evaluate it, answer; until the pipe closes
 [[noreturn]] void worker_main(int in, int out, const SimConfig& cfg, const WorkerJob& work) {
+  const SimConfig halved = half_step_config(cfg);
   std::string msg;
   while (receive_message(in, msg)) {
     // text that is not JSON parses to a discarded value, which the reader refuses
@@ -102,7 +104,7 @@ bool receive_message(int fd, std::string& s) {
       o.result.failed = true;
       o.result.failure = "worker could not read its job: " + job.error();
     } else {
-      o = work(*job->genotype, cfg, job->seed);
+      o = work(*job->genotype, job->half_step ? halved : cfg, job->seed);
     }
     if (!send_message(out, outcome_to_json(o).dump())) break;
   }

@@ -22,6 +22,9 @@ namespace bx {
 struct EvalJob {
   const Genotype* genotype = nullptr;
   std::uint64_t seed = 0;
+  /// Step at half physics.dt (half_step_config): an elite evaluated again so
+  /// (evolution.elite_half_step).
+  bool half_step = false;
 };
 
 /// What came of one job.

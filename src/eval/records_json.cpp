@@ -55,7 +55,9 @@ T get(const json& j, const char* name) {
 
 json job_to_json(const EvalJob& job) {
   // the seed as a number: nlohmann keeps 64-bit unsigned integers exact
-  return {{"seed", job.seed}, {"kind", std::string(job.genotype->kind())}, {"genotype", job.genotype->to_json()}};
+  json j = {{"seed", job.seed}, {"kind", std::string(job.genotype->kind())}, {"genotype", job.genotype->to_json()}};
+  if (job.half_step) j["half_step"] = true;
+  return j;
 }
 
 Result<ReadJob> job_from_json(const json& j) {
@@ -65,6 +67,7 @@ Result<ReadJob> job_from_json(const json& j) {
     if (!seed.is_number_unsigned()) throw std::runtime_error("seed is not a whole number from 0 to 2^64-1");
     ReadJob job;
     job.seed = seed.get<std::uint64_t>();
+    if (j.contains("half_step")) job.half_step = get<bool>(j, "half_step");
     auto g = read_genotype(get<std::string>(j, "kind"), field(j, "genotype"), "job");
     if (!g) throw std::runtime_error(g.error());
     job.genotype = std::move(*g);

@@ -18,6 +18,7 @@ namespace bx {
 struct ReadJob {
   std::unique_ptr<Genotype> genotype;
   std::uint64_t seed = 0;
+  bool half_step = false;  ///< EvalJob::half_step
 };
 
 nlohmann::json job_to_json(const EvalJob& job);

@@ -134,6 +134,10 @@ std::vector<Individual> Evolution::evaluate(std::vector<Child> children, Evoluti
   return born;
 }
 
+Repeats elite_repeats(const EvolutionDef& evo, int evaluations) {
+  return {evaluations, evo.failed_fitness, evo.elite_half_step};
+}
+
 int Evolution::elite_count(int n) const {
   return std::clamp(static_cast<int>(std::lround(evo_.elite_fraction * n)), 1, n);
 }
@@ -163,7 +167,8 @@ std::vector<Individual> Evolution::reevaluate_elite(EvolutionState& s, Evaluator
     std::vector<EvalJob> jobs;
     for (int i : due) {
       const Individual& ind = s.population[i];
-      jobs.push_back({ind.genotype.get(), repeat_seed(ind.seed, ind.evaluations)});
+      jobs.push_back({ind.genotype.get(), repeat_seed(ind.seed, ind.evaluations),
+                      repeat_half_step(elite_repeats(evo_, evo_.elite_evaluations), ind.evaluations)});
     }
     std::vector<EvalOutcome> out = eval.evaluate(jobs);
     for (std::size_t k = 0; k < due.size(); ++k) {

@@ -83,6 +83,10 @@ int total_generations(const EvolutionDef& evo);
 /// (p_graft > 0) needs a kind that has it. The error names the field.
 Status check_breeding(const EvolutionDef& evo, const GenotypeOps& ops);
 
+/// How a run under `evo` evaluated a creature it evaluated `evaluations`
+/// times (repeated_fitness reproduces its score).
+Repeats elite_repeats(const EvolutionDef& evo, int evaluations);
+
 /// An evolutionary run's algorithm.
 class Evolution {
  public:

@@ -47,6 +47,10 @@ struct EvolutionDef {
   /// lucky evaluation does not keep a creature alive nor make the run's best
   /// (issue 11). 1: each creature is evaluated once (the papers).
   int elite_evaluations = 1;
+  /// The elite's 2nd, 4th, ... evaluations step at half physics.dt
+  /// (half_step_config), so that with the least of them (task.trial_score =
+  /// min) a gait that only the step makes does not keep its score (issue 11).
+  bool elite_half_step = false;
   int max_regenerations = 1000;   ///< non-viable children redrawn at most this often, then a random genome
   double evaluation_timeout = 120;  ///< seconds before a worker's evaluation is abandoned
   /// Fitness of an evaluation that blew up, crashed or timed out: "an

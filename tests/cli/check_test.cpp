@@ -137,9 +137,10 @@ TEST(Check, ARunsBestIsCheckedWithItsOwnConfigAndSeed) {
 }
 
 // A run whose elites are the mean of several evaluations
-// (evolution.elite_evaluations), or under task.trial_score = min their least:
-// check compares other seeds with that score, and simulate, directly or from
-// the genome file `best --out` writes, reproduces it bit for bit.
+// (evolution.elite_evaluations), or under task.trial_score = min their least
+// (here with evolution.elite_half_step: the 2nd at half the step): check
+// compares other seeds with that score, and simulate, directly or from the
+// genome file `best --out` writes, reproduces it bit for bit.
 class CheckElite : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(CheckElite, AnEliteScoredOverSeveralEvaluationsIsCheckedAndSimulatedAsScored) {
@@ -148,7 +149,8 @@ TEST_P(CheckElite, AnEliteScoredOverSeveralEvaluationsIsCheckedAndSimulatedAsSco
   fs::remove_all(dir);
   Outcome run = bestiary("run quick --out " + dir.string() +
                          " --set evolution.population=12 --set evolution.generations=2"
-                         " --set evolution.elite_evaluations=3 --set task.trial_score=" + score + " --quiet");
+                         " --set evolution.elite_evaluations=3 --set task.trial_score=" + score +
+                         (score == "min" ? " --set evolution.elite_half_step=true" : "") + " --quiet");
   ASSERT_EQ(run.code, 0) << run.err;
   Outcome r = bestiary("check " + dir.string() + " --json");
   ASSERT_TRUE(r.code == 0 || r.code == 1) << r.err;
@@ -175,6 +177,7 @@ TEST_P(CheckElite, AnEliteScoredOverSeveralEvaluationsIsCheckedAndSimulatedAsSco
   Outcome text = bestiary("simulate " + dir.string());
   const std::string word = score == "min" ? "least" : "mean";
   EXPECT_NE(text.out.find("the run's fitness is the " + word + " of 3 evaluations"), std::string::npos) << text.out;
+  EXPECT_EQ(text.out.find("evaluation 2 at half the step") != std::string::npos, score == "min") << text.out;
   EXPECT_NE(text.out.find("(the stored fitness, bit for bit)"), std::string::npos) << text.out;
   fs::path file = dir / "best.json";
   ASSERT_EQ(bestiary("best " + dir.string() + " --out " + file.string()).code, 0);

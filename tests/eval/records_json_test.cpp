@@ -136,6 +136,8 @@ TEST(JobJson, TheGenotypeItsKindAndEveryBitOfTheSeedRoundTrip) {
       auto back = job_from_json(nlohmann::json::parse(job_to_json({g.get(), seed}).dump()));
       ASSERT_TRUE(back.ok()) << back.error();
       EXPECT_EQ(back->seed, seed);
+      EXPECT_FALSE(back->half_step);
+      EXPECT_TRUE(job_from_json(nlohmann::json::parse(job_to_json({g.get(), seed, true}).dump()))->half_step);
       EXPECT_EQ(back->genotype->kind(), g->kind());
       EXPECT_TRUE(back->genotype->equals(*g)) << g->to_json().dump();
     }
@@ -153,6 +155,9 @@ TEST(JobJson, ABadJobNamesWhatIsWrong) {
   auto negative = j;
   negative["seed"] = -1;
   EXPECT_NE(job_from_json(negative).error().find("seed is not a whole number"), std::string::npos);
+  auto half = j;
+  half["half_step"] = 1;
+  EXPECT_EQ(job_from_json(half).error(), "evaluation job: half_step has the wrong type");
   auto bad_genome = j;
   bad_genome["genotype"]["nodes"] = 3;
   auto r = job_from_json(bad_genome);

@@ -222,16 +222,20 @@ INSTANTIATE_TEST_SUITE_P(Both, FloatLoops, ::testing::Values(Algorithm::Generati
                          });
 
 // TargetPoint with luck: each evaluation adds noise drawn from its seed, up
-// to +-amplitude, as a throw's outcome depends on its physics seed.
+// to +-amplitude, as a throw's outcome depends on its physics seed; and
+// one at half the step loses `step_gain`, as a gait the step makes does.
 class NoisyTarget : public Evaluator {
  public:
-  NoisyTarget(double target, double amplitude) : exact_(target), amplitude_(amplitude) {}
+  NoisyTarget(double target, double amplitude, double step_gain = 0)
+      : exact_(target), amplitude_(amplitude), step_gain_(step_gain) {}
   std::vector<EvalOutcome> evaluate(const std::vector<EvalJob>& jobs) override {
     std::vector<EvalOutcome> out = exact_.evaluate(jobs);
-    for (std::size_t i = 0; i < jobs.size(); ++i) out[i].result.fitness += noise(jobs[i].seed);
+    for (std::size_t i = 0; i < jobs.size(); ++i)
+      out[i].result.fitness += noise(jobs[i].seed) - (jobs[i].half_step ? step_gain_ : 0);
     evaluations += static_cast<long>(jobs.size());
     return out;
   }
+  double step_gain() const { return step_gain_; }
   double noise(std::uint64_t seed) const {
     return amplitude_ * (2 * static_cast<double>(seed >> 11) * 0x1p-53 - 1);
   }
@@ -244,24 +248,27 @@ class NoisyTarget : public Evaluator {
  private:
   TargetPoint exact_;
   double amplitude_;
+  double step_gain_;
 };
 
 // evolution.elite_evaluations: after every generation (steady state: report
 // interval) the elite has each been evaluated that many times under its own
-// seeds, its fitness their mean (task.trial_score = min: their least), and
-// it overstates its true fitness less than when each creature is evaluated
+// seeds, its fitness their mean (task.trial_score = min: their least;
+// evolution.elite_half_step: the 2nd and 4th at half the step), and it
+// overstates its true fitness less than when each creature is evaluated
 // once (the winner's curse).
 class EliteEvaluations : public ::testing::TestWithParam<Algorithm> {};
 
 TEST_P(EliteEvaluations, EveryEliteIsTheMeanOfItsEvaluationsAndLuckCountsLess) {
   auto ops = std::make_shared<FloatVectorOps>(FloatVectorDef{10, -1, 1, 0.1});
-  auto run = [&](int n, TrialScore fold = TrialScore::Mean) {
+  auto run = [&](int n, TrialScore fold = TrialScore::Mean, bool half_step = false) {
     EvolutionDef e = float_evolution(GetParam());
     e.generations = 15;
     e.evaluations = 450;
     e.elite_evaluations = n;
+    e.elite_half_step = half_step;
     Evolution evo(ops, e, 11, fold);
-    NoisyTarget problem(0.3, 0.3);
+    NoisyTarget problem(0.3, 0.3, 0.1);
     EvolutionState s;
     long born = 0;
     while (!evo.finished(s)) {
@@ -277,9 +284,11 @@ TEST_P(EliteEvaluations, EveryEliteIsTheMeanOfItsEvaluationsAndLuckCountsLess) {
       for (int k = 0; k < 6; ++k) {  // elite_fraction 0.2 of 30
         const Individual& ind = sorted[k];
         EXPECT_EQ(ind.evaluations, n) << "elite " << k;
-        double mean = problem.exact(*ind.genotype) + problem.noise(ind.seed);
+        double mean = problem.exact(*ind.genotype) + (problem.noise(ind.seed) - 0);
         for (int j = 1; j < ind.evaluations; ++j)
-          mean = fold_score(fold, mean, j, problem.exact(*ind.genotype) + problem.noise(repeat_seed(ind.seed, j)));
+          mean = fold_score(fold, mean, j,
+                            problem.exact(*ind.genotype) + (problem.noise(repeat_seed(ind.seed, j)) -
+                                                            (half_step && j % 2 == 1 ? problem.step_gain() : 0)));
         EXPECT_EQ(ind.fitness, mean) << "elite " << k;
       }
       // what was evaluated again is reported, as it stands
@@ -312,6 +321,7 @@ TEST_P(EliteEvaluations, EveryEliteIsTheMeanOfItsEvaluationsAndLuckCountsLess) {
   auto [luck1, extra1] = run(1);
   auto [luck4, extra4] = run(4);
   auto [least4, extra_least4] = run(4, TrialScore::Min);
+  auto [halves4, extra_halves4] = run(4, TrialScore::Min, true);
   EXPECT_EQ(extra1, 0);
   EXPECT_GT(extra4, 0);
   EXPECT_GT(extra_least4, 0);
@@ -323,6 +333,10 @@ TEST_P(EliteEvaluations, EveryEliteIsTheMeanOfItsEvaluationsAndLuckCountsLess) {
   EXPECT_GT(luck1, 0.2);
   EXPECT_LT(luck4, 0.7 * luck1) << luck1;
   EXPECT_LT(least4, 0.75 * luck4) << luck4;
+  // what the step made (0.1 here) the half-step evaluations take away
+  // (measured 0.038 and -0.032)
+  EXPECT_GT(extra_halves4, 0);
+  EXPECT_LT(halves4, least4 - 0.03) << least4;
 }
 
 INSTANTIATE_TEST_SUITE_P(Both, EliteEvaluations,

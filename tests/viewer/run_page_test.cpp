@@ -5,6 +5,7 @@
 #include "genome/graph_genotype.h"
 #include "io/run_page.h"
 #include "eval/evaluate.h"
+#include "evolve/evolution.h"
 #include "develop/develop.h"
 
 #include <gtest/gtest.h>
@@ -130,8 +131,8 @@ TEST_F(RunPage, OpensOnTheBestAndReplaysEachCreatureAsTheRunScoredIt) {
       ASSERT_TRUE(dev.viable()) << id;
       bx::EvalResult res;
       res.fitness = first;
-      EXPECT_EQ(bx::repeated_fitness(*dev.model, cfg_.sim, stored->seed, stored->evaluations,
-                                     cfg_.evolution.failed_fitness, res),
+      EXPECT_EQ(bx::repeated_fitness(*dev.model, cfg_.sim, stored->seed,
+                                     bx::elite_repeats(cfg_.evolution, stored->evaluations), res),
                 stored->fitness)
           << id;
       ++elites_evaluated_again;
