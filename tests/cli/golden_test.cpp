@@ -115,7 +115,7 @@ const Golden kGolden[] = {
      "9d6e3a783ca955b6", "ca60f645103fa834"},
     {"miconi2006-small",
      "--set evolution.population=10 --set evolution.evaluations=40 --set task.seconds=10",
-     "eea8133503290a65", "b136c7a20b2c2078"},
+     "7fdc62d5d69190b2", "4612f49c509112c5"},
     {"chaumont2007-catapult-small", "--set evolution.population=10 --set evolution.generations=3",
      "914ce00636adbf54", "2b7743550c220f2e"},
     {"sims1994-walker", "--set evolution.population=10 --set evolution.generations=3",
