@@ -15,7 +15,8 @@ body length; "exploded" when that doubled run ended in an explosion test.
 
 For every run also `bestiary check` of its best: its fitness re-simulated
 under 5 other physics seeds (the median ratio to the scored fitness: an
-elite's mean over its evaluations, evolution.elite_evaluations), at dt/2
+elite's mean or least over its evaluations, evolution.elite_evaluations and
+task.trial_score), at dt/2
 and dt/4, at twice the solver iterations, with every effector clamped to
 its mean and with every joint held still by its motor, the largest joint separation, and the verdict (its gates are the
 run's [check] config keys, or --check-set's).
@@ -106,7 +107,7 @@ def check_row(preset, seed, run_dir, check_set=()):
     cell = lambda n: ("failed" if ratio[n]["failed"] else f"{ratio[n]['ratio']:.2f}") if n in ratio else "-"
     verdict = "pass" if c["passed"] else "FAIL: " + "; ".join(c["failures"])
     active = sum(1 for sd in c["effector_sd"] if sd >= 0.1)
-    # the fitness selection saw: under elite_evaluations the mean of several evaluations
+    # the fitness selection saw: under elite_evaluations the mean (or least) of several evaluations
     scored = c.get("scored_fitness", c["fitness"])
     return (f"| {preset} | {seed} | {scored:.4g} | {c['median_other_seeds']:.2f} | {cell('dt/2')} | "
             f"{cell('dt/4')} | {cell('2x iterations')} | {cell('clamped')} | {cell('held')} | "
