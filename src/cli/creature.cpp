@@ -255,9 +255,10 @@ Repeats Creature::repeats() const {
 std::string Creature::evaluations_note() const {
   if (!scored_settings || evaluations <= 1 || !stored_fitness) return "";
   char buf[128];
-  std::snprintf(buf, sizeof buf, "(evaluation 1 of %d; the stored fitness %.6g is their %s)", evaluations,
+  std::snprintf(buf, sizeof buf, "(evaluation 1 of %d; the stored fitness %.6g is their %s", evaluations,
                 *stored_fitness, score_name(cfg.sim.trial_score));
-  return buf;
+  const std::string halves = half_step_text(repeats());
+  return buf + (halves.empty() ? "" : "; " + halves) + ")";
 }
 
 std::string fitness_line(double fitness, const std::optional<double>& stored) {

@@ -64,7 +64,8 @@ struct Creature {
   Repeats repeats() const;
   /// Evaluated as scored under several evaluations, what one evaluation
   /// shows: "(evaluation 1 of N; the stored fitness S is their mean)" (or least,
-  /// as the run's task.trial_score folds them); else "".
+  /// as the run's task.trial_score folds them, and which stepped at half the
+  /// step: half_step_text); else "".
   std::string evaluations_note() const;
 };
 

@@ -60,7 +60,7 @@ struct EvalResult {
   long brain_steps = 0;      ///< brain steps (at SimConfig::brain_hz)
   std::vector<std::string> warnings;
   /// SimConfig::trials > 1: each trial's fitness, the first being the one
-  /// a replay shows (`fitness` is their mean); empty for a single trial.
+  /// a replay shows (`fitness` is their mean or least: trial_score); empty for a single trial.
   std::vector<double> trial_fitness;
   /// The first trial's.
   EvalDiagnostics diagnostics;

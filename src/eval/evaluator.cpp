@@ -46,8 +46,7 @@ EvalOutcome evaluate_genotype(const Genotype& g, const SimConfig& cfg, std::uint
 std::vector<EvalOutcome> SerialEvaluator::evaluate(const std::vector<EvalJob>& jobs) {
   std::vector<EvalOutcome> out;
   out.reserve(jobs.size());
-  const SimConfig halved = half_step_config(cfg_);
-  for (const auto& j : jobs) out.push_back(evaluate_genotype(*j.genotype, j.half_step ? halved : cfg_, j.seed));
+  for (const auto& j : jobs) out.push_back(evaluate_genotype(*j.genotype, j.half_step ? halved_ : cfg_, j.seed));
   return out;
 }
 

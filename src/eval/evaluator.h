@@ -55,12 +55,13 @@ class Evaluator {
 /// Evaluates in this process, one job after another.
 class SerialEvaluator : public Evaluator {
  public:
-  explicit SerialEvaluator(SimConfig cfg) : cfg_(std::move(cfg)) {}
+  explicit SerialEvaluator(SimConfig cfg) : cfg_(std::move(cfg)), halved_(half_step_config(cfg_)) {}
   std::vector<EvalOutcome> evaluate(const std::vector<EvalJob>& jobs) override;
   int workers() const override { return 1; }
 
  private:
   SimConfig cfg_;
+  SimConfig halved_;  ///< for half_step jobs
 };
 
 /// Evaluates in K worker processes, one creature at a time each (ODE's random

@@ -184,6 +184,13 @@ TEST_P(CheckElite, AnEliteScoredOverSeveralEvaluationsIsCheckedAndSimulatedAsSco
   Outcome f = bestiary("simulate " + file.string() + " --json");
   ASSERT_EQ(f.code, 0) << f.err;
   EXPECT_EQ(nlohmann::json::parse(f.out)["scored_fitness"].get<double>(), stored);
+  // show (and render) say what the replay is of the stored fitness
+  Outcome shown = bestiary("show " + file.string() + " --out " + (dir / "best.html").string());
+  ASSERT_EQ(shown.code, 0) << shown.err;
+  EXPECT_NE(shown.out.find("(evaluation 1 of 3; the stored fitness"), std::string::npos) << shown.out;
+  EXPECT_NE(shown.out.find("is their " + word + (score == "min" ? "; evaluation 2 at half the step)" : ")")),
+            std::string::npos)
+      << shown.out;
   // the run page says how the stored fitnesses fold
   ASSERT_EQ(bestiary("show " + dir.string() + " --out " + (dir / "view.html").string()).code, 0);
   EXPECT_NE(bxtest::slurp(dir / "view.html").find("\"evaluation_score\":\"" + word + "\""), std::string::npos);
