@@ -51,6 +51,9 @@ struct RunView {
   /// How a member's evaluations make its stored fitness: "mean" or "least"
   /// (task.trial_score; score_name).
   std::string evaluation_score = "mean";
+  /// Whether a member's 2nd, 4th, ... evaluations stepped at half physics.dt
+  /// (evolution.elite_half_step; repeat_half_step).
+  bool evaluation_half_step = false;
   int population = 0;
   int planned_generations = 0;  ///< generations (report intervals) it has when finished
   std::vector<RunGeneration> generations;
@@ -61,7 +64,7 @@ struct RunView {
 
 /// The page's data as JSON text:
 /// {"replays": [{"label", "replay", "genome"?}...], "run": null | {"name", "seed",
-/// "dialect", "algorithm", "evaluation_score", "population", "planned_generations", "generations":
+/// "dialect", "algorithm", "evaluation_score", "evaluation_half_step", "population", "planned_generations", "generations":
 /// [{"gen", "best", "mean", "median", "best_id", "evaluations", "rejected",
 /// "failed"}...], "members": [{"id", "gen", "fitness", "parent1", "parent2"
 /// (null when none), "operator", "replay_index" (null when none)}...],

@@ -193,7 +193,10 @@ TEST_P(CheckElite, AnEliteScoredOverSeveralEvaluationsIsCheckedAndSimulatedAsSco
       << shown.out;
   // the run page says how the stored fitnesses fold
   ASSERT_EQ(bestiary("show " + dir.string() + " --out " + (dir / "view.html").string()).code, 0);
-  EXPECT_NE(bxtest::slurp(dir / "view.html").find("\"evaluation_score\":\"" + word + "\""), std::string::npos);
+  const std::string page = bxtest::slurp(dir / "view.html");
+  EXPECT_NE(page.find("\"evaluation_score\":\"" + word + "\""), std::string::npos);
+  EXPECT_NE(page.find(std::string("\"evaluation_half_step\":") + (score == "min" ? "true" : "false")),
+            std::string::npos);
   fs::remove_all(dir);
 }
 

@@ -120,7 +120,7 @@ export function createViewer(ui, data) {
       const lineage = lineageOf(byId, pick.anchor);
       showInfo(ui.info, entry, {
         member: pick.member, best: run.best_id, bestOf: bestOf(run, pick.member.id),
-        score: run.evaluation_score ?? 'mean',
+        score: run.evaluation_score ?? 'mean', halfStep: run.evaluation_half_step ?? false,
       });
       picker.setCurrent({ index: i, gen: pick.gen, anchor: pick.anchor, lineage, member: pick.member });
       runPanel.setCurrent(pick.member, lineage);

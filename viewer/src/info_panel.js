@@ -49,10 +49,11 @@ export function infoRows(entry) {
 /**
  * What a run says about `member` ({id, gen, fitness, parent1, parent2,
  * operator, evaluations?}) as [name, text] rows; `best` is the run's overall best's id,
- * `bestOf` the generations it was the best of (numbers, in order) and `score` what
- * the stored fitness takes of several evaluations ('mean' or 'least').
+ * `bestOf` the generations it was the best of (numbers, in order), `score` what
+ * the stored fitness takes of several evaluations ('mean' or 'least') and
+ * `halfStep` whether the 2nd, 4th, ... of them stepped at half the step.
  */
-export function memberRows(member, best, bestOf, score = 'mean') {
+export function memberRows(member, best, bestOf, score = 'mean', halfStep = false) {
   const parent = (id) => (id === null ? null : `#${id}`);
   const parents = [parent(member.parent1), parent(member.parent2)].filter((p) => p !== null);
   const rows = [
@@ -63,8 +64,22 @@ export function memberRows(member, best, bestOf, score = 'mean') {
   if (bestOf.length) rows.push(['best of', `generation${bestOf.length > 1 ? 's' : ''} ${generationRanges(bestOf)}`]);
   const n = member.evaluations ?? 1;
   rows.push(['stored fitness', fitness(member.fitness) +
-    (n > 1 ? ` (the ${score} of ${n} evaluations under fresh seeds; the replay is the first)` : '')]);
+    (n > 1 ? ` (the ${score} of ${n} evaluations under fresh seeds${halfStep ? `, ${halfStepText(n)}` : ''}; ` +
+      'the replay is the first)' : '')]);
   return rows;
+}
+
+/**
+ * Which of `n` evaluations stepped at half the step (the 2nd, 4th, ...), as
+ * the command line says it (half_step_text in src/eval/evaluate.cpp):
+ * "evaluation 2 at half the step", "evaluations 2 and 4 at half the step".
+ */
+export function halfStepText(n) {
+  const which = [];
+  for (let k = 2; k <= n; k += 2) which.push(String(k));
+  if (!which.length) return '';
+  const list = which.length === 1 ? which[0] : `${which.slice(0, -1).join(', ')} and ${which.at(-1)}`;
+  return `evaluation${which.length > 1 ? 's' : ''} ${list} at half the step`;
 }
 
 /** A file named `name` holding `text`, saved by the browser. */
@@ -79,7 +94,7 @@ function download(name, text) {
 
 /**
  * Fills `container` with the facts of `entry` ({label, replay, genome?});
- * in a run, `run` is {member, best, bestOf, score?} (memberRows).
+ * in a run, `run` is {member, best, bestOf, score?, halfStep?} (memberRows).
  */
 export function showInfo(container, entry, run = null) {
   const res = entry.replay.result ?? {};
@@ -87,7 +102,7 @@ export function showInfo(container, entry, run = null) {
   const value = (k, v) => (k === 'projectile'
     ? el('dd', {}, el('span', { class: 'swatch', style: `background:${cssColor(PROJECTILE_COLOR)}` }), v)
     : el('dd', {}, v ?? '?'));
-  const rows = [...(run ? memberRows(run.member, run.best, run.bestOf, run.score) : []), ...infoRows(entry)];
+  const rows = [...(run ? memberRows(run.member, run.best, run.bestOf, run.score, run.halfStep) : []), ...infoRows(entry)];
   container.replaceChildren(
     el('h1', {}, entry.label),
     el('dl', {}, ...rows.flatMap(([k, v]) => [el('dt', {}, k), value(k, v)])),
