@@ -146,12 +146,15 @@ int Evolution::elite_count(int n) const {
 // best elite_fraction at the end of a report interval), each evaluated again
 // under a fresh seed until it has elite_evaluations, its fitness their mean or
 // least (fold_: task.trial_score); one whose score falls out of the elite
-// makes room for the next, evaluated in turn.
+// makes room for the next, evaluated in turn. Then the best, once it has
+// elite_evaluations, is evaluated until it has best_evaluations (all at
+// once); if it falls, the next best is, until the best has them.
 // Returns the individuals born in earlier steps that were evaluated again;
 // those born in this step are updated in `born`.
 std::vector<Individual> Evolution::reevaluate_elite(EvolutionState& s, Evaluator& eval, long& failed,
                                                     std::vector<Individual>& born) const {
-  if (evo_.elite_evaluations <= 1) return {};
+  const int best_target = std::max(evo_.elite_evaluations, evo_.best_evaluations);
+  if (best_target <= 1) return {};
   const int n = static_cast<int>(s.population.size());
   const int elite = elite_count(n);
   std::set<int> touched;
@@ -160,29 +163,35 @@ std::vector<Individual> Evolution::reevaluate_elite(EvolutionState& s, Evaluator
     std::iota(order.begin(), order.end(), 0);
     std::partial_sort(order.begin(), order.begin() + elite, order.end(),
                       [&](int x, int y) { return better(s.population[x], s.population[y]); });
-    std::vector<int> due;
+    // each due individual with how many evaluations it gets in this round
+    std::vector<std::pair<int, int>> due;
     for (int k = 0; k < elite; ++k)
-      if (s.population[order[k]].evaluations < evo_.elite_evaluations) due.push_back(order[k]);
+      if (s.population[order[k]].evaluations < evo_.elite_evaluations) due.push_back({order[k], 1});
+    if (due.empty() && s.population[order[0]].evaluations < best_target)
+      due.push_back({order[0], best_target - s.population[order[0]].evaluations});
     if (due.empty()) break;
     std::vector<EvalJob> jobs;
-    for (int i : due) {
+    for (auto [i, count] : due) {
       const Individual& ind = s.population[i];
-      jobs.push_back({ind.genotype.get(), repeat_seed(ind.seed, ind.evaluations),
-                      repeat_half_step(elite_repeats(evo_, evo_.elite_evaluations), ind.evaluations)});
+      for (int e = ind.evaluations; e < ind.evaluations + count; ++e)
+        jobs.push_back({ind.genotype.get(), repeat_seed(ind.seed, e), repeat_half_step(elite_repeats(evo_, 0), e)});
     }
     std::vector<EvalOutcome> out = eval.evaluate(jobs);
-    for (std::size_t k = 0; k < due.size(); ++k) {
-      Individual& ind = s.population[due[k]];
-      double f = out[k].result.fitness;
-      if (!out[k].viable || out[k].result.failed) {
-        f = evo_.failed_fitness;
-        ++failed;
+    std::size_t at = 0;
+    for (auto [i, count] : due) {
+      Individual& ind = s.population[i];
+      for (int c = 0; c < count; ++c, ++at) {
+        double f = out[at].result.fitness;
+        if (!out[at].viable || out[at].result.failed) {
+          f = evo_.failed_fitness;
+          ++failed;
+        }
+        ind.fitness = fold_score(fold_, ind.fitness, ind.evaluations, f);
+        ++ind.evaluations;
       }
-      ind.fitness = fold_score(fold_, ind.fitness, ind.evaluations, f);
-      ++ind.evaluations;
-      touched.insert(due[k]);
+      touched.insert(i);
     }
-    s.evaluations += static_cast<long>(due.size());
+    s.evaluations += static_cast<long>(jobs.size());
   }
   std::vector<Individual> earlier;
   for (int i : touched) {

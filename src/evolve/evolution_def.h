@@ -47,6 +47,14 @@ struct EvolutionDef {
   /// lucky evaluation does not keep a creature alive nor make the run's best
   /// (issue 11). 1: each creature is evaluated once (the papers).
   int elite_evaluations = 1;
+  /// Evaluations the elite's best is the mean (least) of: once it has
+  /// elite_evaluations, the best is evaluated again until it has this many,
+  /// and again whenever another takes its place, so the best of a
+  /// generation (and of the run) is not the luckiest of many near-equal
+  /// creatures, such as clones that differ only in unexpressed genes
+  /// (issue 11). 0 or at most elite_evaluations: the best is evaluated as
+  /// the rest of the elite.
+  int best_evaluations = 0;
   /// The elite's 2nd, 4th, ... evaluations step at half physics.dt
   /// (half_step_config), so that with the least of them (task.trial_score =
   /// min) a gait that only the step makes does not keep its score (issue 11).
