@@ -117,7 +117,7 @@ const Golden kGolden[] = {
      "--set evolution.population=10 --set evolution.evaluations=40 --set task.seconds=10",
      "7fdc62d5d69190b2", "4612f49c509112c5"},
     {"chaumont2007-catapult-small", "--set evolution.population=10 --set evolution.generations=3",
-     "b5e0fe95d1fadd82", "0f9ed11659960baf"},
+     "e80f898da85cb7d4", "0f9ed11659960baf"},
     {"sims1994-walker", "--set evolution.population=10 --set evolution.generations=3",
      "f2db05190ff162cf", "1ce8ca88dbdfe94e"},
 };
