@@ -44,7 +44,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   SimConfig sim = cfg->sim;
   task_seconds(sim) = 0.3;
-  sim.task.settle_timeout = std::min(sim.task.settle_timeout, 0.3);  // chaumont2007's sequence
+  sim.task.settle.timeout = std::min(sim.task.settle.timeout, 0.3);  // chaumont2007's sequence
   sim.task.burst_seconds = std::min(sim.task.burst_seconds, 0.1);
 
   // develop: a creature or a reason; simulate the creature

@@ -97,6 +97,8 @@ int cmd_simulate(const SimulateArgs& a) {
     }
     if (m.projectile >= 0) {
       out["release_time"] = res.release_time >= 0 ? nlohmann::json(res.release_time) : nlohmann::json(nullptr);
+      out["throw_begin_time"] = res.throw_begin_time >= 0 ? nlohmann::json(res.throw_begin_time) : nlohmann::json(nullptr);
+      out["touch_end_time"] = res.touch_end_time >= 0 ? nlohmann::json(res.touch_end_time) : nlohmann::json(nullptr);
       out["target_miss"] = res.target_miss >= 0 ? nlohmann::json(res.target_miss) : nlohmann::json(nullptr);
     }
     out["warnings"] = res.warnings;
@@ -115,7 +117,12 @@ int cmd_simulate(const SimulateArgs& a) {
   if (!res.note.empty()) std::printf("note: %s\n", res.note.c_str());
   if (cfg.task_kind == TaskKind::Throwing) {
     // the throw: when, how far, how close to the target
+    if (res.throw_begin_time > 0) std::printf("at rest at %.3f s: the throw began\n", res.throw_begin_time);
     if (res.release_time >= 0) std::printf("released at %.3f s\n", res.release_time);
+    if (res.touch_end_time >= 0)
+      std::printf("the creature touched its projectile at %.3f s, %.3f s after the release: the throw ended there "
+                  "(throwing.touch_seconds)\n",
+                  res.touch_end_time, res.touch_end_time - res.release_time);
     std::printf("projectile thrown %.4f m", res.distance);
     if (res.target_miss >= 0) std::printf(", passing %.4f m from the target", res.target_miss);
     std::printf("\n");

@@ -63,11 +63,14 @@ class ReplayRecorder {
 // What an evaluation reports of its state once its loop has ended.
 void report(const CreatureModel& m, const EvalState& s, EvalResult& res) {
   res.steps = s.physics_steps;
-  res.brain_steps = s.brain_steps;
+  res.brain_steps = s.brain_steps - s.brain_waits;
   res.seconds = s.world.time();
   res.note = s.task->note();
   res.diagnostics = diagnostics(s);
-  res.release_time = s.task->scene(m).release_time;
+  const TaskScene scene = s.task->scene(m);
+  res.release_time = scene.release_time;
+  res.touch_end_time = scene.touch_end_time;
+  res.throw_begin_time = scene.begin_time;
   if (s.failed) {
     res.failed = true;
     res.failure = s.failure;

@@ -54,10 +54,16 @@ struct EvalResult {
   double fitness = 0;
   double distance = 0;      ///< m, by the task's metric (throwing: D_p)
   double release_time = -1; ///< throwing: when the projectile was released (s), or -1
+  /// throwing: when a touch later than throwing.touch_seconds after the
+  /// release ended the throw (s), or -1 (not kept in a run's records)
+  double touch_end_time = -1;
+  /// throwing: when the throw began (0: at the drop; throwing.start =
+  /// settled: once the creature rested), or -1: never (not kept in records)
+  double throw_begin_time = 0;
   double target_miss = -1;  ///< throwing, aim: D_t (m), or -1
   double seconds = 0;       ///< simulated time
   long steps = 0;            ///< physics steps
-  long brain_steps = 0;      ///< brain steps (at SimConfig::brain_hz)
+  long brain_steps = 0;      ///< brain steps run (at SimConfig::brain_hz; not those the task had the brain wait)
   std::vector<std::string> warnings;
   /// SimConfig::trials > 1: each trial's fitness, the first being the one
   /// a replay shows (`fitness` is their mean or least: trial_score); empty for a single trial.

@@ -19,6 +19,7 @@ class WorldObservation : public Observation {
   Vec3 centre_of_mass() const override { return w_.centre_of_mass(); }
   int n_parts() const override { return m_.n_parts(); }
   Pose part_pose(int i) const override { return w_.part_pose(i); }
+  bool touches_part(int i) const override { return w_.touches_part(i); }
 
  private:
   const CreatureModel& m_;
@@ -58,6 +59,11 @@ namespace {
 void think(const CreatureModel& m, const SimConfig& cfg, EvalState& s, const Observation& obs) {
   const long due = brain_steps_due(s.physics_steps + 1, cfg.physics.dt, cfg.brain_hz);
   if (s.brain_steps >= due) return;
+  if (!s.task->brain_on()) {  // the controller waits, its clock with it
+    s.brain_waits += due - s.brain_steps;
+    s.brain_steps = due;
+    return;
+  }
   s.world.read_sensors(m, s.sensor_readings);
   if (!s.task_inputs.empty()) s.task->inputs(obs, s.task_inputs);
   const double dt = 1.0 / cfg.brain_hz;
@@ -74,7 +80,7 @@ bool step(const CreatureModel& m, const SimConfig& cfg, EvalState& s) {
 
   // act: the motors follow the controller only while the task has it on
   const bool on = s.task->controller_on();
-  const bool hold = on && cfg.hold_joints;
+  const bool hold = (on && cfg.hold_joints) || s.task->joints_held();
   s.signals = !on || hold ? std::span<const double>(s.motors_off)
              : s.clamp.empty() ? s.controller->effectors() : std::span<const double>(s.clamp);
   if (on) {
@@ -107,7 +113,7 @@ Result<std::unique_ptr<Task>> make_task(const CreatureModel& m, const SimConfig&
     case TaskKind::Locomotion: return std::unique_ptr<Task>(new LocomotionTask(cfg.task, dt, m.n_parts()));
     case TaskKind::Throwing:
       if (m.projectile < 0) return Error{"not a catapult: the throwing task needs a genome with a catapult block"};
-      return std::unique_ptr<Task>(new ThrowingTask(cfg.throwing, dt, m.projectile, m.release_joint));
+      return std::unique_ptr<Task>(new ThrowingTask(cfg.throwing, dt, m.projectile, m.release_joint, m.n_parts()));
   }
   return Error{"unknown task kind"};
 }

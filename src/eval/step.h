@@ -41,7 +41,8 @@ struct EvalState {
   std::unique_ptr<ControllerState> controller;
   std::unique_ptr<Task> task;
   long physics_steps = 0;
-  long brain_steps = 0;       ///< controller steps, at brain.rate_hz
+  long brain_steps = 0;       ///< controller steps due, at brain.rate_hz
+  long brain_waits = 0;       ///< of them, those the controller waited (the task had its brain off)
   std::vector<double> sensor_readings, task_inputs;  ///< of the last controller step
   bool failed = false;        ///< the world blew up (failure says how)
   std::string failure;

@@ -70,6 +70,7 @@ struct World::Impl {
   std::vector<double> masses;
   std::vector<Joint> joints;
   std::vector<std::uint8_t> contact_mask;
+  std::vector<std::uint8_t> touching;  // per part: touched another part this step
   std::vector<bool> free_part;  // freed by a broken joint: collides with every part
   std::vector<Vec3> prev_pos;
   std::vector<std::array<double, 3>> joint_torque;  // Torque/PD accumulation per joint
@@ -244,6 +245,7 @@ struct World::Impl {
       if ((!def.self_collision && !freed) || dAreConnectedExcluding(ba, bb, dJointTypeContact)) return;
     }
     int n = dCollide(a, b, def.max_contacts, &contact_buf[0].geom, sizeof(dContact));
+    if (n > 0 && ba && bb) touching[part_of(a)] = touching[part_of(b)] = 1;
     for (int i = 0; i < n; ++i) {
       dContact& c = contact_buf[i];
       c.surface.mode = dContactApprox1;
@@ -403,6 +405,7 @@ void World::add_creature(const CreatureModel& m, const Pose& placement) {
   w.geoms.resize(n);
   w.masses.resize(n);
   w.contact_mask.assign(n, 0);
+  w.touching.assign(n, 0);
   w.free_part.assign(n, false);
   w.prev_pos.resize(n);
   // bodies with shape, mass and pose
@@ -594,6 +597,7 @@ void World::apply_effectors(const CreatureModel& m, const MotorDef& motor,
 void World::step() {
   auto& w = *impl_;
   std::fill(w.contact_mask.begin(), w.contact_mask.end(), 0);
+  std::fill(w.touching.begin(), w.touching.end(), 0);
   w.contacts.clear();
   dSpaceCollide(w.space, &w, &Impl::near_callback);
   w.attach_contacts();
@@ -722,6 +726,7 @@ double World::joint_rate(int j, int dof) const { return impl_->rate(impl_->joint
 double World::joint_gap(int j) const { return impl_->gap(impl_->joints[j]); }
 const WorldStats& World::stats() const { return impl_->stats; }
 std::uint8_t World::contact_mask(int i) const { return impl_->contact_mask[i]; }
+bool World::touches_part(int i) const { return impl_->touching[i] != 0; }
 double World::time() const { return impl_->t; }
 const PhysicsDef& World::def() const { return impl_->def; }
 

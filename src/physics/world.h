@@ -92,6 +92,8 @@ class World {
   double joint_rate(int j, int dof) const;
   /// Bit f set when face f of part i touched something this step.
   std::uint8_t contact_mask(int i) const;
+  /// Whether part i touched another part of the creature in the last step.
+  bool touches_part(int i) const;
   /// Simulated time (s).
   double time() const;
   const PhysicsDef& def() const;

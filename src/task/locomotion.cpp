@@ -8,14 +8,14 @@
 namespace bx {
 
 LocomotionTask::LocomotionTask(const LocomotionDef& def, double dt, int n_parts)
-    : def_(def), dt_(dt) {
+    : def_(def), dt_(dt), stillness_(def.settle, dt) {
   phase_ = def.activation == Activation::Chaumont2007 ? Phase::Settle1 : Phase::Measure;
-  prev_parts_.resize(needs_parts() ? n_parts : 0);
+  stillness_.start(std::vector<Vec3>(needs_parts() ? n_parts : 0));
 }
 
 long LocomotionTask::max_steps() const {
   double longest = def_.activation == Activation::Chaumont2007
-                       ? 2 * def_.settle_timeout + def_.burst_seconds + def_.seconds
+                       ? 2 * def_.settle.timeout + def_.burst_seconds + def_.seconds
                        : def_.seconds;
   return std::lround(longest / dt_) + 1;
 }
@@ -31,7 +31,7 @@ void LocomotionTask::begin(const Observation& o) { start(o.centre_of_mass(), par
 void LocomotionTask::observe(const Observation& o) { observe(o.time(), o.centre_of_mass(), parts_of(o)); }
 
 void LocomotionTask::start(Vec3 com, const std::vector<Vec3>& parts) {
-  if (needs_parts()) prev_parts_ = parts;
+  if (needs_parts()) stillness_.start(parts);
   if (phase_ == Phase::Measure && def_.skip_fraction <= 0) begin_measure(0, com);
   last_ = com;
 }
@@ -42,18 +42,14 @@ void LocomotionTask::begin_measure(double t, Vec3 com) {
   t_start_ = t;
 }
 
-// counts consecutive still steps; moves on once they last settle_seconds,
-// gives up after the timeout
-void LocomotionTask::settle(double t, const std::vector<Vec3>& parts, Phase next) {
-  double largest = 0;
-  for (std::size_t i = 0; i < parts.size(); ++i)
-    largest = std::max(largest, norm(parts[i] - prev_parts_[i]));
-  still_steps_ = largest < def_.settle_speed * dt_ ? still_steps_ + 1 : 0;
-  if (still_steps_ > 0 && static_cast<double>(still_steps_) * dt_ >= def_.settle_seconds - 1e-9) {
+// moves on once the parts have been still for settle.seconds, gives up after
+// the timeout
+void LocomotionTask::settle(double t, bool still, Phase next) {
+  if (still) {
     phase_ = next;
     phase_start_ = t;
-    still_steps_ = 0;
-  } else if (t - phase_start_ >= def_.settle_timeout - 1e-9) {
+    stillness_.restart();
+  } else if (t - phase_start_ >= def_.settle.timeout - 1e-9) {
     phase_ = Phase::Done;
     note_ = "never settled within settle_timeout";
   }
@@ -61,16 +57,19 @@ void LocomotionTask::settle(double t, const std::vector<Vec3>& parts, Phase next
 
 void LocomotionTask::observe(double t, Vec3 com, const std::vector<Vec3>& parts) {
   t_ = t;
+  // every step counts, but only a settling phase's still steps (it restarts them) matter
+  const bool still = needs_parts() && stillness_.observe(parts);
   switch (phase_) {
-    case Phase::Settle1: settle(t, parts, Phase::Burst); break;
+    case Phase::Settle1: settle(t, still, Phase::Burst); break;
     case Phase::Burst:
       if (t - phase_start_ >= def_.burst_seconds - 1e-9) {
         phase_ = Phase::Settle2;
         phase_start_ = t;
+        stillness_.restart();
       }
       break;
     case Phase::Settle2:
-      settle(t, parts, Phase::Measure);
+      settle(t, still, Phase::Measure);
       if (phase_ == Phase::Measure) begin_measure(t, com);
       break;
     case Phase::Measure: {
@@ -83,7 +82,6 @@ void LocomotionTask::observe(double t, Vec3 com, const std::vector<Vec3>& parts)
     }
     case Phase::Done: break;
   }
-  if (needs_parts()) prev_parts_ = parts;
   last_ = com;
 }
 

@@ -43,14 +43,8 @@ struct LocomotionDef {
   double skip_fraction = 0.0;
   LocomotionFitness fitness = LocomotionFitness::Distance;
   Activation activation = Activation::Always;
-  // chaumont2007 3.3: stable = the largest per-part displacement stays under
-  // 1/300 per step for 30 consecutive steps, at 60 Hz; in time: every part
-  // moves less than settle_speed * dt over each step of dt, for settle_seconds
-  // without a break (at dt = 1/60, the paper's 30 steps); never stable within
-  // settle_timeout (s) -> fitness 0
-  double settle_speed = 0.2;    ///< m/s: (1/300 m) / (1/60 s)
-  double settle_seconds = 0.5;  ///< s: 30 steps of 1/60 s
-  double settle_timeout = 10;
+  /// chaumont2007 3.3's settling phases: when the creature is still.
+  SettleDef settle;
   double burst_seconds = 1.0;  ///< the first controller activation (s)
   double kappa = 1.02;         ///< eq. 1's reward per block
   friend bool operator==(const LocomotionDef&, const LocomotionDef&) = default;
@@ -94,7 +88,7 @@ class LocomotionTask : public Task {
   bool needs_parts() const { return def_.activation == Activation::Chaumont2007; }
 
  private:
-  void settle(double t, const std::vector<Vec3>& parts, Phase next);
+  void settle(double t, bool still, Phase next);
   // every part's position, from an observation (when needs_parts())
   const std::vector<Vec3>& parts_of(const Observation& o);
   void begin_measure(double t, Vec3 com);
@@ -105,8 +99,8 @@ class LocomotionTask : public Task {
   bool measured_ = false;
   Vec3 start_, last_;
   double t_ = 0, t_start_ = 0, phase_start_ = 0;
-  long still_steps_ = 0;  ///< consecutive still steps of dt
-  std::vector<Vec3> prev_parts_, parts_;
+  Stillness stillness_;
+  std::vector<Vec3> parts_;
   std::string note_;
 };
 

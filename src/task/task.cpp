@@ -1,5 +1,6 @@
 #include "task/task.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace bx {
@@ -10,6 +11,14 @@ double heading(const Observation& o) {
   const double x = R.m[0][0], y = R.m[1][0];
   if (std::hypot(x, y) < 1e-12) return 0;
   return std::atan2(y, x);
+}
+
+bool Stillness::observe(const std::vector<Vec3>& parts) {
+  double largest = 0;
+  for (std::size_t i = 0; i < parts.size(); ++i) largest = std::max(largest, norm(parts[i] - prev_[i]));
+  prev_ = parts;
+  still_steps_ = largest < def_.speed * dt_ ? still_steps_ + 1 : 0;
+  return still_steps_ > 0 && static_cast<double>(still_steps_) * dt_ >= def_.seconds - 1e-9;
 }
 
 }  // namespace bx

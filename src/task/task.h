@@ -9,6 +9,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "brain/controller.h"  // Actions
 #include "core/math.h"
@@ -30,11 +31,43 @@ class Observation {
   virtual int n_parts() const = 0;
   /// Pose of part i (0 is the root).
   virtual Pose part_pose(int i) const = 0;
+  /// Whether part i touched another part of the creature in the last step.
+  virtual bool touches_part(int i) const = 0;
 };
 
 /// The creature's heading: the angle (rad, from +x towards +y) of its root
 /// part's x axis projected onto the ground; 0 when that axis is vertical.
 double heading(const Observation& o);
+
+/// chaumont2007 3.3's stillness, in time: every part moves less than
+/// speed * dt over each step of dt, for `seconds` without a break (at
+/// dt = 1/60 s, the paper's 1/300 per step for 30 steps); never still
+/// within `timeout` (s) -> fitness 0.
+struct SettleDef {
+  double speed = 0.2;    ///< m/s: (1/300 m) / (1/60 s)
+  double seconds = 0.5;  ///< s: 30 steps of 1/60 s
+  double timeout = 10;   ///< s
+  friend bool operator==(const SettleDef&, const SettleDef&) = default;
+};
+
+/// Counts the consecutive still steps (SettleDef) of a creature's parts.
+class Stillness {
+ public:
+  Stillness(const SettleDef& def, double dt) : def_(def), dt_(dt) {}
+  /// Call once with every part's position before the first step.
+  void start(const std::vector<Vec3>& parts) { prev_ = parts; }
+  /// Call after every step with every part's position; true once they have
+  /// been still for def.seconds since the start or the last restart().
+  bool observe(const std::vector<Vec3>& parts);
+  /// Counts from 0 again (a settling phase begins).
+  void restart() { still_steps_ = 0; }
+
+ private:
+  SettleDef def_;
+  double dt_;
+  long still_steps_ = 0;
+  std::vector<Vec3> prev_;
+};
 
 /// Where and how an evaluation starts. (lessin2015's props, lights and
 /// targets join this when its tasks arrive.)
@@ -53,6 +86,8 @@ struct TaskScore {
 struct TaskScene {
   int projectile = -1;        ///< the thrown part, or -1
   double release_time = -1;   ///< s, or -1: not released
+  double touch_end_time = -1; ///< s: a late touch of the projectile ended the throw, or -1
+  double begin_time = 0;      ///< s: when the task began (the throw once the creature rested), or -1: never
   std::optional<Vec3> target; ///< the aim task's target
 };
 
@@ -78,6 +113,12 @@ class Task {
   /// Whether the motors follow the controller in the coming step (else the
   /// loop holds them off).
   virtual bool controller_on() const { return true; }
+  /// Whether the controller thinks in the coming step (else it stays as it
+  /// is, its clock with it: a delay counts from when it thinks again).
+  virtual bool brain_on() const { return true; }
+  /// Whether every joint is held still with all its motor's force in the
+  /// coming step (the creature as one rigid body), whatever the controller.
+  virtual bool joints_held() const { return false; }
   /// Before each step: what the controller's actions do to the world.
   virtual void act(const CreatureModel&, const Actions&, World&, const Observation&) {}
   /// After each step.

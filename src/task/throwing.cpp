@@ -14,18 +14,46 @@ double point_segment_distance(Vec3 p, Vec3 a, Vec3 b) {
   return norm(p - (a + u * ab));
 }
 
-ThrowingTask::ThrowingTask(const ThrowingDef& def, double dt, int projectile, int release_joint)
-    : def_(def), dt_(dt), projectile_(projectile), release_joint_(release_joint) {}
+ThrowingTask::ThrowingTask(const ThrowingDef& def, double dt, int projectile, int release_joint,
+                           int n_parts)
+    : def_(def), dt_(dt), projectile_(projectile), release_joint_(release_joint),
+      settling_(def.start == ThrowStart::Settled), stillness_(def.settle, dt), parts_(n_parts) {}
 
-long ThrowingTask::max_steps() const { return std::lround(def_.seconds / dt_); }
+long ThrowingTask::max_steps() const {
+  // settled: the settling at its longest, then the throw and a step
+  return settling_ ? std::lround((def_.settle.timeout + def_.seconds) / dt_) + 1
+                   : std::lround(def_.seconds / dt_);
+}
+
+void ThrowingTask::begin(const Observation& o) {
+  if (!settling_) return;
+  for (std::size_t i = 0; i < parts_.size(); ++i) parts_[i] = o.part_pose(static_cast<int>(i)).p;
+  stillness_.start(parts_);
+}
 
 void ThrowingTask::act(const CreatureModel&, const Actions& a, World& w, const Observation& o) {
-  if (released_ || !a.release) return;
+  if (settling_ || released_ || !a.release) return;
   w.break_joint(release_joint_);
   release(o.time(), o.part_pose(projectile_).p);
 }
 
-void ThrowingTask::observe(const Observation& o) { observe(o.time(), o.part_pose(projectile_).p); }
+void ThrowingTask::observe(const Observation& o) {
+  const double t = o.time();
+  if (settling_) {
+    // the throw begins once every part has been still for settle.seconds
+    for (std::size_t i = 0; i < parts_.size(); ++i) parts_[i] = o.part_pose(static_cast<int>(i)).p;
+    if (stillness_.observe(parts_)) {
+      settling_ = false;
+      t_begin_ = t;
+    } else if (t >= def_.settle.timeout - 1e-9) {
+      done_ = true;
+      note_ = "never settled within settle_timeout";
+    }
+    return;
+  }
+  observe(t, o.part_pose(projectile_).p, o.touches_part(projectile_));
+  if (def_.start == ThrowStart::Settled && t - t_begin_ >= def_.seconds - 1e-9) done_ = true;
+}
 
 TaskScore ThrowingTask::score(const CreatureModel&) const {
   return {fitness(), distance(), def_.fitness == ThrowFitness::Aim ? target_miss() : -1};
@@ -35,6 +63,8 @@ TaskScene ThrowingTask::scene(const CreatureModel&) const {
   TaskScene s;
   s.projectile = projectile_;
   s.release_time = release_time();
+  s.touch_end_time = t_touch_end_;
+  s.begin_time = settling_ ? -1 : t_begin_;
   if (def_.fitness == ThrowFitness::Aim) s.target = def_.target;
   return s;
 }
@@ -47,8 +77,13 @@ void ThrowingTask::release(double t, Vec3 projectile) {
   miss_ = norm(projectile - def_.target);
 }
 
-void ThrowingTask::observe(double, Vec3 projectile) {
+void ThrowingTask::observe(double t, Vec3 projectile, bool touched) {
   if (!released_ || done_) return;
+  if (touched && def_.touch_seconds >= 0 && t - t_release_ > def_.touch_seconds + 1e-9) {
+    // a push or carry, not a throw: measured where the projectile is
+    done_ = true;
+    t_touch_end_ = t;
+  }
   // the path since the release, one segment per step
   miss_ = std::min(miss_, point_segment_distance(def_.target, last_, projectile));
   // at rest: barely moving, step after step, for rest_seconds
@@ -74,6 +109,7 @@ double ThrowingTask::fitness() const {
 }
 
 std::string ThrowingTask::note() const {
+  if (!note_.empty()) return note_;
   return released_ ? std::string() : std::string("the projectile was never released");
 }
 

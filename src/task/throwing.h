@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "core/math.h"
 #include "task/task.h"
@@ -16,13 +17,28 @@ enum class ThrowFitness {
   Aim,       ///< eq. 3 with alpha_p = alpha_t = 1: F_a = D_p - D_t
 };
 
+/// When the throw begins.
+enum class ThrowStart {
+  Drop,     ///< at the drop: the controller runs from the first step (4.1, 4.4)
+  Settled,  ///< once the creature, dropped with its joints held, its controller
+            ///< and brain off, is still (`settle`); ours (docs/physics.md)
+};
+
 /// A throwing task. Defaults are the paper's where it gives them, else ours
 /// (docs/config.md).
 struct ThrowingDef {
   ThrowFitness fitness = ThrowFitness::Distance;
-  /// Longest evaluation (s): a projectile still moving then is measured
-  /// where it is. Our choice: 20 s (4.3: "roll for almost 20 seconds").
+  /// Longest evaluation (s) from the throw's beginning: a projectile still
+  /// moving then is measured where it is. Our choice: 20 s (4.3: "roll for
+  /// almost 20 seconds").
   double seconds = 20;
+  ThrowStart start = ThrowStart::Drop;
+  /// With ThrowStart::Settled: when the creature is still (never: fitness 0).
+  SettleDef settle;
+  /// After the release the creature may touch its projectile for this long
+  /// (s); a later touch ends the throw, the projectile measured where it is
+  /// (a push or carry is not a throw). Negative: no limit, the paper's way.
+  double touch_seconds = -1;
   /// Gap between the lowest part and the ground at the start (m).
   double drop_height = 0.1;
   /// At rest: the projectile's centre moves less than rest_speed * dt over
@@ -42,16 +58,24 @@ struct ThrowingDef {
 class ThrowingTask : public Task {
  public:
   /// `projectile` and `release_joint`: the catapult's (CreatureModel), or -1
-  /// when only the value methods are used.
-  ThrowingTask(const ThrowingDef& def, double dt, int projectile = -1, int release_joint = -1);
+  /// when only the value methods are used; `n_parts` for ThrowStart::Settled.
+  ThrowingTask(const ThrowingDef& def, double dt, int projectile = -1, int release_joint = -1,
+               int n_parts = 0);
 
   Scenario scenario() const override { return {def_.drop_height}; }
   long max_steps() const override;
-  /// The controller drives the motors throughout (4.4: no activation sequence).
+  void begin(const Observation& o) override;
+  /// Once the throw has begun the controller drives the motors throughout
+  /// (4.4: no activation sequence); before it (settling), the joints are held
+  /// and the brain waits.
+  bool controller_on() const override { return !settling_; }
+  bool brain_on() const override { return !settling_; }
+  bool joints_held() const override { return settling_; }
   /// The release breaks the arm-projectile joint before the step.
   void act(const CreatureModel& m, const Actions& a, World& w, const Observation& o) override;
   void observe(const Observation& o) override;
-  /// True once the projectile has come to rest after its release.
+  /// True once the projectile has come to rest after its release, the
+  /// throw's `seconds` are over, or the creature never settled.
   bool done() const override { return done_; }
   TaskScore score(const CreatureModel&) const override;
   std::string note() const override;
@@ -59,12 +83,17 @@ class ThrowingTask : public Task {
 
   /// Call at the step the release fires, with the time and the projectile's centre.
   void release(double t, Vec3 projectile);
-  /// Call after every physics step with the projectile's centre.
-  void observe(double t, Vec3 projectile);
+  /// Call after every physics step with the projectile's centre and whether
+  /// the creature touched it in that step.
+  void observe(double t, Vec3 projectile, bool touched = false);
 
   bool released() const { return released_; }
+  /// Whether the creature is still settling (ThrowStart::Settled).
+  bool settling() const { return settling_; }
   /// Time of the release (s), or -1.
   double release_time() const { return released_ ? t_release_ : -1; }
+  /// When a touch later than touch_seconds after the release ended the throw (s), or -1.
+  double late_touch_time() const { return t_touch_end_; }
   /// D_p: horizontal distance from the release point to the last observed
   /// position (the resting point once done()); 0 before the release.
   double distance() const;
@@ -80,7 +109,12 @@ class ThrowingTask : public Task {
   double dt_;
   int projectile_, release_joint_;
   bool released_ = false, done_ = false;
-  double t_release_ = 0;
+  bool settling_;
+  Stillness stillness_;
+  std::vector<Vec3> parts_;
+  std::string note_;
+  double t_touch_end_ = -1;  ///< s: when a late touch ended the throw, or -1
+  double t_release_ = 0, t_begin_ = 0;
   Vec3 start_, last_;
   double miss_ = 0;
   long still_steps_ = 0;  ///< consecutive still steps of dt

@@ -206,11 +206,11 @@ TEST(Evaluate, ChaumontSequenceSettlesBurstsSettlesThenMeasures) {
   EXPECT_GT(r.seconds, 2 + 1.0 + 2 * 30 / 60.0 - 1e-9);
   EXPECT_LT(r.distance, 1e-3);
   // a creature that never stops moving is never measured and scores 0
-  cfg.task.settle_speed = 0;
+  cfg.task.settle.speed = 0;
   r = evaluate(m, cfg, 1);
   EXPECT_EQ(r.fitness, 0);
   EXPECT_EQ(r.note, "never settled within settle_timeout");
-  EXPECT_NEAR(r.seconds, cfg.task.settle_timeout, 2 * cfg.physics.dt);
+  EXPECT_NEAR(r.seconds, cfg.task.settle.timeout, 2 * cfg.physics.dt);
 }
 
 }  // namespace

@@ -27,6 +27,7 @@ CreatureModel grow(const std::string& name, SimConfig& cfg) {
 struct ScriptedTask : Task {
   int off = 10, last = 30;
   double drop = 0.25;
+  bool held = false, wait = false;  // while off: joints held, brain waiting
   std::vector<char> log;  // 'b' begin, 'a' act, 'o' observe
   std::vector<double> times;
   double start_z = 0;
@@ -39,6 +40,8 @@ struct ScriptedTask : Task {
     times.push_back(o.time());
   }
   bool controller_on() const override { return observed() >= off; }
+  bool joints_held() const override { return held && observed() < off; }
+  bool brain_on() const override { return !wait || observed() >= off; }
   void act(const CreatureModel&, const Actions&, World&, const Observation&) override { log.push_back('a'); }
   void observe(const Observation& o) override {
     log.push_back('o');
@@ -90,6 +93,43 @@ TEST(Step, ATaskWrittenAnywhereDrivesTheLoopInTheOrderPromised) {
   EXPECT_EQ(s.brain_steps, brain_steps_due(task.last, cfg.physics.dt, cfg.brain_hz));
   // the activity counts only the steps the controller drove
   EXPECT_EQ(s.driven_steps, task.last - task.off);
+}
+
+// Task::joints_held and Task::brain_on: the walker dropped limp folds its
+// joints as it lands; held, it lands as one rigid body; a waiting brain
+// takes up its clock where the task turns it on.
+TEST(Step, ATaskMayHoldTheJointsAndHaveTheBrainWait) {
+  SimConfig cfg;
+  CreatureModel m = grow("walker.json", cfg);
+  const int n_joints = static_cast<int>(m.joints.size());
+  ASSERT_GT(n_joints, 0);
+  auto drop = [&](bool held, bool wait, double* brain_steps) {
+    auto owned = std::make_unique<ScriptedTask>();
+    ScriptedTask& task = *owned;
+    task.off = 120;  // 2 s at 60 Hz: it lands and rests
+    task.last = 150;
+    task.held = held;
+    task.wait = wait;
+    EvalState s(m, GraphBrain(m.brain), cfg, std::move(owned));
+    double most = 0;  // the largest joint excursion while off
+    while (!s.task->done() && step(m, cfg, s)) {
+      if (task.observed() > task.off) continue;
+      for (int j = 0; j < n_joints; ++j)
+        for (int d = 0; d < joint_dofs(m.joints[j].type); ++d) most = std::max(most, std::abs(s.world.joint_position(j, d)));
+    }
+    EXPECT_FALSE(s.failed) << s.failure;
+    *brain_steps = static_cast<double>(s.brain_steps - s.brain_waits);
+    return most;
+  };
+  double thought = 0;
+  const double limp = drop(false, false, &thought);
+  EXPECT_EQ(thought, brain_steps_due(150, cfg.physics.dt, cfg.brain_hz));
+  const double held = drop(true, true, &thought);
+  EXPECT_GT(limp, 0.1) << "limp joints fold as it lands";
+  EXPECT_LT(held, 0.25 * limp) << "held joints barely give";
+  // the brain thought only in the 30 steps it was on
+  EXPECT_EQ(thought, brain_steps_due(150, cfg.physics.dt, cfg.brain_hz) -
+                         brain_steps_due(120, cfg.physics.dt, cfg.brain_hz));
 }
 
 TEST(Step, ABlowUpStopsTheLoopAndIsNotObserved) {

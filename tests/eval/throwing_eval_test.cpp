@@ -166,6 +166,85 @@ TEST(ThrowingEval, TheProjectileRestsForRestSecondsAtAnyPhysicsStep) {
   EXPECT_NEAR(ends[1], ends[0], 1.0);
 }
 
+// throwing.start = settled: the creature is dropped with its joints held and
+// its controller and brain off, and the throw begins once every part has been
+// still for settle.seconds; the mechanism's delay counts from there.
+TEST(ThrowingEval, ASettledStartHoldsTheCreatureUntilItIsStillAndTheDelayCountsFromThere) {
+  Genome g = catapult();
+  CreatureModel m = grow(g);
+  const double dt0 = default_sim_config(g).physics.dt;
+  for (int div : {1, 2}) {
+    SimConfig cfg = default_sim_config(g);
+    cfg.physics.dt = dt0 / div;
+    const double dt = cfg.physics.dt;
+    cfg.throwing.start = ThrowStart::Settled;
+    cfg.replay_fps = 1 / dt;  // a frame after every step
+    Replay replay;
+    EvalResult r = evaluate(m, cfg, 1, &replay);
+    ASSERT_FALSE(r.failed) << r.failure;
+    ASSERT_GT(r.release_time, 0) << r.note;
+    // the brain thought from the throw's beginning only: the release at its
+    // 30th step, 0.5 s after it
+    const double t_begin = r.release_time - 0.5;
+    EXPECT_GE(t_begin, cfg.throwing.settle.seconds) << "dt/" << div;
+    EXPECT_NEAR(static_cast<double>(r.brain_steps), 60 * (r.seconds - t_begin), 1.5) << "dt/" << div;
+    // until then every part came to rest: still for settle.seconds just
+    // before the beginning, not before (that the joints are held while it
+    // settles: Step.ATaskMayHoldTheJointsAndHaveTheBrainWait)
+    double last_moving = 0;
+    for (std::size_t k = 1; k < replay.frames.size() && replay.frames[k].t < t_begin - dt / 2; ++k) {
+      const ReplayFrame &a = replay.frames[k - 1], &b = replay.frames[k];
+      for (int i = 0; i < m.n_parts(); ++i) {
+        Vec3 pa{a.poses[7 * i], a.poses[7 * i + 1], a.poses[7 * i + 2]};
+        Vec3 pb{b.poses[7 * i], b.poses[7 * i + 1], b.poses[7 * i + 2]};
+        if (norm(pb - pa) >= cfg.throwing.settle.speed * dt) last_moving = b.t;
+      }
+    }
+    EXPECT_GT(last_moving, 0) << "the drop moves it";
+    EXPECT_NEAR(t_begin - last_moving, cfg.throwing.settle.seconds, dt + 1e-9) << "dt/" << div;
+    EXPECT_GT(r.distance, 1.0) << "dt/" << div;  // it still throws
+  }
+}
+
+TEST(ThrowingEval, ACreatureThatNeverSettlesNeverThrowsAndScoresZero) {
+  Genome g = catapult();
+  SimConfig cfg = default_sim_config(g);
+  cfg.throwing.start = ThrowStart::Settled;
+  cfg.throwing.settle.speed = 0;  // nothing is ever still
+  cfg.throwing.settle.timeout = 1.5;
+  EvalResult r = evaluate(grow(g), cfg, 1);
+  EXPECT_FALSE(r.failed) << r.failure;
+  EXPECT_EQ(r.fitness, 0);
+  EXPECT_EQ(r.release_time, -1);
+  EXPECT_EQ(r.brain_steps, 0);
+  EXPECT_EQ(r.note, "never settled within settle_timeout");
+  EXPECT_NEAR(r.seconds, 1.5, 2 * cfg.physics.dt);
+}
+
+// throwing.touch_seconds on real physics: the hand catapult's arm pushes
+// its projectile for a moment after the release (World::touches_part), then
+// it flies free
+TEST(ThrowingEval, TheArmMayPushItsProjectileOnlyForTouchSecondsAfterTheRelease) {
+  Genome g = catapult();
+  CreatureModel m = grow(g);
+  SimConfig cfg = default_sim_config(g);
+  const EvalResult free = evaluate(m, cfg, 1);
+  ASSERT_FALSE(free.failed) << free.failure;
+  EXPECT_EQ(free.touch_end_time, -1);
+  // no touch allowed: the arm's push ends the throw within 0.2 s of the release
+  cfg.throwing.touch_seconds = 0;
+  const EvalResult pushed = evaluate(m, cfg, 1);
+  EXPECT_GT(pushed.touch_end_time, pushed.release_time);
+  EXPECT_LT(pushed.touch_end_time, pushed.release_time + 0.2);
+  EXPECT_NEAR(pushed.seconds, pushed.touch_end_time, 1e-9);
+  EXPECT_LT(pushed.distance, 0.25 * free.distance);
+  // allowed for 0.2 s: the push is part of the throw, which ends as before
+  cfg.throwing.touch_seconds = 0.2;
+  const EvalResult thrown = evaluate(m, cfg, 1);
+  EXPECT_EQ(thrown.touch_end_time, -1);
+  EXPECT_EQ(thrown.fitness, free.fitness);
+}
+
 TEST(ThrowingEval, AimScoresDistanceMinusTheMiss) {
   Genome g = catapult();
   CreatureModel m = grow(g);

@@ -28,7 +28,7 @@ RunConfig small(Dialect d, Algorithm a) {
   c.evolution.evaluations = 36;
   c.evolution.batch = 4;
   c.sim.task.seconds = 1;
-  c.sim.task.settle_timeout = 2;
+  c.sim.task.settle.timeout = 2;
   return c;
 }
 

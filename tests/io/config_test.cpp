@@ -71,8 +71,8 @@ TEST(Config, KeysCountedInPhysicsStepsAreRefusedNamingTheirReplacement) {
                            {"task.settle_speed=0.1", "task.settle_seconds=0.25", "throwing.rest_seconds=1"});
   ASSERT_TRUE(c.ok()) << c.error();
   EXPECT_EQ(c->sim.brain_hz, 120.0);
-  EXPECT_EQ(c->sim.task.settle_speed, 0.1);
-  EXPECT_EQ(c->sim.task.settle_seconds, 0.25);
+  EXPECT_EQ(c->sim.task.settle.speed, 0.1);
+  EXPECT_EQ(c->sim.task.settle.seconds, 0.25);
   EXPECT_EQ(c->sim.throwing.rest_seconds, 1.0);
   EXPECT_EQ(apply_error("[brain]\nrate_hz = 0\n"), "run.toml: brain.rate_hz: out of range [0.1, 100000], got 0");
   EXPECT_EQ(apply_error("[task]\nsettle_seconds = -1\n"),

@@ -45,8 +45,8 @@ TEST(Locomotion, ChaumontSequenceGatesTheControllerAndMeasuresOnlyTheLastPhase) 
   def.seconds = 2;
   def.burst_seconds = 1;
   const double dt = 0.1;
-  def.settle_seconds = 3 * dt;  // three steps
-  def.settle_speed = 0.1;       // 0.01 m per step
+  def.settle.seconds = 3 * dt;  // three steps
+  def.settle.speed = 0.1;       // 0.01 m per step
   LocomotionTask t(def, dt, 1);
   double time = 0;
   Vec3 p{0, 0, 1};
@@ -95,7 +95,7 @@ TEST(Locomotion, SettlingIsASpeedHeldForSettleSecondsWhateverTheStep) {
         p.x += speed * dt;
         t.observe(static_cast<double>(++steps) * dt, p, {p});
       }
-      if (speed < def.settle_speed) {
+      if (speed < def.settle.speed) {
         EXPECT_EQ(t.phase(), Phase::Burst) << hz << " Hz";
         EXPECT_EQ(steps, hz / 2) << hz << " Hz";
       } else {
@@ -136,6 +136,7 @@ struct OnePart : Observation {
   Vec3 centre_of_mass() const override { return {}; }
   int n_parts() const override { return 1; }
   Pose part_pose(int) const override { return {{0, 0, 0}, R}; }
+  bool touches_part(int) const override { return false; }
 };
 
 TEST(Heading, IsTheRootsXAxisTurnedOnTheGround) {

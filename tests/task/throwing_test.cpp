@@ -3,6 +3,8 @@
 // against closed forms.
 #include "task/throwing.h"
 
+#include "develop/creature_model.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -63,6 +65,36 @@ TEST(Throwing, DistanceIsHorizontalFromTheReleasePoint) {
   EXPECT_DOUBLE_EQ(t.distance(), 5.0);  // the fall from 2 m does not count
   EXPECT_DOUBLE_EQ(t.fitness(), 5.0);
   EXPECT_DOUBLE_EQ(t.release_time(), 0.5);
+}
+
+// throwing.touch_seconds: a push or carry is not a throw
+TEST(Throwing, ATouchLaterThanTouchSecondsAfterTheReleaseEndsTheThrowWhereTheProjectileIs) {
+  ThrowingDef def;
+  def.touch_seconds = 0.5;
+  const double dt = 0.1;
+  ThrowingTask t(def, dt);
+  t.release(1.0, {0, 0, 0});
+  double x = 0;
+  for (int k = 1; k <= 5; ++k) t.observe(1.0 + k * dt, {x += 0.2, 0, 0}, true);  // pushed within 0.5 s
+  EXPECT_FALSE(t.done());
+  t.observe(1.6, {x += 0.2, 0, 0}, false);  // free
+  EXPECT_FALSE(t.done());
+  t.observe(1.7, {x += 0.2, 0, 0}, true);  // touched 0.7 s after the release: the throw ends
+  EXPECT_TRUE(t.done());
+  EXPECT_NEAR(t.distance(), 1.4, 1e-12);
+  EXPECT_DOUBLE_EQ(t.late_touch_time(), 1.7);
+  EXPECT_DOUBLE_EQ(t.scene(CreatureModel{}).touch_end_time, 1.7);
+  t.observe(1.8, {x + 5, 0, 0}, false);  // nothing counts after
+  EXPECT_NEAR(t.distance(), 1.4, 1e-12);
+
+  // negative: no limit (the paper's way)
+  def.touch_seconds = -1;
+  ThrowingTask u(def, dt);
+  u.release(0, {0, 0, 0});
+  for (int k = 1; k <= 50; ++k) u.observe(k * dt, {0.2 * k, 0, 0}, true);
+  EXPECT_FALSE(u.done());
+  EXPECT_NEAR(u.distance(), 10, 1e-9);
+  EXPECT_EQ(u.late_touch_time(), -1);
 }
 
 TEST(Throwing, ComesToRestAfterRestSecondsOfStillness) {
