@@ -23,8 +23,9 @@ run's [check] config keys, or --check-set's).
 
 For a throwing run (chaumont2007's catapults) instead: the best fitness of the
 first and last generation; the best creature re-simulated exactly: its throw
-distance D_p, its target miss D_t (aim task), its release time (the mechanism
-fires at 0.5 s; earlier means the body fired it), its projectile's size; the
+distance D_p, its target miss D_t (aim task), its release time from the
+throw's start (the drop, or its rest with throwing.start = "settled"; the
+mechanism fires 0.5 s after it, earlier means the body fired it), its projectile's size; the
 median throw of the same creature over evaluation seeds 1-5 (throws are
 chaotic: this says how much of the best was luck); and the explosion and
 speed discards (5.4) as a share of the evaluations of the first generation,
@@ -103,9 +104,12 @@ def check_row(preset, seed, run_dir, check_set=()):
         sys.exit(r.stderr)
     c = json.loads(r.stdout)
     # "dt/2 (median of 5 seeds)" under check.converge_seeds > 1 counts as "dt/2"
-    ratio = {v["name"].split(" (median")[0]: v for v in c["variants"]}
+    # and "held (no effectors)" as "held"
+    ratio = {v["name"].split(" (")[0]: v for v in c["variants"]}
     cell = lambda n: ("failed" if ratio[n]["failed"] else f"{ratio[n]['ratio']:.2f}") if n in ratio else "-"
     verdict = "pass" if c["passed"] else "FAIL: " + "; ".join(c["failures"])
+    if c.get("notes"):
+        verdict += " (" + "; ".join(c["notes"]) + ")"
     active = sum(1 for sd in c["effector_sd"] if sd >= 0.1)
     # the fitness selection saw: under elite_evaluations the mean (or least) of several evaluations
     scored = c.get("scored_fitness", c["fitness"])
@@ -177,7 +181,9 @@ def early_releases(run_dir, gen):
             r = sh(["simulate", path, "--config", cfg, "--json"])
             if r.returncode != 0:
                 continue
-            t = json.loads(r.stdout).get("release_time")
+            one = json.loads(r.stdout)
+            t, begin = one.get("release_time"), one.get("throw_begin_time") or 0
+            t = t - begin if t is not None and t >= 0 else t  # from the throw's beginning
             steps = json.loads(genome)["catapult"].get("release", {}).get("delay_steps", 30)
             delay = steps / rate  # brain steps at brain.rate_hz
             n += 1
@@ -211,6 +217,8 @@ def throw_row(preset, seed, run_dir):
     miss = one.get("target_miss")
     early0, early1 = early_releases(run_dir, first[0]), early_releases(run_dir, last[0])
     release = one.get("release_time")
+    if release is not None and release >= 0:
+        release -= one.get("throw_begin_time") or 0  # from the throw's beginning (its rest)
     head = f"| {preset} | {seed} | "
     result = (head + f"{gens[-1][1]} | {first[2]:.3g} | {last[2]:.3g} | "
               f"{one['distance']:.2f} | {'-' if miss is None else f'{miss:.2f}'} | {others[2]:.2f} | "
@@ -257,7 +265,7 @@ def main():
               "| median throw, seeds 1-5 (m) | discarded, first generation | discarded, last | discarded, run |")
         print("|" + "---|" * 11)
         print("\n".join(t[0] for t in throws))
-        print("\n| preset | seed | parts | height (m) | body / projectile mass | projectile (m) | release (s) "
+        print("\n| preset | seed | parts | height (m) | body / projectile mass | projectile (m) | release (s after the start) "
               "| release height (m) | top speed (m/s) | flight (m) | roll (m) | kick "
               "| early release, first generation | early release, last |")
         print("|" + "---|" * 14)

@@ -77,6 +77,7 @@ int cmd_check(const CheckArgs& a) {
     out["max_penetration"] = d.max_penetration;
     out["passed"] = rep.passed();
     out["failures"] = rep.failures;
+    out["notes"] = rep.notes;
     std::printf("%s\n", out.dump().c_str());
     return rep.passed() ? 0 : 1;
   }
@@ -110,6 +111,7 @@ int cmd_check(const CheckArgs& a) {
   if (d.worst_joint >= 0) std::printf(" (joint %d)", d.worst_joint);
   std::printf(", stop overshoot %.3f, deepest interpenetration %.2f mm\n", d.max_stop_overshoot,
               1000 * d.max_penetration);
+  for (const auto& n : rep.notes) std::printf("note: %s\n", n.c_str());
   if (rep.passed()) {
     std::printf("verdict: pass\n");
     return 0;

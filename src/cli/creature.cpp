@@ -66,6 +66,13 @@ std::string joined_sets(const std::vector<std::string>& set) {
 
 Status apply_seconds(Creature& c, const std::optional<double>& seconds) { return set_seconds(c.cfg.sim, seconds); }
 
+// whether two run configs evaluate a creature alike: the same simulation and
+// the same evolution (which says how the elite was re-evaluated); check's
+// gates may differ
+bool evaluates_alike(const RunConfig& a, const RunConfig& b) {
+  return a.dialect == b.dialect && a.sim == b.sim && a.evolution == b.evolution;
+}
+
 Result<Creature> from_run(const RunTarget& t, const CreatureFlags& f) {
   if (!f.config.empty())
     return Error{"--config: a run's creature is evaluated with its run's config (use --set to vary it)"};
@@ -119,9 +126,16 @@ Result<Creature> from_run(const RunTarget& t, const CreatureFlags& f) {
   c.evaluations = ind->evaluations;
   c.individual = *ind;
   c.run_dir = t.dir;
-  c.scored_settings = f.set.empty() && !f.seconds;
+  // --set keys that change no evaluation (check's gates) keep it as scored
+  bool same = f.set.empty();
+  if (!same) {
+    auto plain = read_run_config(*text, run_db_path(t.dir) + " (the run's config)", {});
+    same = plain && evaluates_alike(*plain, *cfg);
+  }
+  c.scored_settings = same && !f.seconds;
   c.settings = c.scored_settings
-                   ? "as scored: the run's config and its evaluation seed " + std::to_string(c.seed)
+                   ? "as scored: the run's config" + (f.set.empty() ? std::string() : " (with " + joined_sets(f.set) + ")") +
+                         " and its evaluation seed " + std::to_string(c.seed)
                    : "not as scored: the run's config and seed with " +
                          joined_sets(f.set) + (f.seconds ? std::string(f.set.empty() ? "" : ", ") + "--seconds" : "");
   if (Status s = apply_seconds(c, f.seconds); !s) return Error{s.error()};
@@ -187,7 +201,12 @@ Result<Creature> from_genome(const std::string& path, const CreatureFlags& f) {
       if (!cfg) return Error{cfg.error()};
       c.cfg = *cfg;
       c.seed = *prov_seed;
-      c.scored_settings = genome_same && config_same && f.set.empty() && !f.seconds;
+      bool same = f.set.empty();
+      if (!same) {  // --set keys that change no evaluation (check's gates) keep it as scored
+        auto plain = genome_config(c.genome, str("config"), path + " (provenance.config)", {});
+        same = plain && evaluates_alike(*plain, *cfg);
+      }
+      c.scored_settings = genome_same && config_same && same && !f.seconds;
       if (genome_same && prov.contains("fitness") && prov["fitness"].is_number())
         c.stored_fitness = prov["fitness"].get<double>();
       if (prov.contains("evaluations")) {
@@ -198,7 +217,9 @@ Result<Creature> from_genome(const std::string& path, const CreatureFlags& f) {
         c.evaluations = static_cast<int>(prov["evaluations"].get<std::int64_t>());
       }
       if (c.scored_settings)
-        c.settings = "as scored (" + scored_by + "): its run's config and evaluation seed " + std::to_string(c.seed);
+        c.settings = "as scored (" + scored_by + "): its run's config" +
+                     (f.set.empty() ? std::string() : " (with " + joined_sets(f.set) + ")") + " and evaluation seed " +
+                     std::to_string(c.seed);
       else if (!genome_same)
         c.settings = "not as scored: the genome was edited after " + scored_by + " was scored";
       else if (!config_same)

@@ -84,20 +84,27 @@ CheckReport check_creature(const CreatureModel& m, const SimConfig& cfg, std::ui
   }
   // the effectors held at their means: motion without a changing signal is
   // paid for by constraint error, not by the motors
+  // (a creature without effectors, or never driven, has nothing to clamp or
+  // hold: whatever it does is passive, and both keep all of it)
   double clamped = -1;
-  if (!rep.scored.diagnostics.effector_mean.empty()) {
+  {
     SimConfig c = cfg;
     c.effector_clamp = rep.scored.diagnostics.effector_mean;
-    clamped = run("clamped", c, seed, scored);
+    const bool none = c.effector_clamp.empty();
+    clamped = run(none ? "clamped (no effector driven)" : "clamped", c, seed, scored);
   }
   // every joint held still, the controller still acting on the task (a
   // catapult's release): a throw that keeps its distance is a fall
   double held = -1;
-  if (!m.effectors.empty()) {
+  {
     SimConfig c = cfg;
     c.hold_joints = true;
-    held = run("held", c, seed, scored);
+    held = run(m.effectors.empty() ? "held (no effectors)" : "held", c, seed, scored);
   }
+
+  if (held > kPassiveHeld)
+    rep.notes.push_back("mostly passive: with its joints held it keeps " + fixed(held) +
+                        " of its fitness (a fall, not a swing)");
 
   // the gates
   if (!(scored > 0) || !(rep.scored_fitness > 0)) {

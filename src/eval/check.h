@@ -59,6 +59,9 @@ struct CheckReport {
   std::vector<CheckVariant> variants;
   double median_other_seeds = 0;  ///< ratio
   std::vector<std::string> failures;  ///< each gate that failed, with its figures; empty: passed
+  /// What the figures say of the motion beside the gates, e.g. that it is
+  /// mostly passive (a fall: held joints keep more than half of it).
+  std::vector<std::string> notes;
   bool passed() const { return failures.empty(); }
 };
 
@@ -70,6 +73,10 @@ struct CheckReport {
 /// compare with the own seed's evaluation, like with like.
 CheckReport check_creature(const CreatureModel& m, const SimConfig& cfg, std::uint64_t seed,
                            const CheckDef& def, const Repeats& repeats = {});
+
+/// Held joints keeping more than this share of the fitness: the motion is
+/// mostly passive (a fall), which CheckReport::notes says whatever the gates.
+inline constexpr double kPassiveHeld = 0.5;
 
 /// The physics seed of a check's k-th other seed (k from 1), unlike any trial's.
 std::uint64_t check_seed(std::uint64_t seed, int k);

@@ -61,11 +61,34 @@ TEST(Check, AThrowThatSurvivesHeldJointsIsAFall) {
     std::snprintf(b, sizeof b, "%.3g", ratio(f, "held"));
     return std::string(b);
   }() + " > 0.5");
+  // with the gate off (the catapult presets) it passes, named for what it is
+  Outcome named = bestiary("check " + creature("catapult_toppler.json") + quick + " --set check.max_held=1e6");
+  ASSERT_EQ(named.code, 0) << named.out << named.err;
+  auto n = nlohmann::json::parse(named.out);
+  ASSERT_EQ(n["notes"].size(), 1u);
+  EXPECT_EQ(n["notes"][0].get<std::string>().rfind("mostly passive: with its joints held it keeps 0.", 0), 0u);
   Outcome thrown = bestiary("check " + creature("catapult_thrower.json") + quick);
   ASSERT_EQ(thrown.code, 0) << thrown.out << thrown.err;
   auto t = nlohmann::json::parse(thrown.out);
   EXPECT_LT(ratio(t, "held"), 0.4);
   EXPECT_LT(ratio(t, "clamped"), 0.25);
+  EXPECT_TRUE(t["notes"].empty());
+}
+
+// A creature without effectors has nothing to clamp or hold: whatever it does
+// is passive, both variants keep all of it, and the held gate fails it.
+// (catapult_inert.json: catapult-small seed 1's best with throwing.start =
+// settled and touch_seconds = 1, docs/physics.md cause 25: it lets its block
+// fall off its arm and roll 1.1 m.)
+TEST(Check, ACreatureWithoutEffectorsIsAllPassive) {
+  Outcome r = bestiary("check " + creature("catapult_inert.json") +
+                       " --set check.other_seeds=0 --set check.converge_seeds=1 --json");
+  ASSERT_EQ(r.code, 1) << r.out << r.err;
+  auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(ratio(j, "clamped (no effector driven)"), ratio(j, "held (no effectors)"));
+  EXPECT_NEAR(ratio(j, "held (no effectors)"), 1.0, 0.01);
+  EXPECT_EQ(j["failures"].back(), "held joints keep 1 > 0.5");
+  EXPECT_EQ(j["notes"].back(), "mostly passive: with its joints held it keeps 1 of its fitness (a fall, not a swing)");
 }
 
 TEST(Check, ACreatureWithAConstantEffectorFailsTheClampedGate) {
@@ -130,6 +153,16 @@ TEST(Check, ARunsBestIsCheckedWithItsOwnConfigAndSeed) {
   auto j = nlohmann::json::parse(r.out);
   // the scored evaluation, exactly
   EXPECT_EQ(j["fitness"].get<double>(), j["stored_fitness"].get<double>());
+  // a gate set on the command line changes no evaluation: still as scored;
+  // a physics key does
+  const std::string fast = " --set check.other_seeds=0 --set check.converge_seeds=1";
+  Outcome gate = bestiary("check " + dir.string() + " --set check.max_held=1e6" + fast);
+  EXPECT_NE(gate.err.find("as scored: the run's config (with --set check.max_held=1e6, --set check.other_seeds=0, "
+                          "--set check.converge_seeds=1) and its evaluation seed"),
+            std::string::npos) << gate.err;
+  Outcome step = bestiary("check " + dir.string() + " --set physics.dt=0.002" + fast);
+  EXPECT_NE(step.err.find("not as scored: the run's config and seed with --set physics.dt=0.002"),
+            std::string::npos) << step.err;
   Outcome bad = bestiary("check " + dir.string() + " --id 999999");
   EXPECT_EQ(bad.code, 2);
   EXPECT_EQ(bad.err, "bestiary: " + dir.string() + ": no individual 999999\n");
