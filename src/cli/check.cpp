@@ -103,7 +103,10 @@ int cmd_check(const CheckArgs& a) {
     }
     std::printf("\n");
   }
-  std::printf("  other seeds: median ratio %s\n", ratio_text(rep.median_other_seeds).c_str());
+  if (subject->cfg.check.other_seeds > 0)
+    std::printf("  other seeds: median ratio %s\n", ratio_text(rep.median_other_seeds).c_str());
+  else
+    std::printf("  other seeds: none (check.other_seeds = 0)\n");
   std::printf("  effector activity (s.d. of each signal while driven):");
   for (double sd : d.effector_sd) std::printf(" %.3f", sd);
   if (d.effector_sd.empty()) std::printf(" none");
