@@ -113,7 +113,7 @@ Result<std::unique_ptr<Task>> make_task(const CreatureModel& m, const SimConfig&
     case TaskKind::Locomotion: return std::unique_ptr<Task>(new LocomotionTask(cfg.task, dt, m.n_parts()));
     case TaskKind::Throwing:
       if (m.projectile < 0) return Error{"not a catapult: the throwing task needs a genome with a catapult block"};
-      return std::unique_ptr<Task>(new ThrowingTask(cfg.throwing, dt, m.projectile, m.release_joint, m.n_parts()));
+      return std::unique_ptr<Task>(new ThrowingTask(cfg.throwing, dt, m.projectile, m.release_joint));
   }
   return Error{"unknown task kind"};
 }

@@ -21,8 +21,9 @@ long LocomotionTask::max_steps() const {
 }
 
 const std::vector<Vec3>& LocomotionTask::parts_of(const Observation& o) {
-  parts_.resize(needs_parts() ? o.n_parts() : 0);
-  for (std::size_t i = 0; i < parts_.size(); ++i) parts_[i] = o.part_pose(static_cast<int>(i)).p;
+  // only a settling phase, or the burst before one, looks at them
+  if (needs_parts() && phase_ != Phase::Measure && phase_ != Phase::Done) part_positions(o, parts_);
+  else parts_.clear();
   return parts_;
 }
 
@@ -57,15 +58,17 @@ void LocomotionTask::settle(double t, bool still, Phase next) {
 
 void LocomotionTask::observe(double t, Vec3 com, const std::vector<Vec3>& parts) {
   t_ = t;
-  // every step counts, but only a settling phase's still steps (it restarts them) matter
-  const bool still = needs_parts() && stillness_.observe(parts);
+  // a settling phase counts still steps; the burst before the second keeps
+  // the parts' positions for its first step
+  const bool settling = phase_ == Phase::Settle1 || phase_ == Phase::Settle2;
+  const bool still = settling && stillness_.observe(parts);
+  if (phase_ == Phase::Burst) stillness_.start(parts);
   switch (phase_) {
     case Phase::Settle1: settle(t, still, Phase::Burst); break;
     case Phase::Burst:
       if (t - phase_start_ >= def_.burst_seconds - 1e-9) {
         phase_ = Phase::Settle2;
         phase_start_ = t;
-        stillness_.restart();
       }
       break;
     case Phase::Settle2:

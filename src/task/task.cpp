@@ -13,6 +13,11 @@ double heading(const Observation& o) {
   return std::atan2(y, x);
 }
 
+void part_positions(const Observation& o, std::vector<Vec3>& out) {
+  out.resize(static_cast<std::size_t>(o.n_parts()));
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] = o.part_pose(static_cast<int>(i)).p;
+}
+
 bool Stillness::observe(const std::vector<Vec3>& parts) {
   double largest = 0;
   for (std::size_t i = 0; i < parts.size(); ++i) largest = std::max(largest, norm(parts[i] - prev_[i]));

@@ -39,6 +39,9 @@ class Observation {
 /// part's x axis projected onto the ground; 0 when that axis is vertical.
 double heading(const Observation& o);
 
+/// Every part's position (part i at out[i]), from an observation.
+void part_positions(const Observation& o, std::vector<Vec3>& out);
+
 /// chaumont2007 3.3's stillness, in time: every part moves less than
 /// speed * dt over each step of dt, for `seconds` without a break (at
 /// dt = 1/60 s, the paper's 1/300 per step for 30 steps); never still

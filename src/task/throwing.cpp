@@ -14,20 +14,19 @@ double point_segment_distance(Vec3 p, Vec3 a, Vec3 b) {
   return norm(p - (a + u * ab));
 }
 
-ThrowingTask::ThrowingTask(const ThrowingDef& def, double dt, int projectile, int release_joint,
-                           int n_parts)
+ThrowingTask::ThrowingTask(const ThrowingDef& def, double dt, int projectile, int release_joint)
     : def_(def), dt_(dt), projectile_(projectile), release_joint_(release_joint),
-      settling_(def.start == ThrowStart::Settled), stillness_(def.settle, dt), parts_(n_parts) {}
+      settling_(def.start == ThrowStart::Settled), stillness_(def.settle, dt) {}
 
 long ThrowingTask::max_steps() const {
   // settled: the settling at its longest, then the throw and a step
-  return settling_ ? std::lround((def_.settle.timeout + def_.seconds) / dt_) + 1
+  return def_.start == ThrowStart::Settled ? std::lround((def_.settle.timeout + def_.seconds) / dt_) + 1
                    : std::lround(def_.seconds / dt_);
 }
 
 void ThrowingTask::begin(const Observation& o) {
   if (!settling_) return;
-  for (std::size_t i = 0; i < parts_.size(); ++i) parts_[i] = o.part_pose(static_cast<int>(i)).p;
+  part_positions(o, parts_);
   stillness_.start(parts_);
 }
 
@@ -41,7 +40,7 @@ void ThrowingTask::observe(const Observation& o) {
   const double t = o.time();
   if (settling_) {
     // the throw begins once every part has been still for settle.seconds
-    for (std::size_t i = 0; i < parts_.size(); ++i) parts_[i] = o.part_pose(static_cast<int>(i)).p;
+    part_positions(o, parts_);
     if (stillness_.observe(parts_)) {
       settling_ = false;
       t_begin_ = t;

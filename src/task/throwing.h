@@ -58,9 +58,8 @@ struct ThrowingDef {
 class ThrowingTask : public Task {
  public:
   /// `projectile` and `release_joint`: the catapult's (CreatureModel), or -1
-  /// when only the value methods are used; `n_parts` for ThrowStart::Settled.
-  ThrowingTask(const ThrowingDef& def, double dt, int projectile = -1, int release_joint = -1,
-               int n_parts = 0);
+  /// when only the value methods are used.
+  ThrowingTask(const ThrowingDef& def, double dt, int projectile = -1, int release_joint = -1);
 
   Scenario scenario() const override { return {def_.drop_height}; }
   long max_steps() const override;
