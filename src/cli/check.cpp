@@ -88,7 +88,7 @@ int cmd_check(const CheckArgs& a) {
   if (s.failed) std::printf("  failed: %s\n", s.failure.c_str());
   if (!rep.scored_by_seed.empty()) {
     // other seeds are compared with what selection saw
-    const std::string halves = half_step_text(subject->repeats());
+    const std::string halves = finer_step_text(subject->repeats());
     std::printf("  scored as the %s of %zu evaluations%s:", score_name(sim.trial_score), rep.scored_by_seed.size(),
                 halves.empty() ? "" : (" (" + halves + ")").c_str());
     for (double f : rep.scored_by_seed) std::printf(" %.4g", f);

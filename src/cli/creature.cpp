@@ -278,7 +278,7 @@ std::string Creature::evaluations_note() const {
   char buf[128];
   std::snprintf(buf, sizeof buf, "(evaluation 1 of %d; the stored fitness %.6g is their %s", evaluations,
                 *stored_fitness, score_name(cfg.sim.trial_score));
-  const std::string halves = half_step_text(repeats());
+  const std::string halves = finer_step_text(repeats());
   return buf + (halves.empty() ? "" : "; " + halves) + ")";
 }
 

@@ -65,7 +65,7 @@ struct Creature {
   /// Evaluated as scored under several evaluations, what one evaluation
   /// shows: "(evaluation 1 of N; the stored fitness S is their mean)" (or least,
   /// as the run's task.trial_score folds them, and which stepped at half the
-  /// step: half_step_text); else "".
+  /// step: finer_step_text); else "".
   std::string evaluations_note() const;
 };
 

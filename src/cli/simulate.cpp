@@ -132,7 +132,7 @@ int cmd_simulate(const SimulateArgs& a) {
   std::printf("%s\n", fitness_line(res.fitness, creature->scored_fitness()).c_str());
   if (!each.empty()) {
     // the run scored it as the mean (or least) of several evaluations, each under its own seed
-    const std::string halves = half_step_text(creature->repeats());
+    const std::string halves = finer_step_text(creature->repeats());
     std::printf("the run's fitness is the %s of %zu evaluations (the lines above are the first's%s):",
                 score_name(cfg.trial_score), each.size(), halves.empty() ? "" : ("; " + halves).c_str());
     for (double f : each) std::printf(" %.6g", f);

@@ -151,33 +151,44 @@ double fold_score(TrialScore how, double so_far, int n, double next) {
   return how == TrialScore::Min ? std::min(so_far, next) : so_far + (next - so_far) / (n + 1);
 }
 
-SimConfig half_step_config(const SimConfig& cfg) {
+SimConfig divided_step_config(const SimConfig& cfg, int divisor) {
   SimConfig c = cfg;
-  c.physics.dt /= 2;
+  c.physics.dt /= divisor;
   return c;
 }
 
-bool repeat_half_step(const Repeats& r, int k) { return r.half_step && k % 2 == 1; }
+int repeat_step_divisor(const Repeats& r, int k) {
+  int cycle[3] = {1, 0, 0}, n = 1;
+  if (r.half_step) cycle[n++] = 2;
+  if (r.quarter_step) cycle[n++] = 4;
+  return cycle[k % n];
+}
 
-std::string half_step_text(const Repeats& r) {
-  std::vector<std::string> which;
-  for (int k = 1; k < r.evaluations; ++k)
-    if (repeat_half_step(r, k)) which.push_back(std::to_string(k + 1));
-  if (which.empty()) return "";
-  std::string s = which.size() == 1 ? "evaluation " : "evaluations ";
-  for (std::size_t i = 0; i < which.size(); ++i)
-    s += (i == 0 ? "" : i + 1 == which.size() ? " and " : ", ") + which[i];
-  return s + " at half the step";
+std::string finer_step_text(const Repeats& r) {
+  std::string out;
+  for (int divisor : {2, 4}) {
+    std::vector<std::string> which;
+    for (int k = 1; k < r.evaluations; ++k)
+      if (repeat_step_divisor(r, k) == divisor) which.push_back(std::to_string(k + 1));
+    if (which.empty()) continue;
+    std::string s = out.empty() ? (which.size() == 1 ? "evaluation " : "evaluations ") : ", ";
+    for (std::size_t i = 0; i < which.size(); ++i)
+      s += (i == 0 ? "" : i + 1 == which.size() ? " and " : ", ") + which[i];
+    out += s + (divisor == 2 ? " at half the step" : out.empty() ? " at a quarter of the step" : " at a quarter of it");
+  }
+  return out;
 }
 
 double repeated_fitness(const CreatureModel& m, const SimConfig& cfg, std::uint64_t seed, const Repeats& r,
                         const EvalResult& first, std::vector<double>* each) {
   auto scored = [&](const EvalResult& e) { return e.failed ? r.failed_fitness : e.fitness; };
-  const SimConfig halved = half_step_config(cfg);
+  const SimConfig finer[2] = {divided_step_config(cfg, 2), divided_step_config(cfg, 4)};
   double score = scored(first);
   if (each) each->assign(1, score);
   for (int k = 1; k < r.evaluations; ++k) {
-    const double f = scored(evaluate(m, repeat_half_step(r, k) ? halved : cfg, repeat_seed(seed, k)));
+    const int divisor = repeat_step_divisor(r, k);
+    const SimConfig& at = divisor == 1 ? cfg : finer[divisor == 2 ? 0 : 1];
+    const double f = scored(evaluate(m, at, repeat_seed(seed, k)));
     if (each) each->push_back(f);
     score = fold_score(cfg.trial_score, score, k, f);
   }

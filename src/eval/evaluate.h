@@ -111,30 +111,34 @@ double fold_score(TrialScore how, double so_far, int n, double next);
 /// What fold_score takes of the evaluations, for messages: "mean" or "least".
 const char* score_name(TrialScore how);
 
-/// `cfg` stepped at half its physics.dt, all else as it was (times, the brain's
-/// rate and, given as at a step, ERP and CFM follow: cause 18).
-SimConfig half_step_config(const SimConfig& cfg);
+/// `cfg` stepped at its physics.dt / divisor, all else as it was (times, the
+/// brain's rate and, given as at a step, ERP and CFM follow: cause 18).
+SimConfig divided_step_config(const SimConfig& cfg, int divisor);
 
 /// How a run evaluated a creature again (an elite; its evolution config).
 struct Repeats {
   int evaluations = 1;        ///< how many in all (evolution.elite_evaluations reached)
   double failed_fitness = 0;  ///< what a failed one counts (evolution.failed_fitness)
-  /// The 2nd, 4th, ... at half the step (evolution.elite_half_step).
+  /// The evaluations cycle through the step, half of it (evolution.elite_half_step)
+  /// and a quarter of it (evolution.elite_quarter_step).
   bool half_step = false;
+  bool quarter_step = false;
 };
 
-/// Whether a run steps evaluation k (0-based) of a creature at half its step.
-bool repeat_half_step(const Repeats& r, int k);
+/// What a run divides the step by for evaluation k (0-based) of a creature:
+/// 1, 2 or 4, cycling through 1, 2 (half_step) and 4 (quarter_step); with
+/// half_step alone the 2nd, 4th, ... are at half the step.
+int repeat_step_divisor(const Repeats& r, int k);
 
-/// For messages: which of them stepped at half the step, counted from 1
-/// ("evaluation 2 at half the step", "evaluations 2 and 4 at half the
-/// step"), or "" when none did.
-std::string half_step_text(const Repeats& r);
+/// For messages: which of them stepped finer, counted from 1 ("evaluation 2
+/// at half the step", "evaluations 2 and 4 at half the step", "evaluations 2
+/// and 5 at half the step, 3 at a quarter of it"), or "" when none did.
+std::string finer_step_text(const Repeats& r);
 
 /// The fitness a run gave a creature it evaluated `r.evaluations` times (an
 /// elite, evolution.elite_evaluations): the fold_score (cfg.trial_score) of
-/// its evaluations under repeat_seed(seed, 0..evaluations-1), each at half
-/// the step where repeat_half_step says, a failed one counting as
+/// its evaluations under repeat_seed(seed, 0..evaluations-1), each at the
+/// step repeat_step_divisor says, a failed one counting as
 /// `r.failed_fitness`. `first` is evaluation 0, already simulated; each
 /// evaluation's fitness goes to `each` when given.
 double repeated_fitness(const CreatureModel& m, const SimConfig& cfg, std::uint64_t seed, const Repeats& r,

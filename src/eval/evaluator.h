@@ -22,9 +22,9 @@ namespace bx {
 struct EvalJob {
   const Genotype* genotype = nullptr;
   std::uint64_t seed = 0;
-  /// Step at half physics.dt (half_step_config): an elite evaluated again so
-  /// (evolution.elite_half_step).
-  bool half_step = false;
+  /// Step at physics.dt / step_divisor (divided_step_config: 1, 2 or 4): an
+  /// elite evaluated again so (evolution.elite_half_step, elite_quarter_step).
+  int step_divisor = 1;
 };
 
 /// What came of one job.
@@ -55,13 +55,12 @@ class Evaluator {
 /// Evaluates in this process, one job after another.
 class SerialEvaluator : public Evaluator {
  public:
-  explicit SerialEvaluator(SimConfig cfg) : cfg_(std::move(cfg)), halved_(half_step_config(cfg_)) {}
+  explicit SerialEvaluator(SimConfig cfg) : cfg_(std::move(cfg)) {}
   std::vector<EvalOutcome> evaluate(const std::vector<EvalJob>& jobs) override;
   int workers() const override { return 1; }
 
  private:
   SimConfig cfg_;
-  SimConfig halved_;  ///< for half_step jobs
 };
 
 /// Evaluates in K worker processes, one creature at a time each (ODE's random

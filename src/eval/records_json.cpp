@@ -56,7 +56,7 @@ T get(const json& j, const char* name) {
 json job_to_json(const EvalJob& job) {
   // the seed as a number: nlohmann keeps 64-bit unsigned integers exact
   json j = {{"seed", job.seed}, {"kind", std::string(job.genotype->kind())}, {"genotype", job.genotype->to_json()}};
-  if (job.half_step) j["half_step"] = true;
+  if (job.step_divisor != 1) j["step_divisor"] = job.step_divisor;
   return j;
 }
 
@@ -67,7 +67,12 @@ Result<ReadJob> job_from_json(const json& j) {
     if (!seed.is_number_unsigned()) throw std::runtime_error("seed is not a whole number from 0 to 2^64-1");
     ReadJob job;
     job.seed = seed.get<std::uint64_t>();
-    if (j.contains("half_step")) job.half_step = get<bool>(j, "half_step");
+    if (j.contains("step_divisor")) {
+      if (!j["step_divisor"].is_number_integer()) throw std::runtime_error("step_divisor has the wrong type");
+      job.step_divisor = get<int>(j, "step_divisor");
+      if (job.step_divisor != 1 && job.step_divisor != 2 && job.step_divisor != 4)
+        throw std::runtime_error("step_divisor is " + std::to_string(job.step_divisor) + ", not 1, 2 or 4");
+    }
     auto g = read_genotype(get<std::string>(j, "kind"), field(j, "genotype"), "job");
     if (!g) throw std::runtime_error(g.error());
     job.genotype = std::move(*g);

@@ -18,7 +18,7 @@ namespace bx {
 struct ReadJob {
   std::unique_ptr<Genotype> genotype;
   std::uint64_t seed = 0;
-  bool half_step = false;  ///< EvalJob::half_step
+  int step_divisor = 1;  ///< EvalJob::step_divisor
 };
 
 nlohmann::json job_to_json(const EvalJob& job);

@@ -135,7 +135,7 @@ std::vector<Individual> Evolution::evaluate(std::vector<Child> children, Evoluti
 }
 
 Repeats elite_repeats(const EvolutionDef& evo, int evaluations) {
-  return {evaluations, evo.failed_fitness, evo.elite_half_step};
+  return {evaluations, evo.failed_fitness, evo.elite_half_step, evo.elite_quarter_step};
 }
 
 int Evolution::elite_count(int n) const {
@@ -157,7 +157,7 @@ std::vector<Individual> Evolution::reevaluate_elite(EvolutionState& s, Evaluator
   if (best_target <= 1) return {};
   const int n = static_cast<int>(s.population.size());
   const int elite = elite_count(n);
-  const Repeats repeats = elite_repeats(evo_, best_target);  // which evaluations step at half the step
+  const Repeats repeats = elite_repeats(evo_, best_target);  // which evaluations step finer
   std::set<int> touched;
   for (;;) {
     std::vector<int> order(n);
@@ -175,7 +175,7 @@ std::vector<Individual> Evolution::reevaluate_elite(EvolutionState& s, Evaluator
     for (auto [i, count] : due) {
       const Individual& ind = s.population[i];
       for (int e = ind.evaluations; e < ind.evaluations + count; ++e)
-        jobs.push_back({ind.genotype.get(), repeat_seed(ind.seed, e), repeat_half_step(repeats, e)});
+        jobs.push_back({ind.genotype.get(), repeat_seed(ind.seed, e), repeat_step_divisor(repeats, e)});
     }
     std::vector<EvalOutcome> out = eval.evaluate(jobs);
     std::size_t at = 0;

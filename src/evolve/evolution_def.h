@@ -59,6 +59,10 @@ struct EvolutionDef {
   /// (half_step_config), so that with the least of them (task.trial_score =
   /// min) a gait that only the step makes does not keep its score (issue 11).
   bool elite_half_step = false;
+  /// With it, the elite's evaluations cycle through physics.dt, dt/2 (when
+  /// elite_half_step) and dt/4 (repeat_step_divisor): a score the step makes
+  /// at dt/4 only, such as a topple the step decides, is lost too (issue 11).
+  bool elite_quarter_step = false;
   int max_regenerations = 1000;   ///< non-viable children redrawn at most this often, then a random genome
   double evaluation_timeout = 120;  ///< seconds before a worker's evaluation is abandoned
   /// Fitness of an evaluation that blew up, crashed or timed out: "an

@@ -72,6 +72,7 @@ std::string view_data_json(const std::vector<LabelledReplay>& replays,
     out += json{{"name", run->name}, {"seed", run->seed}, {"dialect", run->dialect},
                 {"algorithm", run->algorithm}, {"evaluation_score", run->evaluation_score},
                 {"evaluation_half_step", run->evaluation_half_step},
+                {"evaluation_quarter_step", run->evaluation_quarter_step},
                 {"population", run->population},
                 {"planned_generations", run->planned_generations}, {"generations", gens},
                 {"members", members}, {"best_id", run->best_id}, {"replay_cap", run->replay_cap}}

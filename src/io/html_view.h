@@ -51,9 +51,11 @@ struct RunView {
   /// How a member's evaluations make its stored fitness: "mean" or "least"
   /// (task.trial_score; score_name).
   std::string evaluation_score = "mean";
-  /// Whether a member's 2nd, 4th, ... evaluations stepped at half physics.dt
-  /// (evolution.elite_half_step; repeat_half_step).
+  /// Whether a member's evaluations cycled through physics.dt, half of it
+  /// and a quarter of it (evolution.elite_half_step, elite_quarter_step;
+  /// repeat_step_divisor).
   bool evaluation_half_step = false;
+  bool evaluation_quarter_step = false;
   int population = 0;
   int planned_generations = 0;  ///< generations (report intervals) it has when finished
   std::vector<RunGeneration> generations;

@@ -66,6 +66,7 @@ Result<RunPage> gather_run_page(const RunStore& store, const std::string& source
   run.algorithm = cfg.evolution.algorithm == Algorithm::Generational ? "generational" : "steady state";
   run.evaluation_score = score_name(cfg.sim.trial_score);
   run.evaluation_half_step = cfg.evolution.elite_half_step;
+  run.evaluation_quarter_step = cfg.evolution.elite_quarter_step;
   run.population = cfg.evolution.population;
   run.planned_generations = total_generations(cfg.evolution);
   run.replay_cap = cap;

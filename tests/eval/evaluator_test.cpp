@@ -57,25 +57,31 @@ TEST(Evaluator, PoolGivesBitIdenticalResultsToSerialForAnyWorkerCount) {
   }
 }
 
-// A job marked half_step is evaluated at half physics.dt, in this process or
-// in a worker (an elite evaluated again so, evolution.elite_half_step).
-TEST(Evaluator, AHalfStepJobStepsAtHalfTheStepInAnyEvaluator) {
+// A job with a step_divisor is evaluated at physics.dt / step_divisor, in
+// this process or in a worker (an elite evaluated again so,
+// evolution.elite_half_step and elite_quarter_step).
+class FinerStep : public ::testing::TestWithParam<int> {};
+
+TEST_P(FinerStep, AJobStepsAtItsDivisorOfTheStepInAnyEvaluator) {
+  const int divisor = GetParam();
   auto gs = creatures();
   std::vector<EvalJob> jobs = jobs_for(gs);
-  for (auto& j : jobs) j.half_step = true;
-  SimConfig halved = short_config();
-  halved.physics.dt /= 2;
-  auto want = SerialEvaluator(halved).evaluate(jobs_for(gs));
+  for (auto& j : jobs) j.step_divisor = divisor;
+  SimConfig finer = short_config();
+  finer.physics.dt /= divisor;
+  auto want = SerialEvaluator(finer).evaluate(jobs_for(gs));
   auto at_dt = SerialEvaluator(short_config()).evaluate(jobs_for(gs));
   auto serial = SerialEvaluator(short_config()).evaluate(jobs);
   auto pooled = ProcessPoolEvaluator(short_config(), 2, 60).evaluate(jobs);
   for (std::size_t i = 0; i < jobs.size(); ++i) {
-    EXPECT_EQ(serial[i].result.steps, 2 * at_dt[i].result.steps) << i;
+    EXPECT_EQ(serial[i].result.steps, divisor * at_dt[i].result.steps) << i;
     EXPECT_EQ(serial[i].result.fitness, want[i].result.fitness) << i;
     EXPECT_EQ(pooled[i].result.fitness, want[i].result.fitness) << i;
     EXPECT_EQ(pooled[i].result.steps, want[i].result.steps) << i;
   }
 }
+
+INSTANTIATE_TEST_SUITE_P(HalfAndQuarter, FinerStep, ::testing::Values(2, 4));
 
 TEST(Evaluator, AWorkerThatAbortsCostsOnlyItsJob) {
   auto gs = creatures();

@@ -136,8 +136,10 @@ TEST(JobJson, TheGenotypeItsKindAndEveryBitOfTheSeedRoundTrip) {
       auto back = job_from_json(nlohmann::json::parse(job_to_json({g.get(), seed}).dump()));
       ASSERT_TRUE(back.ok()) << back.error();
       EXPECT_EQ(back->seed, seed);
-      EXPECT_FALSE(back->half_step);
-      EXPECT_TRUE(job_from_json(nlohmann::json::parse(job_to_json({g.get(), seed, true}).dump()))->half_step);
+      EXPECT_EQ(back->step_divisor, 1);
+      for (int divisor : {2, 4})
+        EXPECT_EQ(job_from_json(nlohmann::json::parse(job_to_json({g.get(), seed, divisor}).dump()))->step_divisor,
+                  divisor);
       EXPECT_EQ(back->genotype->kind(), g->kind());
       EXPECT_TRUE(back->genotype->equals(*g)) << g->to_json().dump();
     }
@@ -156,8 +158,10 @@ TEST(JobJson, ABadJobNamesWhatIsWrong) {
   negative["seed"] = -1;
   EXPECT_NE(job_from_json(negative).error().find("seed is not a whole number"), std::string::npos);
   auto half = j;
-  half["half_step"] = 1;
-  EXPECT_EQ(job_from_json(half).error(), "evaluation job: half_step has the wrong type");
+  half["step_divisor"] = true;
+  EXPECT_EQ(job_from_json(half).error(), "evaluation job: step_divisor has the wrong type");
+  half["step_divisor"] = 3;
+  EXPECT_EQ(job_from_json(half).error(), "evaluation job: step_divisor is 3, not 1, 2 or 4");
   auto bad_genome = j;
   bad_genome["genotype"]["nodes"] = 3;
   auto r = job_from_json(bad_genome);

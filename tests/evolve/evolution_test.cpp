@@ -223,19 +223,23 @@ INSTANTIATE_TEST_SUITE_P(Both, FloatLoops, ::testing::Values(Algorithm::Generati
 
 // TargetPoint with luck: each evaluation adds noise drawn from its seed, up
 // to +-amplitude, as a throw's outcome depends on its physics seed; and
-// one at half the step loses `step_gain`, as a gait the step makes does.
+// one at half the step loses `step_gain`, as a gait the step makes does, and
+// one at a quarter of it loses `quarter_gain` as well, as a topple the step
+// decides, which half the step still makes, does.
 class NoisyTarget : public Evaluator {
  public:
-  NoisyTarget(double target, double amplitude, double step_gain = 0)
-      : exact_(target), amplitude_(amplitude), step_gain_(step_gain) {}
+  NoisyTarget(double target, double amplitude, double step_gain = 0, double quarter_gain = 0)
+      : exact_(target), amplitude_(amplitude), step_gain_(step_gain), quarter_gain_(quarter_gain) {}
   std::vector<EvalOutcome> evaluate(const std::vector<EvalJob>& jobs) override {
     std::vector<EvalOutcome> out = exact_.evaluate(jobs);
     for (std::size_t i = 0; i < jobs.size(); ++i)
-      out[i].result.fitness += noise(jobs[i].seed) - (jobs[i].half_step ? step_gain_ : 0);
+      out[i].result.fitness += noise(jobs[i].seed) - step_loss(jobs[i].step_divisor);
     evaluations += static_cast<long>(jobs.size());
     return out;
   }
-  double step_gain() const { return step_gain_; }
+  double step_loss(int divisor) const {
+    return divisor == 1 ? 0 : divisor == 2 ? step_gain_ : step_gain_ + quarter_gain_;
+  }
   double noise(std::uint64_t seed) const {
     return amplitude_ * (2 * static_cast<double>(seed >> 11) * 0x1p-53 - 1);
   }
@@ -249,26 +253,30 @@ class NoisyTarget : public Evaluator {
   TargetPoint exact_;
   double amplitude_;
   double step_gain_;
+  double quarter_gain_;
 };
 
 // evolution.elite_evaluations: after every generation (steady state: report
 // interval) the elite has each been evaluated that many times under its own
 // seeds, its fitness their mean (task.trial_score = min: their least;
-// evolution.elite_half_step: the 2nd and 4th at half the step), and it
+// evolution.elite_half_step: the 2nd and 4th at half the step; with
+// elite_quarter_step too, the 2nd at half and the 3rd at a quarter), and it
 // overstates its true fitness less than when each creature is evaluated
 // once (the winner's curse).
 class EliteEvaluations : public ::testing::TestWithParam<Algorithm> {};
 
 TEST_P(EliteEvaluations, EveryEliteIsTheMeanOfItsEvaluationsAndLuckCountsLess) {
   auto ops = std::make_shared<FloatVectorOps>(FloatVectorDef{10, -1, 1, 0.1});
-  auto run = [&](int n, TrialScore fold = TrialScore::Mean, bool half_step = false) {
+  auto run = [&](int n, TrialScore fold = TrialScore::Mean, bool half_step = false, bool quarter_step = false) {
     EvolutionDef e = float_evolution(GetParam());
     e.generations = 15;
     e.evaluations = 450;
     e.elite_evaluations = n;
     e.elite_half_step = half_step;
+    e.elite_quarter_step = quarter_step;
+    const Repeats steps{n, 0, half_step, quarter_step};
     Evolution evo(ops, e, 11, fold);
-    NoisyTarget problem(0.3, 0.3, 0.1);
+    NoisyTarget problem(0.3, 0.3, 0.1, 0.1);
     EvolutionState s;
     long born = 0;
     while (!evo.finished(s)) {
@@ -288,7 +296,7 @@ TEST_P(EliteEvaluations, EveryEliteIsTheMeanOfItsEvaluationsAndLuckCountsLess) {
         for (int j = 1; j < ind.evaluations; ++j)
           mean = fold_score(fold, mean, j,
                             problem.exact(*ind.genotype) + (problem.noise(repeat_seed(ind.seed, j)) -
-                                                            (half_step && j % 2 == 1 ? problem.step_gain() : 0)));
+                                                            problem.step_loss(repeat_step_divisor(steps, j))));
         EXPECT_EQ(ind.fitness, mean) << "elite " << k;
       }
       // what was evaluated again is reported, as it stands
@@ -322,6 +330,7 @@ TEST_P(EliteEvaluations, EveryEliteIsTheMeanOfItsEvaluationsAndLuckCountsLess) {
   auto [luck4, extra4] = run(4);
   auto [least4, extra_least4] = run(4, TrialScore::Min);
   auto [halves4, extra_halves4] = run(4, TrialScore::Min, true);
+  auto [quarters4, extra_quarters4] = run(4, TrialScore::Min, true, true);
   EXPECT_EQ(extra1, 0);
   EXPECT_GT(extra4, 0);
   EXPECT_GT(extra_least4, 0);
@@ -337,6 +346,30 @@ TEST_P(EliteEvaluations, EveryEliteIsTheMeanOfItsEvaluationsAndLuckCountsLess) {
   // (measured 0.038 and -0.032)
   EXPECT_GT(extra_halves4, 0);
   EXPECT_LT(halves4, least4 - 0.03) << least4;
+  // what only a quarter of the step takes away (0.1 more) the quarter-step
+  // evaluations take away too (measured -0.0001 and -0.058 against 0.038 and
+  // -0.032 with halves only)
+  EXPECT_GT(extra_quarters4, 0);
+  EXPECT_LT(quarters4, halves4 - 0.02) << halves4;
+}
+
+// The elite's evaluations cycle through the step, half of it and a quarter
+// of it, and messages say which were finer.
+TEST(EliteEvaluations, TheirStepsCycleThroughTheStepHalfAndAQuarterOfIt) {
+  const Repeats halves{5, 0, true, false}, both{6, 0, true, true}, quarters{4, 0, false, true}, none{3, 0, false, false};
+  std::vector<int> got;
+  for (int k = 0; k < 6; ++k) got.push_back(repeat_step_divisor(both, k));
+  EXPECT_EQ(got, (std::vector<int>{1, 2, 4, 1, 2, 4}));
+  EXPECT_EQ(repeat_step_divisor(halves, 3), 2);
+  EXPECT_EQ(repeat_step_divisor(halves, 4), 1);
+  EXPECT_EQ(repeat_step_divisor(quarters, 1), 4);
+  EXPECT_EQ(repeat_step_divisor(none, 2), 1);
+  EXPECT_EQ(finer_step_text(halves), "evaluations 2 and 4 at half the step");
+  EXPECT_EQ(finer_step_text(both), "evaluations 2 and 5 at half the step, 3 and 6 at a quarter of it");
+  EXPECT_EQ(finer_step_text(Repeats{3, 0, true, true}), "evaluation 2 at half the step, 3 at a quarter of it");
+  EXPECT_EQ(finer_step_text(quarters), "evaluations 2 and 4 at a quarter of the step");
+  EXPECT_EQ(finer_step_text(none), "");
+  EXPECT_EQ(finer_step_text(Repeats{1, 0, true, true}), "");
 }
 
 // evolution.best_evaluations: the best, once it has elite_evaluations, is

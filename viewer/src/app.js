@@ -121,6 +121,7 @@ export function createViewer(ui, data) {
       showInfo(ui.info, entry, {
         member: pick.member, best: run.best_id, bestOf: bestOf(run, pick.member.id),
         score: run.evaluation_score ?? 'mean', halfStep: run.evaluation_half_step ?? false,
+        quarterStep: run.evaluation_quarter_step ?? false,
       });
       picker.setCurrent({ index: i, gen: pick.gen, anchor: pick.anchor, lineage, member: pick.member });
       runPanel.setCurrent(pick.member, lineage);

@@ -194,8 +194,8 @@ export function parseRun(run, nReplays, path = 'run') {
   // (pages written before an elite's evaluations could fold to their least have none: the mean)
   if (run.evaluation_score !== undefined && !['mean', 'least'].includes(run.evaluation_score))
     fail(`${path}.evaluation_score`, 'expected "mean" or "least"', run.evaluation_score);
-  if (run.evaluation_half_step !== undefined && typeof run.evaluation_half_step !== 'boolean')
-    fail(`${path}.evaluation_half_step`, 'expected true or false', run.evaluation_half_step);
+  for (const k of ['evaluation_half_step', 'evaluation_quarter_step'])
+    if (run[k] !== undefined && typeof run[k] !== 'boolean') fail(`${path}.${k}`, 'expected true or false', run[k]);
   int(run.population, `${path}.population`, 1);
   int(run.planned_generations, `${path}.planned_generations`, 0);
   int(run.replay_cap, `${path}.replay_cap`, 0);

@@ -51,9 +51,10 @@ export function infoRows(entry) {
  * operator, evaluations?}) as [name, text] rows; `best` is the run's overall best's id,
  * `bestOf` the generations it was the best of (numbers, in order), `score` what
  * the stored fitness takes of several evaluations ('mean' or 'least') and
- * `halfStep` whether the 2nd, 4th, ... of them stepped at half the step.
+ * `halfStep` and `quarterStep` whether they cycled through the step, half of it
+ * and a quarter of it (the 2nd, 4th, ... at half the step with halfStep alone).
  */
-export function memberRows(member, best, bestOf, score = 'mean', halfStep = false) {
+export function memberRows(member, best, bestOf, score = 'mean', halfStep = false, quarterStep = false) {
   const parent = (id) => (id === null ? null : `#${id}`);
   const parents = [parent(member.parent1), parent(member.parent2)].filter((p) => p !== null);
   const rows = [
@@ -63,23 +64,32 @@ export function memberRows(member, best, bestOf, score = 'mean', halfStep = fals
   ];
   if (bestOf.length) rows.push(['best of', `generation${bestOf.length > 1 ? 's' : ''} ${generationRanges(bestOf)}`]);
   const n = member.evaluations ?? 1;
+  const finer = finerStepText(n, halfStep, quarterStep);
   rows.push(['stored fitness', fitness(member.fitness) +
-    (n > 1 ? ` (the ${score} of ${n} evaluations under fresh seeds${halfStep ? `, ${halfStepText(n)}` : ''}; ` +
+    (n > 1 ? ` (the ${score} of ${n} evaluations under fresh seeds${finer ? `, ${finer}` : ''}; ` +
       'the replay is the first)' : '')]);
   return rows;
 }
 
 /**
- * Which of `n` evaluations stepped at half the step (the 2nd, 4th, ...), as
- * the command line says it (half_step_text in src/eval/evaluate.cpp):
- * "evaluation 2 at half the step", "evaluations 2 and 4 at half the step".
+ * Which of `n` evaluations stepped finer, their steps cycling through the step,
+ * half of it (`halfStep`) and a quarter of it (`quarterStep`), as the command
+ * line says it (finer_step_text in src/eval/evaluate.cpp): "evaluation 2 at
+ * half the step", "evaluations 2 and 4 at half the step", "evaluations 2 and 5
+ * at half the step, 3 at a quarter of it"; '' when none did.
  */
-export function halfStepText(n) {
-  const which = [];
-  for (let k = 2; k <= n; k += 2) which.push(String(k));
-  if (!which.length) return '';
-  const list = which.length === 1 ? which[0] : `${which.slice(0, -1).join(', ')} and ${which.at(-1)}`;
-  return `evaluation${which.length > 1 ? 's' : ''} ${list} at half the step`;
+export function finerStepText(n, halfStep = true, quarterStep = false) {
+  const cycle = [1, ...(halfStep ? [2] : []), ...(quarterStep ? [4] : [])];
+  let out = '';
+  for (const divisor of [2, 4]) {
+    const which = [];
+    for (let k = 1; k < n; ++k) if (cycle[k % cycle.length] === divisor) which.push(String(k + 1));
+    if (!which.length) continue;
+    const list = which.length === 1 ? which[0] : `${which.slice(0, -1).join(', ')} and ${which.at(-1)}`;
+    const head = out ? ', ' : `evaluation${which.length > 1 ? 's' : ''} `;
+    out += head + list + (divisor === 2 ? ' at half the step' : out ? ' at a quarter of it' : ' at a quarter of the step');
+  }
+  return out;
 }
 
 /** A file named `name` holding `text`, saved by the browser. */
@@ -94,7 +104,7 @@ function download(name, text) {
 
 /**
  * Fills `container` with the facts of `entry` ({label, replay, genome?});
- * in a run, `run` is {member, best, bestOf, score?, halfStep?} (memberRows).
+ * in a run, `run` is {member, best, bestOf, score?, halfStep?, quarterStep?} (memberRows).
  */
 export function showInfo(container, entry, run = null) {
   const res = entry.replay.result ?? {};
@@ -102,7 +112,7 @@ export function showInfo(container, entry, run = null) {
   const value = (k, v) => (k === 'projectile'
     ? el('dd', {}, el('span', { class: 'swatch', style: `background:${cssColor(PROJECTILE_COLOR)}` }), v)
     : el('dd', {}, v ?? '?'));
-  const rows = [...(run ? memberRows(run.member, run.best, run.bestOf, run.score, run.halfStep) : []), ...infoRows(entry)];
+  const rows = [...(run ? memberRows(run.member, run.best, run.bestOf, run.score, run.halfStep, run.quarterStep) : []), ...infoRows(entry)];
   container.replaceChildren(
     el('h1', {}, entry.label),
     el('dl', {}, ...rows.flatMap(([k, v]) => [el('dt', {}, k), value(k, v)])),

@@ -81,6 +81,7 @@ test('bad page data is refused with the place of the fault', () => {
   assert.throws(spoilt((r) => (r.members[0].evaluations = 0)), { message: /^run\.members\[0\]\.evaluations: expected an integer >= 1/ });
   assert.throws(spoilt((r) => (r.evaluation_score = 'median')), { message: /^run\.evaluation_score: expected "mean" or "least", got "median"$/ });
   assert.throws(spoilt((r) => (r.evaluation_half_step = 'yes')), { message: /^run\.evaluation_half_step: expected true or false, got "yes"$/ });
+  assert.throws(spoilt((r) => (r.evaluation_quarter_step = 1)), { message: /^run\.evaluation_quarter_step: expected true or false, got 1$/ });
   // every replay is exactly one member's, every generation's best a member, the best replayed
   assert.throws(spoilt((r) => (r.members[2].replay_index = 1)), { message: /^run\.members\[2\]\.replay_index: also member 1's/ });
   assert.throws(spoilt((r) => (r.members[1].replay_index = null)), { message: /^run\.members: expected one with each of the 3 replays, got 2$/ });

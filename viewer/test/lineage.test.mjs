@@ -2,7 +2,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { bestOf, generationRanges, lineageOf, memberOfReplay, membersById } from '../src/lineage.js';
-import { halfStepText, memberRows } from '../src/info_panel.js';
+import { finerStepText, memberRows } from '../src/info_panel.js';
 import { lineageText } from '../src/picker.js';
 import { runRows } from '../src/run_panel.js';
 import { makeRun } from './fixture.mjs';
@@ -46,9 +46,15 @@ test('a member: its id, birth, parents, generations as the best and stored fitne
   // the 2nd, 4th, ... stepped at half the step (evolution.elite_half_step)
   assert.equal(Object.fromEntries(memberRows(membersById(run).get(20), run.best_id, [4], 'least', true))['stored fitness'],
     '5 (the least of 3 evaluations under fresh seeds, evaluation 2 at half the step; the replay is the first)');
-  assert.equal(halfStepText(1), '');
-  assert.equal(halfStepText(5), 'evaluations 2 and 4 at half the step');
-  assert.equal(halfStepText(6), 'evaluations 2, 4 and 6 at half the step');
+  assert.equal(finerStepText(1), '');
+  assert.equal(finerStepText(5), 'evaluations 2 and 4 at half the step');
+  assert.equal(finerStepText(6), 'evaluations 2, 4 and 6 at half the step');
+  // and a quarter of the step (evolution.elite_quarter_step): they cycle dt, dt/2, dt/4
+  assert.equal(finerStepText(3, true, true), 'evaluation 2 at half the step, 3 at a quarter of it');
+  assert.equal(finerStepText(6, true, true), 'evaluations 2 and 5 at half the step, 3 and 6 at a quarter of it');
+  assert.equal(finerStepText(4, false, true), 'evaluations 2 and 4 at a quarter of the step');
+  assert.equal(Object.fromEntries(memberRows(membersById(run).get(20), run.best_id, [4], 'least', true, true))['stored fitness'],
+    '5 (the least of 3 evaluations under fresh seeds, evaluation 2 at half the step, 3 at a quarter of it; the replay is the first)');
   assert.equal(rows(3).parents, 'none');
   assert.equal(lineageText(membersById(run).get(12)), 'gen 2 · #12 · crossover with #3 · 3');
 });
