@@ -115,7 +115,7 @@ const Golden kGolden[] = {
      "9d6e3a783ca955b6", "ca60f645103fa834"},
     {"miconi2006-small",
      "--set evolution.population=10 --set evolution.evaluations=40 --set task.seconds=10",
-     "7fdc62d5d69190b2", "4612f49c509112c5"},
+     "a357a8f109a7fc28", "d48a778c0f6a5b26"},
     {"chaumont2007-catapult-small", "--set evolution.population=10 --set evolution.generations=3",
      "e80f898da85cb7d4", "0f9ed11659960baf"},
     {"sims1994-walker", "--set evolution.population=10 --set evolution.generations=3",
