@@ -78,6 +78,7 @@ int cmd_check(const CheckArgs& a) {
     out["passed"] = rep.passed();
     out["failures"] = rep.failures;
     out["notes"] = rep.notes;
+    if (rep.clamped_end_travel >= 0) out["clamped_end_travel"] = rep.clamped_end_travel;
     std::printf("%s\n", out.dump().c_str());
     return rep.passed() ? 0 : 1;
   }

@@ -1,6 +1,7 @@
 #include "eval/check.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "core/rng.h"
@@ -21,6 +22,12 @@ double median(std::vector<double> v) {
 std::string fixed(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.3g", v);
+  return buf;
+}
+
+std::string share(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3f", v);
   return buf;
 }
 
@@ -82,8 +89,9 @@ CheckReport check_creature(const CreatureModel& m, const SimConfig& cfg, std::ui
     c.physics.solver_iterations *= 2;
     converge("2x iterations", c);
   }
-  // the effectors held at their means: motion without a changing signal is
-  // paid for by constraint error, not by the motors
+  // the effectors held at their means: sustained motion without a changing
+  // signal is paid for by constraint error, not by the motors; a motion that
+  // ends (one stroke, a topple) is named in a note, not failed
   // (a creature without effectors, or never driven, has nothing to clamp or
   // hold: whatever it does is passive, and both keep all of it)
   double clamped = -1;
@@ -92,6 +100,19 @@ CheckReport check_creature(const CreatureModel& m, const SimConfig& cfg, std::ui
     c.effector_clamp = rep.scored.diagnostics.effector_mean;
     const bool none = c.effector_clamp.empty();
     clamped = run(none ? "clamped (no effector driven)" : "clamped", c, seed, scored);
+    // where its centre of mass went over the run's last rest_seconds
+    if (clamped > def.max_clamped && def.rest_seconds > 0) {
+      Replay frames;
+      evaluate(m, c, seed, &frames);
+      if (!frames.frames.empty()) {
+        const ReplayFrame& last = frames.frames.back();
+        auto from = std::find_if(frames.frames.begin(), frames.frames.end(),
+                                 [&](const ReplayFrame& f) { return f.t >= last.t - def.rest_seconds - 1e-9; });
+        if (from != frames.frames.begin() && last.t - from->t >= def.rest_seconds - 1e-6)
+          rep.clamped_end_travel =
+              std::hypot(last.com.x - from->com.x, last.com.y - from->com.y) / m.body_length();
+      }
+    }
   }
   // every joint held still, the controller still acting on the task (a
   // catapult's release): a throw that keeps its distance is a fall
@@ -117,8 +138,19 @@ CheckReport check_creature(const CreatureModel& m, const SimConfig& cfg, std::ui
   for (const auto& [name, ratio] : converged)
     if (ratio < def.min_converged)
       rep.failures.push_back(name + " keeps " + fixed(ratio) + " < " + fixed(def.min_converged));
-  if (clamped > def.max_clamped)
-    rep.failures.push_back("clamped effectors keep " + fixed(clamped) + " > " + fixed(def.max_clamped));
+  if (clamped > def.max_clamped) {
+    const std::string keep = "clamped effectors keep " + fixed(clamped);
+    const std::string window = "in its last " + fixed(def.rest_seconds) + " s";
+    if (rep.clamped_end_travel >= 0 && rep.clamped_end_travel < kRestTravel)
+      rep.notes.push_back("a transient, not a gait: " + keep + " of its fitness, then rest (" +
+                          share(rep.clamped_end_travel) + " of its length " + window +
+                          "): a slow stroke of its servos or a topple");
+    else
+      rep.failures.push_back(keep + " > " + fixed(def.max_clamped) +
+                             (rep.clamped_end_travel >= 0
+                                  ? ", still moving (" + share(rep.clamped_end_travel) + " of its length " + window + ")"
+                                  : ""));
+  }
   if (held > def.max_held)
     rep.failures.push_back("held joints keep " + fixed(held) + " > " + fixed(def.max_held));
   return rep;

@@ -32,6 +32,12 @@ struct CheckDef {
   /// against the scored fitness. More for a chaotic task (a throw), where
   /// any change of the step draws another throw as a change of seed does.
   int converge_seeds = 1;
+  /// A clamped run that keeps more than max_clamped is forgiven when it is at
+  /// rest over its last rest_seconds (its centre of mass moves less than
+  /// kRestTravel of the body length: the rest law's bound): its distance was
+  /// a transient (one slow stroke of its servos, a topple), honest physics
+  /// but no gait, which CheckReport::notes names. 0: the strict gate.
+  double rest_seconds = 15;
   friend bool operator==(const CheckDef&, const CheckDef&) = default;
 };
 
@@ -58,6 +64,10 @@ struct CheckReport {
   std::vector<double> scored_by_seed;
   std::vector<CheckVariant> variants;
   double median_other_seeds = 0;  ///< ratio
+  /// The clamped run's centre of mass: how far it moved in the plane over the
+  /// last CheckDef::rest_seconds of the run, as a share of the body length
+  /// (-1: not measured: rest_seconds is 0 or longer than the run).
+  double clamped_end_travel = -1;
   std::vector<std::string> failures;  ///< each gate that failed, with its figures; empty: passed
   /// What the figures say of the motion beside the gates, e.g. that it is
   /// mostly passive (a fall: held joints keep more than half of it).
@@ -73,6 +83,11 @@ struct CheckReport {
 /// compare with the own seed's evaluation, like with like.
 CheckReport check_creature(const CreatureModel& m, const SimConfig& cfg, std::uint64_t seed,
                            const CheckDef& def, const Repeats& repeats = {});
+
+/// The rest law (docs/physics.md, tests/eval/rest_law_test.cpp): with its
+/// effectors held constant, a settled creature's centre of mass moves less
+/// than this share of its body length in CheckDef::rest_seconds.
+inline constexpr double kRestTravel = 0.02;
 
 /// Held joints keeping more than this share of the fitness: the motion is
 /// mostly passive (a fall), which CheckReport::notes says whatever the gates.

@@ -101,6 +101,41 @@ TEST(Check, ACreatureWithAConstantEffectorFailsTheClampedGate) {
       << r.out;
 }
 
+// With constant signals a velocity servo turns its joint at a constant speed
+// until the stop: one stroke, which can last the whole evaluation when the
+// signal is small. miconi_stroke.json (miconi2006-small seed 1's best with
+// the quarter step, docs/physics.md cause 26) holds all five effectors
+// constant, tilts on its leg as its servos turn, topples twice and lies still
+// from about 65 s of its 100: 2.1 m, the same with its effectors clamped. Its
+// fitness is honest physics (it converges at every step) but no gait: check
+// names it a transient. Cut at 40 s it is still moving, and fails.
+TEST(Check, AConstantSignalMotionThatEndsAtRestIsATransientNotAFailure) {
+  const std::string quick = " --set check.other_seeds=0 --json";
+  Outcome r = bestiary("check " + creature("miconi_stroke.json") + quick);
+  ASSERT_EQ(r.code, 0) << r.out << r.err;
+  auto j = nlohmann::json::parse(r.out);
+  EXPECT_GT(ratio(j, "clamped"), 0.9);
+  EXPECT_LT(ratio(j, "held"), 0.05);  // its joints' turning moves it
+  EXPECT_GT(ratio(j, "dt/4"), 0.75);
+  EXPECT_LT(j["clamped_end_travel"].get<double>(), 0.02);
+  ASSERT_EQ(j["notes"].size(), 1u);
+  EXPECT_EQ(j["notes"][0].get<std::string>().rfind("a transient, not a gait: clamped effectors keep 0.9", 0), 0u)
+      << j["notes"][0];
+
+  Outcome cut = bestiary("check " + creature("miconi_stroke.json") + quick + " --set task.seconds=40");
+  ASSERT_EQ(cut.code, 1) << cut.out << cut.err;
+  auto c = nlohmann::json::parse(cut.out);
+  EXPECT_GT(c["clamped_end_travel"].get<double>(), 0.1);
+  ASSERT_EQ(c["failures"].size(), 1u);
+  EXPECT_NE(c["failures"][0].get<std::string>().find("still moving"), std::string::npos) << c["failures"][0];
+
+  Outcome strict = bestiary("check " + creature("miconi_stroke.json") + quick + " --set check.rest_seconds=0");
+  ASSERT_EQ(strict.code, 1) << strict.out << strict.err;
+  auto s = nlohmann::json::parse(strict.out);
+  EXPECT_FALSE(s.contains("clamped_end_travel"));
+  EXPECT_EQ(s["failures"][0], "clamped effectors keep 0.999 > 0.25");
+}
+
 TEST(Check, GatesAreConfigValues) {
   // pinned.json rests: its tiny distance is noise under other steps, so the
   // convergence gate goes too
