@@ -46,8 +46,8 @@ CheckReport check_creature(const CreatureModel& m, const SimConfig& cfg, std::ui
   rep.scored_fitness =
       repeats.evaluations > 1 ? repeated_fitness(m, cfg, seed, repeats, rep.scored, &rep.scored_by_seed) : scored;
   auto ratio = [](double f, double of) { return of > 0 ? f / of : 0; };
-  auto run = [&](std::string name, const SimConfig& c, std::uint64_t s, double of) {
-    CheckVariant v{std::move(name), evaluate(m, c, s), 0, {}};
+  auto run = [&](std::string name, const SimConfig& c, std::uint64_t s, double of, Replay* frames = nullptr) {
+    CheckVariant v{std::move(name), evaluate(m, c, s, frames), 0, {}};
     v.ratio = ratio(v.result.fitness, of);
     rep.variants.push_back(std::move(v));
     return rep.variants.back().ratio;
@@ -99,19 +99,16 @@ CheckReport check_creature(const CreatureModel& m, const SimConfig& cfg, std::ui
     SimConfig c = cfg;
     c.effector_clamp = rep.scored.diagnostics.effector_mean;
     const bool none = c.effector_clamp.empty();
-    clamped = run(none ? "clamped (no effector driven)" : "clamped", c, seed, scored);
-    // where its centre of mass went over the run's last rest_seconds
-    if (clamped > def.max_clamped && def.rest_seconds > 0) {
-      Replay frames;
-      evaluate(m, c, seed, &frames);
-      if (!frames.frames.empty()) {
-        const ReplayFrame& last = frames.frames.back();
-        auto from = std::find_if(frames.frames.begin(), frames.frames.end(),
-                                 [&](const ReplayFrame& f) { return f.t >= last.t - def.rest_seconds - 1e-9; });
-        if (from != frames.frames.begin() && last.t - from->t >= def.rest_seconds - 1e-6)
-          rep.clamped_end_travel =
-              std::hypot(last.com.x - from->com.x, last.com.y - from->com.y) / m.body_length();
-      }
+    // its frames say where its centre of mass went over the last rest_seconds
+    Replay frames;
+    clamped = run(none ? "clamped (no effector driven)" : "clamped", c, seed, scored,
+                  def.rest_seconds > 0 ? &frames : nullptr);
+    if (!frames.frames.empty()) {
+      const ReplayFrame& last = frames.frames.back();
+      auto from = std::find_if(frames.frames.begin(), frames.frames.end(),
+                               [&](const ReplayFrame& f) { return f.t >= last.t - def.rest_seconds - 1e-9; });
+      if (from != frames.frames.begin() && last.t - from->t >= def.rest_seconds - 1e-6)
+        rep.clamped_end_travel = std::hypot(last.com.x - from->com.x, last.com.y - from->com.y) / m.body_length();
     }
   }
   // every joint held still, the controller still acting on the task (a

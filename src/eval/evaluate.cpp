@@ -182,13 +182,11 @@ std::string finer_step_text(const Repeats& r) {
 double repeated_fitness(const CreatureModel& m, const SimConfig& cfg, std::uint64_t seed, const Repeats& r,
                         const EvalResult& first, std::vector<double>* each) {
   auto scored = [&](const EvalResult& e) { return e.failed ? r.failed_fitness : e.fitness; };
-  const SimConfig finer[2] = {divided_step_config(cfg, 2), divided_step_config(cfg, 4)};
+  const DividedSteps steps(cfg);
   double score = scored(first);
   if (each) each->assign(1, score);
   for (int k = 1; k < r.evaluations; ++k) {
-    const int divisor = repeat_step_divisor(r, k);
-    const SimConfig& at = divisor == 1 ? cfg : finer[divisor == 2 ? 0 : 1];
-    const double f = scored(evaluate(m, at, repeat_seed(seed, k)));
+    const double f = scored(evaluate(m, steps.at(repeat_step_divisor(r, k)), repeat_seed(seed, k)));
     if (each) each->push_back(f);
     score = fold_score(cfg.trial_score, score, k, f);
   }

@@ -115,6 +115,19 @@ const char* score_name(TrialScore how);
 /// brain's rate and, given as at a step, ERP and CFM follow: cause 18).
 SimConfig divided_step_config(const SimConfig& cfg, int divisor);
 
+/// `cfg` at its step, half of it and a quarter of it, built once: the
+/// configs repeat_step_divisor picks from.
+class DividedSteps {
+ public:
+  explicit DividedSteps(const SimConfig& cfg)
+      : at_{cfg, divided_step_config(cfg, 2), divided_step_config(cfg, 4)} {}
+  /// physics.dt / divisor, for a divisor of 1, 2 or 4
+  const SimConfig& at(int divisor) const { return at_[divisor == 1 ? 0 : divisor == 2 ? 1 : 2]; }
+
+ private:
+  SimConfig at_[3];
+};
+
 /// How a run evaluated a creature again (an elite; its evolution config).
 struct Repeats {
   int evaluations = 1;        ///< how many in all (evolution.elite_evaluations reached)

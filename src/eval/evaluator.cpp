@@ -46,9 +46,7 @@ EvalOutcome evaluate_genotype(const Genotype& g, const SimConfig& cfg, std::uint
 std::vector<EvalOutcome> SerialEvaluator::evaluate(const std::vector<EvalJob>& jobs) {
   std::vector<EvalOutcome> out;
   out.reserve(jobs.size());
-  for (const auto& j : jobs)
-    out.push_back(j.step_divisor == 1 ? evaluate_genotype(*j.genotype, cfg_, j.seed)
-                                      : evaluate_genotype(*j.genotype, divided_step_config(cfg_, j.step_divisor), j.seed));
+  for (const auto& j : jobs) out.push_back(evaluate_genotype(*j.genotype, steps_.at(j.step_divisor), j.seed));
   return out;
 }
 
@@ -95,7 +93,7 @@ bool receive_message(int fd, std::string& s) {
 
 // the worker's life: read a job, evaluate it, answer; until the pipe closes
 [[noreturn]] void worker_main(int in, int out, const SimConfig& cfg, const WorkerJob& work) {
-  const SimConfig finer[2] = {divided_step_config(cfg, 2), divided_step_config(cfg, 4)};
+  const DividedSteps steps(cfg);
   std::string msg;
   while (receive_message(in, msg)) {
     // text that is not JSON parses to a discarded value, which the reader refuses
@@ -105,7 +103,7 @@ bool receive_message(int fd, std::string& s) {
       o.result.failed = true;
       o.result.failure = "worker could not read its job: " + job.error();
     } else {
-      o = work(*job->genotype, job->step_divisor == 1 ? cfg : finer[job->step_divisor == 2 ? 0 : 1], job->seed);
+      o = work(*job->genotype, steps.at(job->step_divisor), job->seed);
     }
     if (!send_message(out, outcome_to_json(o).dump())) break;
   }

@@ -55,12 +55,12 @@ class Evaluator {
 /// Evaluates in this process, one job after another.
 class SerialEvaluator : public Evaluator {
  public:
-  explicit SerialEvaluator(SimConfig cfg) : cfg_(std::move(cfg)) {}
+  explicit SerialEvaluator(const SimConfig& cfg) : steps_(cfg) {}
   std::vector<EvalOutcome> evaluate(const std::vector<EvalJob>& jobs) override;
   int workers() const override { return 1; }
 
  private:
-  SimConfig cfg_;
+  DividedSteps steps_;  ///< the config at its step, half and a quarter of it (EvalJob::step_divisor)
 };
 
 /// Evaluates in K worker processes, one creature at a time each (ODE's random

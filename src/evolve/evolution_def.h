@@ -56,7 +56,7 @@ struct EvolutionDef {
   /// the rest of the elite.
   int best_evaluations = 0;
   /// The elite's 2nd, 4th, ... evaluations step at half physics.dt
-  /// (half_step_config), so that with the least of them (task.trial_score =
+  /// (divided_step_config), so that with the least of them (task.trial_score =
   /// min) a gait that only the step makes does not keep its score (issue 11).
   bool elite_half_step = false;
   /// With it, the elite's evaluations cycle through physics.dt, dt/2 (when

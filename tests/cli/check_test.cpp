@@ -29,6 +29,13 @@ double ratio(const nlohmann::json& j, const std::string& name) {
   return -1;
 }
 
+// `bestiary check ARGS --json`: its report, its exit code expected to be `code`
+nlohmann::json check_report(const std::string& args, int code) {
+  Outcome r = bestiary("check " + args + " --json");
+  EXPECT_EQ(r.code, code) << r.out << r.err;
+  return nlohmann::json::parse(r.out);
+}
+
 TEST(Check, AnOscillatingSnakePassesEveryGate) {
   Outcome r = bestiary("check " + creature("snake.json") + " --json");
   ASSERT_EQ(r.code, 0) << r.out << r.err;
@@ -110,10 +117,8 @@ TEST(Check, ACreatureWithAConstantEffectorFailsTheClampedGate) {
 // fitness is honest physics (it converges at every step) but no gait: check
 // names it a transient. Cut at 40 s it is still moving, and fails.
 TEST(Check, AConstantSignalMotionThatEndsAtRestIsATransientNotAFailure) {
-  const std::string quick = " --set check.other_seeds=0 --json";
-  Outcome r = bestiary("check " + creature("miconi_stroke.json") + quick);
-  ASSERT_EQ(r.code, 0) << r.out << r.err;
-  auto j = nlohmann::json::parse(r.out);
+  const std::string stroke = creature("miconi_stroke.json") + " --set check.other_seeds=0";
+  auto j = check_report(stroke, 0);
   EXPECT_GT(ratio(j, "clamped"), 0.9);
   EXPECT_LT(ratio(j, "held"), 0.05);  // its joints' turning moves it
   EXPECT_GT(ratio(j, "dt/4"), 0.75);
@@ -122,16 +127,12 @@ TEST(Check, AConstantSignalMotionThatEndsAtRestIsATransientNotAFailure) {
   EXPECT_EQ(j["notes"][0].get<std::string>().rfind("a transient, not a gait: clamped effectors keep 0.9", 0), 0u)
       << j["notes"][0];
 
-  Outcome cut = bestiary("check " + creature("miconi_stroke.json") + quick + " --set task.seconds=40");
-  ASSERT_EQ(cut.code, 1) << cut.out << cut.err;
-  auto c = nlohmann::json::parse(cut.out);
+  auto c = check_report(stroke + " --set task.seconds=40", 1);
   EXPECT_GT(c["clamped_end_travel"].get<double>(), 0.1);
   ASSERT_EQ(c["failures"].size(), 1u);
   EXPECT_NE(c["failures"][0].get<std::string>().find("still moving"), std::string::npos) << c["failures"][0];
 
-  Outcome strict = bestiary("check " + creature("miconi_stroke.json") + quick + " --set check.rest_seconds=0");
-  ASSERT_EQ(strict.code, 1) << strict.out << strict.err;
-  auto s = nlohmann::json::parse(strict.out);
+  auto s = check_report(stroke + " --set check.rest_seconds=0", 1);
   EXPECT_FALSE(s.contains("clamped_end_travel"));
   EXPECT_EQ(s["failures"][0], "clamped effectors keep 0.999 > 0.25");
 }
