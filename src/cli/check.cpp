@@ -1,6 +1,7 @@
 // `bestiary check`: re-evaluates a creature as it was scored, then under
-// other physics seeds, smaller steps, more solver iterations and with its
-// effectors held at their means, and says whether its fitness is physics or
+// other physics seeds, smaller steps, more solver iterations, a lagging motor,
+// a slower brain, with its effectors held at their means and twice as long,
+// and says whether its fitness is physics or
 // artefact (src/eval/check.h, docs/physics.md).
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -71,6 +72,11 @@ int cmd_check(const CheckArgs& a) {
     out["median_other_seeds"] = rep.median_other_seeds;
     out["effector_mean"] = d.effector_mean;
     out["effector_sd"] = d.effector_sd;
+    out["effector_hz"] = d.effector_hz;
+    out["brain_hz"] = sim.brain_hz;
+    out["buzzer"] = rep.buzzer;
+    if (rep.sustained >= 0)
+      out["sustained"] = {{"ratio", rep.sustained}, {"first_third", rep.sustained_first}, {"last_third", rep.sustained_last}};
     out["max_joint_gap"] = d.max_joint_gap;
     out["worst_joint"] = d.worst_joint;
     out["max_stop_overshoot"] = d.max_stop_overshoot;
@@ -108,9 +114,15 @@ int cmd_check(const CheckArgs& a) {
     std::printf("  other seeds: median ratio %s\n", ratio_text(rep.median_other_seeds).c_str());
   else
     std::printf("  other seeds: none (check.other_seeds = 0)\n");
+  if (rep.sustained >= 0)
+    std::printf("  twice as long: last third travels %.3f of the first (%.3g m against %.3g m)\n", rep.sustained,
+                rep.sustained_last, rep.sustained_first);
   std::printf("  effector activity (s.d. of each signal while driven):");
   for (double sd : d.effector_sd) std::printf(" %.3f", sd);
   if (d.effector_sd.empty()) std::printf(" none");
+  std::printf("\n  dominant frequency of each signal (Hz; the brain runs at %.4g Hz):", sim.brain_hz);
+  for (double hz : d.effector_hz) std::printf(" %.3g", hz);
+  if (d.effector_hz.empty()) std::printf(" none");
   std::printf("\n  largest joint separation %.2f mm", 1000 * d.max_joint_gap);
   if (d.worst_joint >= 0) std::printf(" (joint %d)", d.worst_joint);
   std::printf(", stop overshoot %.3f, deepest interpenetration %.2f mm\n", d.max_stop_overshoot,
@@ -132,7 +144,7 @@ int cmd_check(const CheckArgs& a) {
 void add_check_command(CLI::App& app) {
   static CheckArgs a;
   auto* c = app.add_subcommand(
-      "check", "Re-evaluate a creature under other seeds, smaller steps, more iterations and clamped effectors");
+      "check", "Re-evaluate a creature under other seeds, smaller steps, lagging motors, a slower brain and clamped effectors");
   add_creature_options(c, a.target, a.flags);
   c->add_flag("--json", a.json, "Print one JSON object");
   c->footer("Exit code 0: passed the gates ([check] config keys); 1: failed them; 2: bad input.");

@@ -40,7 +40,11 @@ std::uint64_t check_seed(std::uint64_t seed, int k) {
 CheckReport check_creature(const CreatureModel& m, const SimConfig& cfg, std::uint64_t seed,
                            const CheckDef& def, const Repeats& repeats) {
   CheckReport rep;
-  rep.scored = evaluate(m, cfg, seed);
+  {
+    SimConfig c = cfg;
+    c.effector_spectrum = true;  // each effector's dominant frequency
+    rep.scored = evaluate(m, c, seed);
+  }
   const double scored = rep.scored.fitness;
   // what selection saw: the mean (or least) over the creature's evaluations, folded as the run folded them
   rep.scored_fitness =
@@ -59,17 +63,17 @@ CheckReport check_creature(const CreatureModel& m, const SimConfig& cfg, std::ui
     seeds.push_back(run("seed " + std::to_string(k + 1), cfg, check_seed(seed, k), rep.scored_fitness));
   if (!seeds.empty()) rep.median_other_seeds = median(seeds);
 
-  // convergence: smaller steps, a better solved step; with converge_seeds > 1
-  // each by its median over those seeds against the median at dt over them
+  // the same creature under another config (a smaller step, a better solved
+  // step, a slower motor, a slower brain); with converge_seeds > 1 each by its
+  // median over those seeds against the median at dt over them
   const int ks = std::max(1, def.converge_seeds);
   std::vector<double> at_dt{scored};
   for (int k = 1; k < ks; ++k)
     at_dt.push_back(k <= def.other_seeds ? rep.variants[k - 1].result.fitness
                                          : evaluate(m, cfg, check_seed(seed, k)).fitness);
   const double base = median(at_dt);
-  std::vector<std::pair<std::string, double>> converged;
-  auto converge = [&](const std::string& name, const SimConfig& c) {
-    if (ks == 1) return converged.push_back({name, run(name, c, seed, scored)});
+  auto compare = [&](const std::string& name, const SimConfig& c) {
+    if (ks == 1) return run(name, c, seed, scored);
     CheckVariant v{name + " (median of " + std::to_string(ks) + " seeds)", evaluate(m, c, seed), 0, {}};
     std::vector<double> f{v.result.fitness};
     for (int k = 1; k < ks; ++k) f.push_back(evaluate(m, c, check_seed(seed, k)).fitness);
@@ -77,17 +81,39 @@ CheckReport check_creature(const CreatureModel& m, const SimConfig& cfg, std::ui
     v.result.fitness = median(f);
     v.ratio = ratio(v.result.fitness, base);
     rep.variants.push_back(v);
-    converged.push_back({v.name, v.ratio});
+    return v.ratio;
   };
+  std::vector<std::pair<std::string, double>> converged;
   for (int div : {2, 4}) {
-    SimConfig c = cfg;
-    c.physics.dt /= div;
-    converge("dt/" + std::to_string(div), c);
+    const std::string name = "dt/" + std::to_string(div);
+    converged.push_back({name, compare(name, divided_step_config(cfg, div))});
   }
-  {
+  if (cfg.physics.solver == Solver::QuickStep) {  // the exact solver has no iterations to double
     SimConfig c = cfg;
     c.physics.solver_iterations *= 2;
-    converge("2x iterations", c);
+    converged.push_back({"2x iterations", compare("2x iterations", c)});
+  }
+  // what a real actuator imposes: a motor that lags its command, a brain at
+  // half its rate; a fitness earned by flipping signals at the brain's rate
+  // does not survive them (a buzzer)
+  std::vector<std::string> buzz;
+  if (def.motor_lag > 0) {
+    SimConfig c = cfg;
+    c.motor.response_time += def.motor_lag;
+    const std::string name = "motor lag +" + fixed(1000 * def.motor_lag) + " ms";
+    const double r = compare(name, c);
+    if (r < def.min_motor_lag)
+      buzz.push_back("with its motors lagging " + fixed(1000 * def.motor_lag) + " ms more it keeps " + fixed(r) +
+                     " < " + fixed(def.min_motor_lag));
+  }
+  if (def.min_half_rate > 0) {
+    SimConfig c = cfg;
+    c.brain_hz /= 2;
+    const std::string name = "brain at " + fixed(c.brain_hz) + " Hz";
+    const double r = compare(name, c);
+    if (r < def.min_half_rate)
+      buzz.push_back("with its brain at half its rate (" + fixed(c.brain_hz) + " Hz) it keeps " + fixed(r) + " < " +
+                     fixed(def.min_half_rate));
   }
   // the effectors held at their means: sustained motion without a changing
   // signal is paid for by constraint error, not by the motors; a motion that
@@ -119,6 +145,34 @@ CheckReport check_creature(const CreatureModel& m, const SimConfig& cfg, std::ui
     c.hold_joints = true;
     held = run(m.effectors.empty() ? "held (no effectors)" : "held", c, seed, scored);
   }
+  // locomotion twice as long: does the gait go on?
+  std::string sustained_failure;
+  if (cfg.task_kind == TaskKind::Locomotion && def.min_sustained > 0) {
+    SimConfig c = cfg;
+    c.task.seconds *= 2;
+    Replay frames;
+    const EvalResult r = evaluate(m, c, seed, &frames);
+    if (r.failed) {
+      sustained_failure = "twice as long (" + fixed(c.task.seconds) + " s) it fails: " + r.failure;
+    } else if (frames.frames.size() >= 3) {
+      const double t0 = frames.frames.front().t, t1 = frames.frames.back().t;
+      auto at = [&](double t) {  // the centre of mass at the first frame at or after t
+        auto f = std::find_if(frames.frames.begin(), frames.frames.end(),
+                              [&](const ReplayFrame& x) { return x.t >= t - 1e-9; });
+        return (f == frames.frames.end() ? frames.frames.back() : *f).com;
+      };
+      auto travel = [](Vec3 a, Vec3 b) { return std::hypot(b.x - a.x, b.y - a.y); };
+      const double third = (t1 - t0) / 3;
+      rep.sustained_first = travel(at(t0), at(t0 + third));
+      rep.sustained_last = travel(at(t1 - third), frames.frames.back().com);
+      rep.sustained = rep.sustained_first > 0 ? rep.sustained_last / rep.sustained_first : 0;
+      // a creature that hardly moved in the first third has no gait to fade
+      if (rep.sustained_first >= kSustainedFrom * m.body_length() && rep.sustained < def.min_sustained)
+        sustained_failure = "not sustained: twice as long (" + fixed(c.task.seconds) + " s), its last third travels " +
+                            share(rep.sustained) + " of its first (" + fixed(rep.sustained_last) + " m against " +
+                            fixed(rep.sustained_first) + " m) < " + fixed(def.min_sustained);
+    }
+  }
 
   if (held > kPassiveHeld)
     rep.notes.push_back("mostly passive: with its joints held it keeps " + fixed(held) +
@@ -132,9 +186,22 @@ CheckReport check_creature(const CreatureModel& m, const SimConfig& cfg, std::ui
   if (!seeds.empty() && rep.median_other_seeds < def.min_other_seeds)
     rep.failures.push_back("other seeds keep " + fixed(rep.median_other_seeds) + " (median) < " +
                            fixed(def.min_other_seeds));
-  for (const auto& [name, ratio] : converged)
+  for (const auto& [name, ratio] : converged) {
     if (ratio < def.min_converged)
       rep.failures.push_back(name + " keeps " + fixed(ratio) + " < " + fixed(def.min_converged));
+    else if (ratio > def.max_converged)
+      rep.failures.push_back(name + " rises to " + fixed(ratio) + " > " + fixed(def.max_converged) +
+                             " (not converged: the fitness grows as the step shrinks)");
+  }
+  if (!buzz.empty()) {
+    rep.buzzer = true;
+    std::string what = "a buzzer (its signals' dominant frequencies";
+    for (std::size_t e = 0; e < rep.scored.diagnostics.effector_hz.size(); ++e)
+      what += (e ? ", " : " ") + fixed(rep.scored.diagnostics.effector_hz[e]);
+    what += " Hz, its brain at " + fixed(cfg.brain_hz) + " Hz): ";
+    for (std::size_t k = 0; k < buzz.size(); ++k) what += (k ? "; " : "") + buzz[k];
+    rep.failures.push_back(what);
+  }
   if (clamped > def.max_clamped) {
     const std::string keep = "clamped effectors keep " + fixed(clamped);
     const std::string window = "in its last " + fixed(def.rest_seconds) + " s";
@@ -150,6 +217,7 @@ CheckReport check_creature(const CreatureModel& m, const SimConfig& cfg, std::ui
   }
   if (held > def.max_held)
     rep.failures.push_back("held joints keep " + fixed(held) + " > " + fixed(def.max_held));
+  if (!sustained_failure.empty()) rep.failures.push_back(sustained_failure);
   return rep;
 }
 

@@ -1,8 +1,9 @@
 // `bestiary check`: is a creature's fitness physics or artefact? Its scored
 // evaluation is repeated under other physics seeds, at smaller steps, with
-// more solver iterations and with its effectors held at their means; a
-// fitness that collapses under any of these was not earned by behaviour
-// (docs/physics.md).
+// more solver iterations, with a slower motor, with the brain at half its
+// rate, with its effectors held at their means and, for locomotion, twice as
+// long; a fitness that collapses (or, at a smaller step, soars) under any of
+// these was not earned by behaviour (docs/physics.md).
 #pragma once
 
 #include <cstdint>
@@ -20,6 +21,26 @@ struct CheckDef {
   int other_seeds = 5;            ///< physics seeds besides the scored one
   double min_other_seeds = 0.75;  ///< their median must keep this much
   double min_converged = 0.75;    ///< dt/2, dt/4 and twice the iterations each keep this much
+  /// ... and keep at most this much: a fitness that rises by more than the
+  /// gate as the step shrinks was not converged either (docs/physics.md cause 27)
+  double max_converged = 1.25;
+  /// The motor-lag variant: every motor's first-order response time
+  /// (motor.response_time) lengthened by this (s), as a real actuator's
+  /// windings and rotor lag its command. 0: no such variant.
+  double motor_lag = 0.01;
+  /// Under that lag, and with the brain at half its rate (brain.rate_hz / 2),
+  /// the fitness keeps at least this much; a creature that falls below under
+  /// either is a buzzer (it earns its fitness by flipping its signals at the
+  /// brain's rate, which no real actuator follows): named and failed.
+  double min_motor_lag = 0.5;
+  /// 0: no half-rate variant (for a brain whose timing is the task's: a
+  /// catapult's release fires after a count of brain steps, 4.1).
+  double min_half_rate = 0.25;
+  /// Locomotion: in a run twice as long, the centre of mass travels (in the
+  /// plane) over its last third at least this share of its travel over the
+  /// first: a gait that fades is not a gait. 0: no such gate (a throw's task
+  /// never has it).
+  double min_sustained = 0.5;
   double max_clamped = 0.25;      ///< effectors held at their means keep at most this much
   /// Every joint held still by its motor (the controller still releasing a
   /// catapult's projectile) keeps at most this much: a throw that survives
@@ -43,7 +64,9 @@ struct CheckDef {
 
 /// One re-evaluation of a check.
 struct CheckVariant {
-  std::string name;   ///< "seed 2", "dt/2", "dt/4", "2x iterations", "clamped", "held"
+  /// "seed 2", "dt/2", "dt/4", "2x iterations" (QuickStep only), "motor lag 10 ms",
+  /// "brain at 30 Hz", "clamped", "held"
+  std::string name;
   /// its evaluation (under converge_seeds > 1: the scored seed's, with the
   /// median fitness over the seeds)
   EvalResult result;
@@ -68,6 +91,13 @@ struct CheckReport {
   /// last CheckDef::rest_seconds of the run, as a share of the body length
   /// (-1: not measured: rest_seconds is 0 or longer than the run).
   double clamped_end_travel = -1;
+  /// The sustained gate's run, twice as long: the centre of mass's travel in
+  /// the plane over its first and its last third (m), and their ratio (last
+  /// over first; -1: not measured: not locomotion, the gate off, or a run
+  /// that failed).
+  double sustained_first = 0, sustained_last = 0, sustained = -1;
+  /// The creature earns its fitness by buzzing: the lag or the half rate took it.
+  bool buzzer = false;
   std::vector<std::string> failures;  ///< each gate that failed, with its figures; empty: passed
   /// What the figures say of the motion beside the gates, e.g. that it is
   /// mostly passive (a fall: held joints keep more than half of it).
@@ -81,6 +111,11 @@ struct CheckReport {
 /// as cfg.trial_score folds) has its other seeds compared with that score,
 /// what selection saw; the steps, iterations, clamped and held effectors
 /// compare with the own seed's evaluation, like with like.
+///
+/// The scored evaluation measures each effector's dominant frequency
+/// (scored.diagnostics.effector_hz). Variants that cannot differ from the
+/// scored run are not made: twice the solver iterations under the exact
+/// solver, which has none, and the motor lag when check.motor_lag is 0.
 CheckReport check_creature(const CreatureModel& m, const SimConfig& cfg, std::uint64_t seed,
                            const CheckDef& def, const Repeats& repeats = {});
 
@@ -88,6 +123,10 @@ CheckReport check_creature(const CreatureModel& m, const SimConfig& cfg, std::ui
 /// effectors held constant, a settled creature's centre of mass moves less
 /// than this share of its body length in CheckDef::rest_seconds.
 inline constexpr double kRestTravel = 0.02;
+
+/// The sustained gate judges only a creature whose centre of mass travelled
+/// at least this share of its body length over the first third of its run.
+inline constexpr double kSustainedFrom = 0.1;
 
 /// Held joints keeping more than this share of the fitness: the motion is
 /// mostly passive (a fall), which CheckReport::notes says whatever the gates.

@@ -61,12 +61,12 @@ class ReplayRecorder {
 };
 
 // What an evaluation reports of its state once its loop has ended.
-void report(const CreatureModel& m, const EvalState& s, EvalResult& res) {
+void report(const CreatureModel& m, const SimConfig& cfg, const EvalState& s, EvalResult& res) {
   res.steps = s.physics_steps;
   res.brain_steps = s.brain_steps - s.brain_waits;
   res.seconds = s.world.time();
   res.note = s.task->note();
-  res.diagnostics = diagnostics(s);
+  res.diagnostics = diagnostics(s, cfg.physics.dt);
   const TaskScene scene = s.task->scene(m);
   res.release_time = scene.release_time;
   res.touch_end_time = scene.touch_end_time;
@@ -104,6 +104,7 @@ EvalResult evaluate_once(const CreatureModel& m, const SimConfig& cfg, std::uint
   if (replay) recorder.emplace(cfg, *replay);
   try {
     s.emplace(m, GraphBrain(m.brain), cfg, std::move(*task), start);
+    if (recorder) s->record_signals = true;  // the replay says each effector's frequency
     if (recorder) recorder->observe(m, *s);
     const long max_steps = s->task->max_steps();
     while (s->physics_steps < max_steps && !s->task->done() && step(m, cfg, *s))
@@ -120,7 +121,7 @@ EvalResult evaluate_once(const CreatureModel& m, const SimConfig& cfg, std::uint
     s->failure = e.what();
   }
   if (recorder) recorder->finish(m, *s);
-  report(m, *s, res);
+  report(m, cfg, *s, res);
   return res;
 }
 

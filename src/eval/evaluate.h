@@ -44,6 +44,10 @@ struct EvalDiagnostics {
   /// Each effector's signal while the controller drove the motors: mean and
   /// standard deviation over those steps (empty if it never did).
   std::vector<double> effector_mean, effector_sd;
+  /// Each effector's dominant frequency (Hz) while driven (dominant_frequency
+  /// of its signal at every physics step; 0: constant), when measured
+  /// (SimConfig::effector_spectrum, or a replay): else empty.
+  std::vector<double> effector_hz;
 };
 
 /// What an evaluation measured.

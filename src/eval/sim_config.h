@@ -63,6 +63,10 @@ struct SimConfig {
   /// controller still takes the task's actions (a catapult's release): what
   /// is left of a throw then is a fall, not a swing.
   bool hold_joints = false;
+  /// Diagnostics (`bestiary check`), not a config key: record every effector
+  /// signal while the controller drives the motors, for each one's dominant
+  /// frequency (EvalDiagnostics::effector_hz). A replay records them too.
+  bool effector_spectrum = false;
   friend bool operator==(const SimConfig&, const SimConfig&) = default;
 };
 

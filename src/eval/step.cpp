@@ -4,6 +4,7 @@
 #include <cassert>
 #include <cmath>
 
+#include "eval/spectrum.h"
 #include "task/locomotion.h"
 #include "task/throwing.h"
 
@@ -37,6 +38,7 @@ EvalState::EvalState(const CreatureModel& m, const ControllerModel& c, const Sim
       task_inputs(static_cast<std::size_t>(task->n_inputs()), 0.0),
       signal_sum(m.effectors.size(), 0.0),
       signal_sum_sq(m.effectors.size(), 0.0),
+      record_signals(cfg.effector_spectrum),
       motors_off(m.effectors.size(), 0.0),
       clamp(cfg.effector_clamp.size() == 1 ? std::vector<double>(m.effectors.size(), cfg.effector_clamp[0])
                                            : cfg.effector_clamp) {
@@ -90,6 +92,7 @@ bool step(const CreatureModel& m, const SimConfig& cfg, EvalState& s) {
       s.signal_sum_sq[e] += s.signals[e] * s.signals[e];
     }
     ++s.driven_steps;
+    if (s.record_signals) s.signal_trace.insert(s.signal_trace.end(), s.signals.begin(), s.signals.end());
   }
   s.world.apply_effectors(m, cfg.motor, s.signals);
   if (hold) s.world.brake_effectors(m, cfg.motor, 1);  // every joint held with all its motor's force
@@ -118,7 +121,7 @@ Result<std::unique_ptr<Task>> make_task(const CreatureModel& m, const SimConfig&
   return Error{"unknown task kind"};
 }
 
-EvalDiagnostics diagnostics(const EvalState& s) {
+EvalDiagnostics diagnostics(const EvalState& s, double dt) {
   EvalDiagnostics d;
   const WorldStats& w = s.world.stats();
   d.max_joint_gap = w.max_joint_gap;
@@ -131,6 +134,14 @@ EvalDiagnostics diagnostics(const EvalState& s) {
       double mean = s.signal_sum[e] / n;
       d.effector_mean.push_back(mean);
       d.effector_sd.push_back(std::sqrt(std::max(0.0, s.signal_sum_sq[e] / n - mean * mean)));
+    }
+  }
+  if (s.record_signals) {
+    const std::size_t ne = s.signal_sum.size(), steps = ne ? s.signal_trace.size() / ne : 0;
+    std::vector<double> one(steps);
+    for (std::size_t e = 0; e < ne; ++e) {
+      for (std::size_t k = 0; k < steps; ++k) one[k] = s.signal_trace[k * ne + e];
+      d.effector_hz.push_back(dominant_frequency(one, 1 / dt));
     }
   }
   return d;

@@ -54,6 +54,11 @@ struct EvalState {
   // the effectors' activity while the controller drove the motors
   std::vector<double> signal_sum, signal_sum_sq;
   long driven_steps = 0;
+  /// Whether every driven step's signals go to signal_trace (the step's
+  /// signals in turn, effector by effector), for their dominant frequencies:
+  /// SimConfig::effector_spectrum, or set by a replay's recorder.
+  bool record_signals = false;
+  std::vector<double> signal_trace;
 
   // constants of the evaluation
   const std::vector<double> motors_off;
@@ -71,7 +76,8 @@ bool step(const CreatureModel& m, const SimConfig& cfg, EvalState& s);
 /// (throwing needs a catapult).
 Result<std::unique_ptr<Task>> make_task(const CreatureModel& m, const SimConfig& cfg);
 
-/// What the world measured of its accuracy, and the effectors' activity.
-EvalDiagnostics diagnostics(const EvalState& s);
+/// What the world measured of its accuracy, and the effectors' activity
+/// (their frequencies, when recorded, at the step rate 1 / dt).
+EvalDiagnostics diagnostics(const EvalState& s, double dt);
 
 }  // namespace bx
