@@ -113,7 +113,13 @@ std::string replay_to_string(const CreatureModel& m, const Replay& r, const Eval
                        {"fn", std::string(all_neuron_fns()[m.brain.fn[i]].name)}});
   j["neurons"] = neurons;
   json effectors = json::array();
-  for (const auto& e : m.effectors) effectors.push_back({{"joint", e.joint}, {"dof", e.dof}});
+  const std::vector<double>& hz = res.diagnostics.effector_hz;
+  for (std::size_t e = 0; e < m.effectors.size(); ++e) {
+    json ej = {{"joint", m.effectors[e].joint}, {"dof", m.effectors[e].dof}};
+    // its signal's dominant frequency over the driven steps (Hz; 0: constant)
+    if (e < hz.size()) ej["hz"] = round_to(hz[e], 1e-3);
+    effectors.push_back(ej);
+  }
   j["effectors"] = effectors;
   json sensors = json::array();
   for (const auto& s : m.sensors) sensors.push_back(sensor_json(s));
