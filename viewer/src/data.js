@@ -99,6 +99,7 @@ export function parseReplay(r, path = 'replay') {
     obj(e, at);
     if (int(e.joint, `${at}.joint`, 0) >= joints.length) fail(`${at}.joint`, 'no such joint', e.joint);
     int(e.dof, `${at}.dof`, 0);
+    if (e.hz !== undefined) num(e.hz, `${at}.hz`);
   });
   const sensors = r.sensors === undefined ? null : arr(r.sensors, `${path}.sensors`);
   sensors?.forEach((s, i) => {

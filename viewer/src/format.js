@@ -15,3 +15,8 @@ export function fitness(v) {
   if (!Number.isFinite(v)) return String(v);
   return Number(v.toPrecision(4)).toString();
 }
+
+/** A frequency with three significant digits, as `bestiary check` gives it: "30 Hz", "2.5 Hz". */
+export function hertz(v) {
+  return `${Number(v.toPrecision(3))} Hz`;
+}

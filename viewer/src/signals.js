@@ -3,6 +3,7 @@
 // (series.js) for the signals panel, so that a controller stuck at a
 // constant or a joint held at its stop shows at a glance.
 import { JOINT_DOFS } from './data.js';
+import { hertz } from './format.js';
 import { brainFrom, makeSeries } from './series.js';
 
 /** Degrees of freedom of a joint type (0 for an unknown one). */
@@ -24,9 +25,13 @@ const DEG = 180 / Math.PI;
 const degrees = (v) => `${v.toFixed(Math.abs(v) >= 99.95 ? 0 : 1)}°`;
 const metres = (v) => `${v.toFixed(3)} m`;
 
-/** How an effector is named: the joint and degree of freedom it drives. */
+/**
+ * How an effector is named: the joint and degree of freedom it drives, and
+ * its signal's dominant frequency ("constant" for 0) when the replay has it.
+ */
 export function effectorLabel(e, k) {
-  return `${k}: joint ${e.joint} · dof ${e.dof}`;
+  const hz = e.hz === undefined ? '' : ` · ${e.hz > 0 ? hertz(e.hz) : 'constant'}`;
+  return `${k}: joint ${e.joint} · dof ${e.dof}${hz}`;
 }
 
 /** How a sensor is named: a joint angle's joint and dof, a contact's part and face. */

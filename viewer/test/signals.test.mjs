@@ -3,6 +3,7 @@
 // constant.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
+import { parseReplay } from '../src/data.js';
 import {
   effectorSeries, isLinearDof, jointAngleSeries, jointDofs, sensorLabel, sensorSeries, signalGroups, stopShare,
 } from '../src/signals.js';
@@ -24,6 +25,22 @@ test('an effector: labelled by joint and dof, on [-1, 1] with a zero line, its r
   assert.deepEqual(e.lines, [{ v: 0, kind: 'zero' }]);
   assert.equal(rangeText(e), '0.100 .. 1.000'); // sin(t) from t = 0.1 to 2
   assert.equal(e.constant, false);
+});
+
+test("an effector's label has its dominant frequency when the replay has it, and none when not", () => {
+  const label = (hz) => {
+    const r = makeReplay();
+    r.effectors[0].hz = hz;
+    return effectorSeries(parseReplay(r))[0].label;
+  };
+  assert.equal(label(30), '0: joint 0 · dof 0 · 30 Hz');
+  assert.equal(label(0.159), '0: joint 0 · dof 0 · 0.159 Hz'); // sin(t)
+  assert.equal(label(2.5), '0: joint 0 · dof 0 · 2.5 Hz');
+  assert.equal(label(0), '0: joint 0 · dof 0 · constant');
+  // an older replay, without the field
+  const old = effectorSeries(parseReplay(makeReplay()))[0].label;
+  assert.equal(old, '0: joint 0 · dof 0');
+  assert.doesNotMatch(old, /Hz|constant/);
 });
 
 test('an effector held at -1 is constant, though frame 0 (before the brain ran) reads 0', () => {
