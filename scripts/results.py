@@ -17,9 +17,13 @@ For every run also `bestiary check` of its best: its fitness re-simulated
 under 5 other physics seeds (the median ratio to the scored fitness: an
 elite's mean or least over its evaluations, evolution.elite_evaluations and
 task.trial_score), at dt/2
-and dt/4, at twice the solver iterations, with every effector clamped to
-its mean and with every joint held still by its motor, the largest joint separation, and the verdict (its gates are the
-run's [check] config keys, or --check-set's).
+and dt/4 (and twice the solver iterations, under QuickStep), with its motors
+lagging 10 ms more and its brain at half its rate (a buzzer collapses under
+them), with every effector clamped to its mean and with every joint held still
+by its motor, for locomotion its last third's travel over its first in a run
+twice as long (sustained), each active effector's dominant frequency, the
+largest joint separation, and the verdict (its gates are the run's [check]
+config keys, or --check-set's).
 
 For a throwing run (chaumont2007's catapults) instead: the best fitness of the
 first and last generation; the best creature re-simulated exactly: its throw
@@ -106,16 +110,26 @@ def check_row(preset, seed, run_dir, check_set=()):
     # "dt/2 (median of 5 seeds)" under check.converge_seeds > 1 counts as "dt/2"
     # and "held (no effectors)" as "held"
     ratio = {v["name"].split(" (")[0]: v for v in c["variants"]}
+    # "motor lag +10 ms" and "brain at 30 Hz" by what they are
+    for v in c["variants"]:
+        name = v["name"].split(" (")[0]
+        if name.startswith("motor lag"):
+            ratio["lag"] = v
+        elif name.startswith("brain at"):
+            ratio["half rate"] = v
     cell = lambda n: ("failed" if ratio[n]["failed"] else f"{ratio[n]['ratio']:.2f}") if n in ratio else "-"
     verdict = "pass" if c["passed"] else "FAIL: " + "; ".join(c["failures"])
     if c.get("notes"):
         verdict += " (" + "; ".join(c["notes"]) + ")"
-    active = sum(1 for sd in c["effector_sd"] if sd >= 0.1)
+    active = [k for k, sd in enumerate(c["effector_sd"]) if sd >= 0.1]
+    hz = ", ".join(f"{c['effector_hz'][k]:.3g}" for k in active) if c.get("effector_hz") else ""
+    sustained = f"{c['sustained']['ratio']:.2f}" if "sustained" in c else "-"
     # the fitness selection saw: under elite_evaluations the mean (or least) of several evaluations
     scored = c.get("scored_fitness", c["fitness"])
     return (f"| {preset} | {seed} | {scored:.4g} | {c['median_other_seeds']:.2f} | {cell('dt/2')} | "
-            f"{cell('dt/4')} | {cell('2x iterations')} | {cell('clamped')} | {cell('held')} | "
-            f"{active}/{len(c['effector_sd'])} | {100 * c['max_joint_gap']:.1f} | {verdict} |")
+            f"{cell('dt/4')} | {cell('lag')} | {cell('half rate')} | {cell('clamped')} | {cell('held')} | "
+            f"{sustained} | {len(active)}/{len(c['effector_sd'])} | {hz or '-'} | {100 * c['max_joint_gap']:.1f} | "
+            f"{verdict} |")
 
 
 def is_throwing(run_dir):
@@ -271,9 +285,10 @@ def main():
         print("|" + "---|" * 14)
         print("\n".join(t[1] for t in throws))
     if checks:
-        print("\n| preset | seed | best (scored) | other seeds (median) | dt/2 | dt/4 | 2x iterations "
-              "| clamped | held | active effectors (s.d. >= 0.1) | largest joint gap (cm) | check |")
-        print("|" + "---|" * 12)
+        print("\n| preset | seed | best (scored) | other seeds (median) | dt/2 | dt/4 | motor lag +10 ms "
+              "| brain at half rate | clamped | held | sustained | active effectors (s.d. >= 0.1) "
+              "| their frequencies (Hz) | largest joint gap (cm) | check |")
+        print("|" + "---|" * 15)
         print("\n".join(checks))
     if not rows:
         return

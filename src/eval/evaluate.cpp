@@ -82,18 +82,20 @@ void report(const CreatureModel& m, const SimConfig& cfg, const EvalState& s, Ev
   res.target_miss = score.target_miss;
 }
 
-EvalResult evaluate_once(const CreatureModel& m, const SimConfig& cfg, std::uint64_t seed,
+EvalResult evaluate_once(const CreatureModel& m, const SimConfig& given, std::uint64_t seed,
                          Replay* replay) {
   EvalResult res;
   res.warnings = m.warnings;
   reseed_physics(seed);
-  // the seed's start: a turn within +-start_yaw_jitter degrees, and a drop
-  // height within +-start_drop_jitter (drawn only when set, so that runs
-  // without it draw as before)
-  Rng draw(stream_seed({seed, kStartStream}));
-  StartPose start;
-  start.yaw = draw.uniform(-1, 1) * cfg.start_yaw_jitter * kPi / 180;
-  if (cfg.start_drop_jitter > 0) start.lift = draw.uniform(-1, 1) * cfg.start_drop_jitter;
+  const SeedDraw d = seed_draw(given, seed);
+  const StartPose start{d.yaw, d.lift};
+  // the seed's motors, when it draws their lag
+  std::optional<SimConfig> drawn;
+  if (d.response_time != given.motor.response_time) {
+    drawn.emplace(given);
+    drawn->motor.response_time = d.response_time;
+  }
+  const SimConfig& cfg = drawn ? *drawn : given;
   auto task = make_task(m, cfg);
   if (!task) {
     res.note = task.error();
@@ -126,6 +128,21 @@ EvalResult evaluate_once(const CreatureModel& m, const SimConfig& cfg, std::uint
 }
 
 }  // namespace
+
+SeedDraw seed_draw(const SimConfig& cfg, std::uint64_t seed) {
+  // a turn within +-start_yaw_jitter degrees, a drop height within
+  // +-start_drop_jitter and the motors' lag within +-response_time_jitter of
+  // it, the last two drawn only when set, so that runs without them draw as
+  // before
+  Rng draw(stream_seed({seed, kStartStream}));
+  SeedDraw d;
+  d.yaw = draw.uniform(-1, 1) * cfg.start_yaw_jitter * kPi / 180;
+  if (cfg.start_drop_jitter > 0) d.lift = draw.uniform(-1, 1) * cfg.start_drop_jitter;
+  d.response_time = cfg.motor.response_time;
+  if (cfg.motor.response_time_jitter > 0 && cfg.motor.response_time > 0)
+    d.response_time *= 1 + draw.uniform(-1, 1) * cfg.motor.response_time_jitter;
+  return d;
+}
 
 long brain_steps_due(long physics_steps, double dt, double brain_hz) {
   // the count of k >= 0 with k < physics_steps * dt * brain_hz, less a millionth

@@ -98,6 +98,15 @@ EvalResult evaluate(const CreatureModel& m, const SimConfig& cfg, std::uint64_t 
 /// brain_hz = 1 / dt it is physics_steps, at 2 / dt twice that).
 long brain_steps_due(long physics_steps, double dt, double brain_hz);
 
+/// What a physics seed draws for its evaluation besides ODE's generator: the
+/// start's turn about the vertical (rad) and lift (m), and the motors' response
+/// time (s) (task.start_yaw_jitter, task.start_drop_jitter,
+/// motor.response_time_jitter).
+struct SeedDraw {
+  double yaw = 0, lift = 0, response_time = 0;
+};
+SeedDraw seed_draw(const SimConfig& cfg, std::uint64_t seed);
+
 /// The physics seed of trial `trial` (0-based) of an evaluation under `seed`.
 std::uint64_t trial_seed(std::uint64_t seed, int trial);
 

@@ -63,6 +63,7 @@ const std::vector<Field>& fields() {
       {"motor", "max_force", Field::Real, 0, inf, {}, [](RunConfig& c) -> void* { return &c.sim.motor.max_force; }, "servo: torque cap (N m or N)"},
       {"motor", "off_brake", Field::Real, 0, 1, {}, [](RunConfig& c) -> void* { return &c.sim.motor.off_brake; }, "while the task holds the controller off (settling), each motor brakes its joint with this share of its full force (a joint's friction; 0: limp, frictionless)"},
       {"motor", "response_time", Field::Real, 0, 1e3, {}, [](RunConfig& c) -> void* { return &c.sim.motor.response_time; }, "every model: time constant of a first-order lag from effector signal to motor, from 0 (s; 0: none)"},
+      {"motor", "response_time_jitter", Field::Real, 0, 0.99, {}, [](RunConfig& c) -> void* { return &c.sim.motor.response_time_jitter; }, "each physics seed draws motor.response_time within +-this share of it (a lag not known exactly; 0: none)"},
       {"motor", "strength", Field::Real, 0, inf, {}, [](RunConfig& c) -> void* { return &c.sim.motor.strength; }, "torque and saturation: N m per m^2 of the larger part's cross-section"},
       {"motor", "torque_max_speed", Field::Real, 0, inf, {}, [](RunConfig& c) -> void* { return &c.sim.motor.torque_max_speed; }, "torque: joint speed beyond which the motor stops pushing (rad/s; 0: no limit)"},
       {"motor", "torque_max_linear_speed", Field::Real, 0, inf, {}, [](RunConfig& c) -> void* { return &c.sim.motor.torque_max_linear_speed; }, "torque: the same for sliding degrees of freedom (m/s; 0: no limit)"},

@@ -130,6 +130,12 @@ struct MotorDef {
   /// inductance and rotor cannot follow a command that flips every brain
   /// step; docs/physics.md cause 13). 0: the motor takes each signal at once.
   double response_time = 0;
+  /// Each physics seed draws the motors' response time uniformly within
+  /// +-this share of response_time (0.5: 0.02 s becomes 0.01-0.03 s): no
+  /// real actuator's lag is known exactly, and a gait tuned to one lag
+  /// (docs/physics.md cause 27) earns its score only under that seed. 0: no
+  /// draw (runs made before it draw as ever).
+  double response_time_jitter = 0;
   /// While a task holds the controller off (chaumont2007's settling), each
   /// motor brakes its joint with this share of its full force (Servo:
   /// max_force; Saturation, Torque: strength x cross-section), against any

@@ -243,3 +243,38 @@ TEST(Evaluate, AnOdeInternalErrorFailsTheEvaluationNotTheProcess) {
 
 }  // namespace
 }  // namespace bx
+
+namespace bx {
+namespace {
+
+// motor.response_time_jitter: each seed draws the motors' lag within +-the
+// share of response_time, and its evaluation is that of a config with that
+// lag, bit for bit; without the jitter nothing is drawn.
+TEST(Evaluate, EachSeedDrawsTheMotorsLagWithinItsJitter) {
+  SimConfig cfg;
+  CreatureModel m = grow("walker.json", &cfg);
+  cfg.task.seconds = 3;
+  cfg.motor.response_time = 0.02;
+  EXPECT_EQ(seed_draw(cfg, 5).response_time, 0.02);
+  SimConfig jit = cfg;
+  jit.motor.response_time_jitter = 0.5;
+  double lo = 1, hi = 0;
+  for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+    const SeedDraw d = seed_draw(jit, seed);
+    EXPECT_EQ(d.yaw, seed_draw(cfg, seed).yaw);  // the start is drawn as before
+    EXPECT_GE(d.response_time, 0.01);
+    EXPECT_LE(d.response_time, 0.03);
+    lo = std::min(lo, d.response_time);
+    hi = std::max(hi, d.response_time);
+    if (seed <= 3) {
+      SimConfig fixed = cfg;
+      fixed.motor.response_time = d.response_time;
+      EXPECT_EQ(evaluate(m, jit, seed).distance, evaluate(m, fixed, seed).distance) << seed;
+    }
+  }
+  EXPECT_LT(lo, 0.015);  // 12 draws spread over the range
+  EXPECT_GT(hi, 0.025);
+}
+
+}  // namespace
+}  // namespace bx
