@@ -321,7 +321,8 @@ TEST_P(CheckElite, AnEliteScoredOverSeveralEvaluationsIsCheckedAndSimulatedAsSco
   Outcome run = bestiary("run quick --out " + dir.string() +
                          " --set evolution.population=12 --set evolution.generations=2"
                          " --set evolution.elite_evaluations=3 --set task.trial_score=" + score +
-                         (score == "min" ? " --set evolution.elite_half_step=true" : "") + " --quiet");
+                         " --set evolution.elite_quarter_step=false --set evolution.elite_half_step=" +
+                         (score == "min" ? "true" : "false") + " --quiet");
   ASSERT_EQ(run.code, 0) << run.err;
   Outcome r = bestiary("check " + dir.string() + " --json");
   ASSERT_TRUE(r.code == 0 || r.code == 1) << r.err;

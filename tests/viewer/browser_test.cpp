@@ -105,7 +105,8 @@ TEST_F(ViewerInBrowser, DrawsTheWalkerAndItMoves) {
   }
   EXPECT_TRUE(badges(group(seen, "effectors")).empty()) << group(seen, "effectors");
   EXPECT_TRUE(group(seen, "effectors")["badge"].is_null());
-  EXPECT_EQ(group(seen, "effectors")["traces"][3]["label"], "3: joint 1 · dof 1");
+  // the joint and dof it drives, and its signal's dominant frequency (the walker's 1.95 Hz gait)
+  EXPECT_EQ(group(seen, "effectors")["traces"][3]["label"], "3: joint 1 · dof 1 · 1.95 Hz");
   EXPECT_EQ(group(seen, "joints")["traces"][0]["stops"], "stops -45.8° .. 45.8°");
   expect_tidy_panels(seen);
 }
