@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
@@ -101,8 +102,10 @@ int cmd_check(const CheckArgs& a) {
     for (double f : rep.scored_by_seed) std::printf(" %.4g", f);
     std::printf(" = %.6g (other seeds' ratios are to this)\n", rep.scored_fitness);
   }
+  int width = 0;  // the names in one column
+  for (const auto& v : rep.variants) width = std::max(width, static_cast<int>(v.name.size()));
   for (const auto& v : rep.variants) {
-    std::printf("  %-14s fitness %-12.6g ratio %s", v.name.c_str(), v.result.fitness, ratio_text(v.ratio).c_str());
+    std::printf("  %-*s fitness %-12.6g ratio %s", width, v.name.c_str(), v.result.fitness, ratio_text(v.ratio).c_str());
     if (v.result.failed) std::printf("  (failed: %s)", v.result.failure.c_str());
     if (!v.seed_fitness.empty()) {
       std::printf("  by seed:");
