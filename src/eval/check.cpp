@@ -96,8 +96,10 @@ CheckReport check_creature(const CreatureModel& m, const SimConfig& cfg, std::ui
   // what a real actuator imposes: a motor that lags its command, a brain at
   // half its rate; a fitness earned by flipping signals at the brain's rate
   // does not survive them (a buzzer)
+  // (a creature without effectors has no actuator to slow: neither is made)
   std::vector<std::string> buzz;
-  if (def.motor_lag > 0) {
+  const bool actuated = !m.effectors.empty();
+  if (actuated && def.motor_lag > 0) {
     SimConfig c = cfg;
     c.motor.response_time += def.motor_lag;
     const std::string name = "motor lag +" + fixed(1000 * def.motor_lag) + " ms";
@@ -106,7 +108,7 @@ CheckReport check_creature(const CreatureModel& m, const SimConfig& cfg, std::ui
       buzz.push_back("with its motors lagging " + fixed(1000 * def.motor_lag) + " ms more it keeps " + fixed(r) +
                      " < " + fixed(def.min_motor_lag));
   }
-  if (def.min_half_rate > 0) {
+  if (actuated && def.min_half_rate > 0) {
     SimConfig c = cfg;
     c.brain_hz /= 2;
     const std::string name = "brain at " + fixed(c.brain_hz) + " Hz";

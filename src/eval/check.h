@@ -115,7 +115,9 @@ struct CheckReport {
 /// The scored evaluation measures each effector's dominant frequency
 /// (scored.diagnostics.effector_hz). Variants that cannot differ from the
 /// scored run are not made: twice the solver iterations under the exact
-/// solver, which has none, and the motor lag when check.motor_lag is 0.
+/// solver, which has none; the motor lag when check.motor_lag is 0, the half
+/// rate when check.min_half_rate is 0, and both for a creature without
+/// effectors.
 CheckReport check_creature(const CreatureModel& m, const SimConfig& cfg, std::uint64_t seed,
                            const CheckDef& def, const Repeats& repeats = {});
 

@@ -179,6 +179,11 @@ TEST(Check, ACreatureWithoutEffectorsIsAllPassive) {
   ASSERT_EQ(r.code, 1) << r.out << r.err;
   auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(ratio(j, "clamped (no effector driven)"), ratio(j, "held (no effectors)"));
+  // no motor to slow: no motor-lag or half-rate variant
+  for (const auto& v : j["variants"]) {
+    EXPECT_EQ(v["name"].get<std::string>().find("motor lag"), std::string::npos);
+    EXPECT_EQ(v["name"].get<std::string>().find("brain at"), std::string::npos);
+  }
   EXPECT_NEAR(ratio(j, "held (no effectors)"), 1.0, 0.01);
   EXPECT_EQ(j["failures"].back(), "held joints keep 1 > 0.5");
   EXPECT_EQ(j["notes"].back(), "mostly passive: with its joints held it keeps 1 of its fitness (a fall, not a swing)");
