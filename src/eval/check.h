@@ -47,7 +47,7 @@ struct CheckDef {
   /// it is a fall, not a swing (docs/physics.md cause 20). A walker held
   /// still goes nowhere, so for locomotion this gate asks what `clamped` asks.
   double max_held = 0.5;
-  /// dt/2, dt/4 and twice the iterations are each evaluated under this many
+  /// dt/2, dt/4, twice the iterations, the motor lag and the half rate are each evaluated under this many
   /// seeds (the scored one and the first other seeds) and compared by their
   /// median with the median at dt under the same seeds. 1: one evaluation
   /// against the scored fitness. More for a chaotic task (a throw), where

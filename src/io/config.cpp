@@ -141,7 +141,7 @@ const std::vector<Field>& fields() {
       {"check", "max_clamped", Field::Real, 0, 1e6, {}, [](RunConfig& c) -> void* { return &c.check.max_clamped; }, "check: with every effector held at its mean, at most this share"},
       {"check", "max_held", Field::Real, 0, 1e6, {}, [](RunConfig& c) -> void* { return &c.check.max_held; }, "check: with every joint held still by its motor (a catapult still releasing), at most this share"},
       {"check", "rest_seconds", Field::Real, 0, 1e6, {}, [](RunConfig& c) -> void* { return &c.check.rest_seconds; }, "check: clamped effectors may keep more than max_clamped if the creature is then at rest over its last this many seconds (a transient: a stroke or a topple, named in a note); 0: never"},
-      {"check", "converge_seeds", Field::Int, 1, 100, {}, [](RunConfig& c) -> void* { return &c.check.converge_seeds; }, "check: dt/2, dt/4 and 2x iterations each as the median over this many seeds, against the median at dt (for chaotic tasks)"},
+      {"check", "converge_seeds", Field::Int, 1, 100, {}, [](RunConfig& c) -> void* { return &c.check.converge_seeds; }, "check: dt/2, dt/4, 2x iterations, the motor lag and the half rate each as the median over this many seeds, against the median at dt (for chaotic tasks)"},
   };
   return f;
 }
