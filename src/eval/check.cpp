@@ -25,6 +25,17 @@ std::string fixed(double v) {
   return buf;
 }
 
+// The first frame at or after time t (the last frame when none is).
+const ReplayFrame& frame_at(const Replay& r, double t) {
+  auto f = std::find_if(r.frames.begin(), r.frames.end(), [&](const ReplayFrame& x) { return x.t >= t - 1e-9; });
+  return f == r.frames.end() ? r.frames.back() : *f;
+}
+
+// How far the centre of mass moved in the plane between two frames (m).
+double plane_travel(const ReplayFrame& a, const ReplayFrame& b) {
+  return std::hypot(b.com.x - a.com.x, b.com.y - a.com.y);
+}
+
 std::string share(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.3f", v);
@@ -133,10 +144,9 @@ CheckReport check_creature(const CreatureModel& m, const SimConfig& cfg, std::ui
                   def.rest_seconds > 0 ? &frames : nullptr);
     if (!frames.frames.empty()) {
       const ReplayFrame& last = frames.frames.back();
-      auto from = std::find_if(frames.frames.begin(), frames.frames.end(),
-                               [&](const ReplayFrame& f) { return f.t >= last.t - def.rest_seconds - 1e-9; });
-      if (from != frames.frames.begin() && last.t - from->t >= def.rest_seconds - 1e-6)
-        rep.clamped_end_travel = std::hypot(last.com.x - from->com.x, last.com.y - from->com.y) / m.body_length();
+      const ReplayFrame& from = frame_at(frames, last.t - def.rest_seconds);
+      if (&from != &frames.frames.front() && last.t - from.t >= def.rest_seconds - 1e-6)
+        rep.clamped_end_travel = plane_travel(from, last) / m.body_length();
     }
   }
   // every joint held still, the controller still acting on the task (a
@@ -157,16 +167,10 @@ CheckReport check_creature(const CreatureModel& m, const SimConfig& cfg, std::ui
     if (r.failed) {
       sustained_failure = "twice as long (" + fixed(c.task.seconds) + " s) it fails: " + r.failure;
     } else if (frames.frames.size() >= 3) {
-      const double t0 = frames.frames.front().t, t1 = frames.frames.back().t;
-      auto at = [&](double t) {  // the centre of mass at the first frame at or after t
-        auto f = std::find_if(frames.frames.begin(), frames.frames.end(),
-                              [&](const ReplayFrame& x) { return x.t >= t - 1e-9; });
-        return (f == frames.frames.end() ? frames.frames.back() : *f).com;
-      };
-      auto travel = [](Vec3 a, Vec3 b) { return std::hypot(b.x - a.x, b.y - a.y); };
-      const double third = (t1 - t0) / 3;
-      rep.sustained_first = travel(at(t0), at(t0 + third));
-      rep.sustained_last = travel(at(t1 - third), frames.frames.back().com);
+      const ReplayFrame &first = frames.frames.front(), &last = frames.frames.back();
+      const double third = (last.t - first.t) / 3;
+      rep.sustained_first = plane_travel(first, frame_at(frames, first.t + third));
+      rep.sustained_last = plane_travel(frame_at(frames, last.t - third), last);
       rep.sustained = rep.sustained_first > 0 ? rep.sustained_last / rep.sustained_first : 0;
       // a creature that hardly moved in the first third has no gait to fade
       if (rep.sustained_first >= kSustainedFrom * m.body_length() && rep.sustained < def.min_sustained)
