@@ -61,12 +61,12 @@ class ReplayRecorder {
 };
 
 // What an evaluation reports of its state once its loop has ended.
-void report(const CreatureModel& m, const SimConfig& cfg, const EvalState& s, EvalResult& res) {
+void report(const CreatureModel& m, const EvalState& s, EvalResult& res) {
   res.steps = s.physics_steps;
   res.brain_steps = s.brain_steps - s.brain_waits;
   res.seconds = s.world.time();
   res.note = s.task->note();
-  res.diagnostics = diagnostics(s, cfg.physics.dt);
+  res.diagnostics = diagnostics(s);
   const TaskScene scene = s.task->scene(m);
   res.release_time = scene.release_time;
   res.touch_end_time = scene.touch_end_time;
@@ -123,7 +123,7 @@ EvalResult evaluate_once(const CreatureModel& m, const SimConfig& given, std::ui
     s->failure = e.what();
   }
   if (recorder) recorder->finish(m, *s);
-  report(m, cfg, *s, res);
+  report(m, *s, res);
   return res;
 }
 

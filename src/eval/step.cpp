@@ -121,7 +121,7 @@ Result<std::unique_ptr<Task>> make_task(const CreatureModel& m, const SimConfig&
   return Error{"unknown task kind"};
 }
 
-EvalDiagnostics diagnostics(const EvalState& s, double dt) {
+EvalDiagnostics diagnostics(const EvalState& s) {
   EvalDiagnostics d;
   const WorldStats& w = s.world.stats();
   d.max_joint_gap = w.max_joint_gap;
@@ -141,7 +141,7 @@ EvalDiagnostics diagnostics(const EvalState& s, double dt) {
     std::vector<double> one(steps);
     for (std::size_t e = 0; e < ne; ++e) {
       for (std::size_t k = 0; k < steps; ++k) one[k] = s.signal_trace[k * ne + e];
-      d.effector_hz.push_back(dominant_frequency(one, 1 / dt));
+      d.effector_hz.push_back(dominant_frequency(one, 1 / s.world.def().dt));  // one sample a step
     }
   }
   return d;

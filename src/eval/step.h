@@ -77,7 +77,7 @@ bool step(const CreatureModel& m, const SimConfig& cfg, EvalState& s);
 Result<std::unique_ptr<Task>> make_task(const CreatureModel& m, const SimConfig& cfg);
 
 /// What the world measured of its accuracy, and the effectors' activity
-/// (their frequencies, when recorded, at the step rate 1 / dt).
-EvalDiagnostics diagnostics(const EvalState& s, double dt);
+/// (their frequencies too, when recorded).
+EvalDiagnostics diagnostics(const EvalState& s);
 
 }  // namespace bx
