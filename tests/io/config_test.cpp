@@ -241,5 +241,15 @@ TEST(Config, BadCatapultInputNamesTheKeyAndTheValue) {
             "r.toml: catapult.enabled: catapults need genome.dialect = \"chaumont2007\", got \"sims1994\"");
 }
 
+TEST(Config, ADropJitteredBelowTheGroundIsRefused) {
+  // miconi2006 starts on the ground (drop_height 0): jitter needs a drop above it
+  EXPECT_EQ(read_run_config("[genome]\ndialect = \"miconi2006\"\n[task]\nstart_drop_jitter = 0.005\n", "r.toml").error(),
+            "r.toml: task.start_drop_jitter: 0.005 m is more than task.drop_height (0 m): a lowered drop would start "
+            "the creature inside the ground");
+  EXPECT_TRUE(read_run_config("[genome]\ndialect = \"miconi2006\"\n[task]\ndrop_height = 0.01\nstart_drop_jitter = 0.005\n",
+                              "r.toml")
+                  .ok());
+}
+
 }  // namespace
 }  // namespace bx
