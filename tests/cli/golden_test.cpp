@@ -115,7 +115,7 @@ const Golden kGolden[] = {
      "4712388f2d71c294", "6eea73fcbad6ea53"},
     {"miconi2006-small",
      "--set evolution.population=10 --set evolution.evaluations=40 --set task.seconds=10",
-     "a357a8f109a7fc28", "addec39b647fff89"},
+     "5eef55f87affd293", "a57a96847a96c309"},
     {"chaumont2007-catapult-small", "--set evolution.population=10 --set evolution.generations=3",
      "e80f898da85cb7d4", "0f9ed11659960baf"},
     {"sims1994-walker", "--set evolution.population=10 --set evolution.generations=3",
