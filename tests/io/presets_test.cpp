@@ -51,11 +51,11 @@ TEST(Presets, PaperPresetsCarryThePapersConstants) {
   EXPECT_EQ(c.sim.task.seconds, 20);
   EXPECT_EQ(c.sim.task.activation, Activation::Chaumont2007);
   // 3.3's 30 still steps of under 1/300 m at the paper's 60 Hz (0.2 m/s for
-  // 0.5 s), with the brain at 60 Hz; the physics at 1/480 s (the preset's Step)
+  // 0.5 s), with the brain at 60 Hz; the physics at 1/240 s (the preset's Step, since issue 38)
   EXPECT_EQ(c.sim.brain_hz, 60);
   EXPECT_EQ(c.sim.task.settle.speed / 60, 1.0 / 300);
   EXPECT_EQ(std::lround(c.sim.task.settle.seconds * 60), 30);
-  EXPECT_EQ(std::lround(1 / c.sim.physics.dt), 480);
+  EXPECT_EQ(std::lround(1 / c.sim.physics.dt), 240);
   // the catapults: the paper's GA, the 30-step release at 60 Hz (0.5 s); our bounds on giants
   // and stretched joints (the presets' Deviations) in every one of them
   for (const char* name : {"chaumont2007-catapult", "chaumont2007-catapult-aim",
