@@ -105,7 +105,8 @@ json outcome_to_json(const EvalOutcome& o) {
             {"max_stop_overshoot", num(d.max_stop_overshoot)},
             {"max_penetration", num(d.max_penetration)},
             {"effector_mean", nums(d.effector_mean)},
-            {"effector_sd", nums(d.effector_sd)}}}};
+            {"effector_sd", nums(d.effector_sd)},
+            {"effector_hz", nums(d.effector_hz)}}}};
 }
 
 Result<EvalOutcome> outcome_from_json(const json& j) {
@@ -136,6 +137,7 @@ Result<EvalOutcome> outcome_from_json(const json& j) {
     g.max_penetration = get_num(d, "max_penetration");
     g.effector_mean = get_nums(d, "effector_mean");
     g.effector_sd = get_nums(d, "effector_sd");
+    g.effector_hz = get_nums(d, "effector_hz");
     return o;
   } catch (const std::exception& e) {
     return Error{std::string("evaluation outcome: ") + e.what()};

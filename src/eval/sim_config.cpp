@@ -90,4 +90,12 @@ double& task_seconds(SimConfig& c) {
   return c.task_kind == TaskKind::Throwing ? c.throwing.seconds : c.task.seconds;
 }
 
+double task_drop_height(const SimConfig& c) {
+  return c.task_kind == TaskKind::Throwing ? c.throwing.drop_height : c.task.drop_height;
+}
+
+const char* task_drop_height_key(const SimConfig& c) {
+  return c.task_kind == TaskKind::Throwing ? "throwing.drop_height" : "task.drop_height";
+}
+
 }  // namespace bx

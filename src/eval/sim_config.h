@@ -79,5 +79,9 @@ SimConfig default_sim_config(const Genome& g);
 
 /// The active task's evaluation length (s): task.seconds or throwing.seconds.
 double& task_seconds(SimConfig& c);
+/// The active task's drop height (m) and its key: task.drop_height or
+/// throwing.drop_height.
+double task_drop_height(const SimConfig& c);
+const char* task_drop_height_key(const SimConfig& c);
 
 }  // namespace bx

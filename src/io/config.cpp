@@ -408,11 +408,9 @@ Result<RunConfig> read_run_config(std::string_view text, std::string_view source
   if (cfg.sim.task_kind == TaskKind::Throwing && !cfg.operators.catapult.enabled)
     return Error{std::string(source) + ": task.kind: \"throwing\" needs catapult.enabled = true"};
   // a drop jittered lower than the ground would start the creature inside it
-  const bool throwing = cfg.sim.task_kind == TaskKind::Throwing;
-  const double drop = throwing ? cfg.sim.throwing.drop_height : cfg.sim.task.drop_height;
-  if (cfg.sim.start_drop_jitter > drop)
+  if (cfg.sim.start_drop_jitter > task_drop_height(cfg.sim))
     return Error{std::string(source) + ": task.start_drop_jitter: " + num(cfg.sim.start_drop_jitter) +
-                 " m is more than " + (throwing ? "throwing" : "task") + ".drop_height (" + num(drop) +
+                 " m is more than " + task_drop_height_key(cfg.sim) + " (" + num(task_drop_height(cfg.sim)) +
                  " m): a lowered drop would start the creature inside the ground"};
   return cfg;
 }

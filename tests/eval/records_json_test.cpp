@@ -48,6 +48,7 @@ void expect_same(const EvalOutcome& a, const EvalOutcome& b) {
   EXPECT_TRUE(same_bits(d.max_penetration, e.max_penetration));
   expect_same_nums(d.effector_mean, e.effector_mean, "effector_mean");
   expect_same_nums(d.effector_sd, e.effector_sd, "effector_sd");
+  expect_same_nums(d.effector_hz, e.effector_hz, "effector_hz");
 }
 
 TEST(OutcomeJson, EveryFieldRoundTripsBitForBit) {
@@ -67,7 +68,7 @@ TEST(OutcomeJson, EveryFieldRoundTripsBitForBit) {
   r.brain_steps = 7;
   r.warnings = {"a", "b\tc"};
   r.trial_fitness = {0.3, 2.0 / 3.0, 5e-324};
-  r.diagnostics = {0.038123, 21, 0.138, 0.0335, {-1, 0.25, 1.0 / 7.0}, {0, 0.899, 0.57}};
+  r.diagnostics = {0.038123, 21, 0.138, 0.0335, {-1, 0.25, 1.0 / 7.0}, {0, 0.899, 0.57}, {0, 29.97, 1.0 / 3.0}};
   auto back = outcome_from_json(nlohmann::json::parse(outcome_to_json(o).dump()));
   ASSERT_TRUE(back.ok()) << back.error();
   expect_same(o, *back);
