@@ -9,16 +9,17 @@ namespace {
 
 class GraphBrainState : public ControllerState {
  public:
-  explicit GraphBrainState(const BrainModel& m) : m_(m), s_(make_brain_state(m)) {}
+  explicit GraphBrainState(const BrainModel& m)
+      : m_(m), s_(make_brain_state(m)), outputs_(m.has_release() ? 1 : 0, 0.0) {}
 
   void step(std::span<const double> sensors, std::span<const double>, double dt) override {
     assert(static_cast<int>(sensors.size()) == m_.n_sensors);
     std::copy(sensors.begin(), sensors.end(), s_.values.begin());
     brain_step(m_, s_, dt);
-    if (m_.has_release() && s_.release_out >= BrainModel::kReleaseThreshold) actions_.release = true;
+    if (m_.has_release() && s_.release_out >= BrainModel::kReleaseThreshold) outputs_[0] = 1;
   }
   std::span<const double> effectors() const override { return s_.effector_out; }
-  const Actions& actions() const override { return actions_; }
+  std::span<const double> task_outputs() const override { return outputs_; }
   std::span<const double> sensors() const override {
     return std::span<const double>(s_.values).first(static_cast<std::size_t>(m_.n_sensors));
   }
@@ -29,7 +30,7 @@ class GraphBrainState : public ControllerState {
  private:
   const BrainModel& m_;
   BrainState s_;
-  Actions actions_;
+  std::vector<double> outputs_;  ///< the release, fired (1) or not (0)
 };
 
 }  // namespace

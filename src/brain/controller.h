@@ -1,5 +1,6 @@
 // A controller: what turns sensor readings (and a task's inputs) into
-// effector signals and actions, as the evaluation loop (eval/step.h) sees it.
+// effector signals (and outputs for the task), as the evaluation loop
+// (eval/step.h) sees it.
 // Like the creature, it comes in two halves: a model, immutable and shared by
 // every evaluation, and its per-evaluation state. Sims' graph brain
 // (GraphBrain, below) is one implementation; a controller over a fixed body
@@ -14,13 +15,6 @@
 
 namespace bx {
 
-/// What a controller asks of the task beside its effector signals.
-struct Actions {
-  /// A catapult's release effector has fired (chaumont2007 4.1): it stays
-  /// true from the brain step that reached the threshold on.
-  bool release = false;
-};
-
 /// A controller's state during one evaluation.
 class ControllerState {
  public:
@@ -31,8 +25,11 @@ class ControllerState {
   /// The effector signals in [-1, 1], one per effector (0 before the first
   /// step); valid until the next step.
   virtual std::span<const double> effectors() const = 0;
-  /// What it has asked of the task so far.
-  virtual const Actions& actions() const = 0;
+  /// What it asks of the task beside the effector signals, one value per
+  /// task output (the model's n_task_outputs: a catapult's release, a river
+  /// crossing's pick-up or put-down), 0 before the first step; valid until
+  /// the next step. Task inputs' mirror: the task says what each means.
+  virtual std::span<const double> task_outputs() const { return {}; }
   /// The sensor readings of its last step (0 before the first), for replays.
   virtual std::span<const double> sensors() const = 0;
   /// Its internal signals (a graph brain's neuron outputs), for replays.
@@ -47,19 +44,24 @@ class ControllerModel {
   virtual int n_effectors() const = 0;
   /// Inputs it takes from the task beside the body's sensors.
   virtual int n_task_inputs() const { return 0; }
+  /// Outputs it gives the task beside the effector signals (ControllerState::task_outputs).
+  virtual int n_task_outputs() const { return 0; }
   /// A fresh state for one evaluation.
   virtual std::unique_ptr<ControllerState> make_state() const = 0;
 };
 
 /// Sims' graph brain (brain_model.h) as a controller: each step writes the
-/// readings into its sensor slots and runs brain_step; a release effector's
-/// signal reaching BrainModel::kReleaseThreshold sets Actions::release.
+/// readings into its sensor slots and runs brain_step. A catapult's release
+/// effector is its one task output: 0 until the brain step whose release
+/// signal reaches BrainModel::kReleaseThreshold, 1 from then on (the release
+/// fires once, chaumont2007 4.1).
 /// Holds a reference to the brain, which must outlive it and its states.
 class GraphBrain : public ControllerModel {
  public:
   explicit GraphBrain(const BrainModel& m) : m_(m) {}
   int n_sensors() const override { return m_.n_sensors; }
   int n_effectors() const override { return m_.n_effectors(); }
+  int n_task_outputs() const override { return m_.has_release() ? 1 : 0; }
   std::unique_ptr<ControllerState> make_state() const override;
 
  private:

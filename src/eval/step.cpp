@@ -45,6 +45,7 @@ EvalState::EvalState(const CreatureModel& m, const ControllerModel& c, const Sim
   assert(c.n_sensors() == static_cast<int>(m.sensors.size()));
   assert(c.n_effectors() == static_cast<int>(m.effectors.size()));
   assert(c.n_task_inputs() == task->n_inputs());
+  assert(c.n_task_outputs() >= task->n_outputs());
   // the creature resting drop_height (+ lift) above the ground (turned by
   // `yaw` about the vertical, which keeps its height)
   const double drop = task->scenario().drop_height + start.lift;
@@ -78,7 +79,7 @@ bool step(const CreatureModel& m, const SimConfig& cfg, EvalState& s) {
   const WorldObservation obs(m, s.world);
   // sense, think, and what the actions do
   think(m, cfg, s, obs);
-  s.task->act(m, s.controller->actions(), s.world, obs);
+  s.task->act(m, s.controller->task_outputs(), s.world, obs);
 
   // act: the motors follow the controller only while the task has it on
   const bool on = s.task->controller_on();

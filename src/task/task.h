@@ -11,7 +11,6 @@
 #include <string>
 #include <vector>
 
-#include "brain/controller.h"  // Actions
 #include "core/math.h"
 
 namespace bx {
@@ -113,6 +112,9 @@ class Task {
   virtual int n_inputs() const { return 0; }
   /// Writes them (n_inputs() values) before each controller step.
   virtual void inputs(const Observation&, std::span<double>) const {}
+  /// Outputs it reads of the controller beside the effector signals (a
+  /// catapult's release); the controller model must give at least as many.
+  virtual int n_outputs() const { return 0; }
   /// Whether the motors follow the controller in the coming step (else the
   /// loop holds them off).
   virtual bool controller_on() const { return true; }
@@ -122,8 +124,9 @@ class Task {
   /// Whether every joint is held still with all its motor's force in the
   /// coming step (the creature as one rigid body), whatever the controller.
   virtual bool joints_held() const { return false; }
-  /// Before each step: what the controller's actions do to the world.
-  virtual void act(const CreatureModel&, const Actions&, World&, const Observation&) {}
+  /// Before each step: what the controller's task outputs (its last step's,
+  /// ControllerState::task_outputs, n_outputs() of them) do to the world.
+  virtual void act(const CreatureModel&, std::span<const double> outputs, World&, const Observation&) {}
   /// After each step.
   virtual void observe(const Observation& o) = 0;
   /// True once the evaluation is over.

@@ -30,8 +30,8 @@ void ThrowingTask::begin(const Observation& o) {
   stillness_.start(parts_);
 }
 
-void ThrowingTask::act(const CreatureModel&, const Actions& a, World& w, const Observation& o) {
-  if (settling_ || released_ || !a.release) return;
+void ThrowingTask::act(const CreatureModel&, std::span<const double> outputs, World& w, const Observation& o) {
+  if (settling_ || released_ || outputs[0] < kFires) return;
   w.break_joint(release_joint_);
   release(o.time(), o.part_pose(projectile_).p);
 }

@@ -70,8 +70,13 @@ class ThrowingTask : public Task {
   bool controller_on() const override { return !settling_; }
   bool brain_on() const override { return !settling_; }
   bool joints_held() const override { return settling_; }
-  /// The release breaks the arm-projectile joint before the step.
-  void act(const CreatureModel& m, const Actions& a, World& w, const Observation& o) override;
+  /// Task output 0 is the release (a graph brain's release effector: 1 once
+  /// it has fired, else 0).
+  int n_outputs() const override { return 1; }
+  /// The release breaks the arm-projectile joint before the first step its
+  /// output is at least kFires.
+  void act(const CreatureModel& m, std::span<const double> outputs, World& w, const Observation& o) override;
+  static constexpr double kFires = 0.5;
   void observe(const Observation& o) override;
   /// True once the projectile has come to rest after its release, the
   /// throw's `seconds` are over, or the creature never settled.

@@ -42,7 +42,7 @@ struct ScriptedTask : Task {
   bool controller_on() const override { return observed() >= off; }
   bool joints_held() const override { return held && observed() < off; }
   bool brain_on() const override { return !wait || observed() >= off; }
-  void act(const CreatureModel&, const Actions&, World&, const Observation&) override { log.push_back('a'); }
+  void act(const CreatureModel&, std::span<const double>, World&, const Observation&) override { log.push_back('a'); }
   void observe(const Observation& o) override {
     log.push_back('o');
     times.push_back(o.time());
@@ -162,23 +162,26 @@ TEST(Step, TheThrowingTaskIsRefusedToACreatureWithoutACatapult) {
 }
 
 // A controller that is no graph brain: an open-loop oscillator whose
-// frequency the task gives it as an input, one signal for every effector.
+// frequency the task gives it as an input, one signal for every effector, and
+// its own clock (s) as its one task output.
 struct Oscillator : ControllerModel {
   int sensors = 0, effectors = 0;
   int n_sensors() const override { return sensors; }
   int n_effectors() const override { return effectors; }
   int n_task_inputs() const override { return 1; }
+  int n_task_outputs() const override { return 1; }
   struct State : ControllerState {
     std::vector<double> out, seen;
     double t = 0;
-    Actions none;
+    double clock[1] = {0};
     void step(std::span<const double> sensors, std::span<const double> in, double dt) override {
       seen.assign(sensors.begin(), sensors.end());
       t += dt;
+      clock[0] = t;
       for (double& o : out) o = std::sin(2 * kPi * in[0] * t);
     }
     std::span<const double> effectors() const override { return out; }
-    const Actions& actions() const override { return none; }
+    std::span<const double> task_outputs() const override { return clock; }
     std::span<const double> sensors() const override { return seen; }
     std::span<const double> internals() const override { return {}; }
   };
@@ -190,11 +193,17 @@ struct Oscillator : ControllerModel {
   }
 };
 
-// a task that gives the controller a frequency (Hz) and runs for 4 s
+// a task that gives the controller a frequency (Hz), runs for 4 s and
+// keeps, at each act, the controller's task output
 struct FrequencyTask : ScriptedTask {
   double hz = 1;
+  std::vector<double> outputs;
   int n_inputs() const override { return 1; }
   void inputs(const Observation&, std::span<double> out) const override { out[0] = hz; }
+  int n_outputs() const override { return 1; }
+  void act(const CreatureModel&, std::span<const double> out, World&, const Observation&) override {
+    outputs.push_back(out[0]);
+  }
 };
 
 TEST(Step, AControllerThatIsNoGraphBrainDrivesTheBodyOnTheTasksInputs) {
@@ -234,6 +243,12 @@ TEST(Step, AControllerThatIsNoGraphBrainDrivesTheBodyOnTheTasksInputs) {
     EXPECT_NEAR(crossings, 2 * 4 * hz, 1) << hz << " Hz";
     // the body's sensors reached it too
     EXPECT_EQ(s.controller->sensors().size(), m.sensors.size());
+    // and the task read the controller's output of the step it had just
+    // thought: its clock, a brain step ahead of the world's time before the step
+    ASSERT_EQ(task.outputs.size(), angle.size());
+    const double brain_dt = 1 / cfg.brain_hz;
+    for (std::size_t k = 0; k < task.outputs.size(); ++k)
+      ASSERT_NEAR(task.outputs[k], brain_dt * static_cast<double>(brain_steps_due(static_cast<long>(k) + 1, cfg.physics.dt, cfg.brain_hz)), 1e-9) << k;
   }
 }
 
