@@ -1,6 +1,6 @@
 // The river crossing's grid world (Stanton & Channon 2015, "Environment and
 // Physical Model"; SYSTEMS.md S4; docs/rivercrossing.md): the rules one by
-// one.
+// one, and a scripted agent that walks every level to its resource.
 #include "task/river/grid_world.h"
 
 #include <gtest/gtest.h>
@@ -8,6 +8,8 @@
 #include <cmath>
 #include <cstdint>
 #include <optional>
+
+#include "task/river/scripted_agent.h"
 
 namespace bx {
 namespace {
@@ -245,6 +247,109 @@ TEST(RiverGridWorld, TheEdgeIsAWall) {
   w.act(0.0);
   EXPECT_TRUE(w.alive());
   EXPECT_EQ(w.score(), 0);
+}
+
+// --- a scripted agent
+
+// a perfect walker completes levels 1 to 6 in turn, twice, and every layout
+// on the way is one it can solve
+TEST(ScriptedRiverAgent, CompletesEveryLevelInTurn) {
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    GridWorld w{Rng(seed)};
+    test::ScriptedAgent agent(w);
+    for (int round = 0; round < 2; ++round) {
+      for (int level = 1; level <= kRiverLevels; ++level) {
+        SCOPED_TRACE(testing::Message() << "seed " << seed << " level " << level);
+        ASSERT_EQ(w.level(), level);
+        const int stones = w.grid().count(Cell::Stone);
+        const int water = w.grid().count(Cell::Water);
+        const long changes = w.changes();
+        const int width = river_width(level);
+        // bridge first, watching the stones move, then reach the resource
+        if (width > 0) {
+          const std::optional<int> row = agent.crossing_row();
+          ASSERT_TRUE(row);
+          for (int laid = 0; laid < width; ++laid) {
+            const std::optional<CellIndex> stone = agent.nearest(Cell::Stone);
+            ASSERT_TRUE(stone);
+            ASSERT_TRUE(agent.go_to(*stone, 1.0));
+            ASSERT_TRUE(w.carrying());
+            ASSERT_TRUE(agent.go_to({kRiverColumn + laid, *row}, -1.0));
+            ASSERT_FALSE(w.carrying());
+          }
+          EXPECT_EQ(w.grid().count(Cell::Stone), stones - width);
+          EXPECT_EQ(w.grid().count(Cell::Water), water - width);
+          EXPECT_EQ(static_cast<int>(w.bridges().size()), width);
+          EXPECT_EQ(w.changes(), changes + 2 * width);
+        }
+        const int score = w.score();
+        const int food = w.food_eaten();
+        ASSERT_TRUE(agent.complete_level());
+        EXPECT_TRUE(w.alive());
+        EXPECT_EQ(w.score(), score + 100 + (w.food_eaten() - food));
+        if (level != 1) {
+          EXPECT_EQ(w.food_eaten(), food);
+        }
+      }
+    }
+    EXPECT_EQ(w.level(), 1);
+    EXPECT_EQ(w.levels_completed(), 12);
+    for (int level = 1; level <= kRiverLevels; ++level) EXPECT_EQ(w.completions(level), 2);
+    EXPECT_EQ(w.score(), 1200 + w.food_eaten());
+  }
+}
+
+TEST(ScriptedRiverAgent, CompleteLevelBridgesTheRiverItself) {
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    GridWorld w{Rng(seed), 6};
+    test::ScriptedAgent agent(w);
+    EXPECT_TRUE(agent.complete_level()) << "seed " << seed;
+    EXPECT_EQ(w.level(), 1);
+    EXPECT_EQ(w.score(), 100);
+  }
+}
+
+TEST(ScriptedRiverAgent, WalkingIntoWaterDrowns) {
+  GridWorld w{Rng(12), 4};
+  test::ScriptedAgent agent(w);
+  const std::optional<int> row = agent.crossing_row();
+  ASSERT_TRUE(row);
+  EXPECT_FALSE(agent.go_to({kRiverColumn, *row}, 0.0));
+  EXPECT_FALSE(w.alive());
+  EXPECT_EQ(w.killed_by(), Cell::Water);
+  EXPECT_EQ(w.agent(), (CellIndex{kRiverColumn, *row}));
+}
+
+TEST(ScriptedRiverAgent, CarryingAStoneIntoWaterWithoutPuttingItDownDrowns) {
+  GridWorld w{Rng(12), 4};
+  test::ScriptedAgent agent(w);
+  const std::optional<CellIndex> stone = agent.nearest(Cell::Stone);
+  ASSERT_TRUE(stone);
+  ASSERT_TRUE(agent.go_to(*stone, 1.0));
+  ASSERT_TRUE(w.carrying());
+  const std::optional<int> row = agent.crossing_row();
+  ASSERT_TRUE(row);
+  EXPECT_FALSE(agent.go_to({kRiverColumn, *row}, 0.0));
+  EXPECT_EQ(w.killed_by(), Cell::Water);
+}
+
+TEST(ScriptedRiverAgent, PuttingAStoneDownOnGrassBuildsNothing) {
+  GridWorld w{Rng(13), 4};
+  test::ScriptedAgent agent(w);
+  const std::optional<CellIndex> stone = agent.nearest(Cell::Stone);
+  ASSERT_TRUE(stone);
+  ASSERT_TRUE(agent.go_to(*stone, 1.0));
+  ASSERT_TRUE(w.carrying());
+  const long changes = w.changes();
+  const std::optional<int> row = agent.crossing_row();
+  ASSERT_TRUE(row);
+  const CellIndex bank{kRiverColumn - 1, *row};
+  ASSERT_TRUE(agent.go_to(bank, -1.0));
+  EXPECT_TRUE(w.carrying());
+  EXPECT_EQ(w.grid().at(bank), Cell::Grass);
+  EXPECT_TRUE(w.bridges().empty());
+  EXPECT_EQ(w.changes(), changes);
+  EXPECT_EQ(w.grid().count(Cell::Water), 20);
 }
 
 }  // namespace
