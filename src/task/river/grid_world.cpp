@@ -16,6 +16,9 @@ GridWorld::GridWorld(Rng rng, int first_level)
 
 void GridWorld::enter(CellIndex c) {
   if (!alive()) return;
+  // the edge is a wall, not a death: a 3D body can walk past it but cannot
+  // sense it (the shunting model counts cells outside as 0, so nothing
+  // repels it there), and the 2D code's gradient movement is clamped alike
   c = layout_.grid.clamp(c);
   if (c == agent_) return;
   // leaving a hazard that no act() has tested: it kills where it stood

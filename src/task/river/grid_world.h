@@ -1,8 +1,9 @@
 // The river crossing's world as its rules see it (rivercrossing; Stanton &
-// Channon 2015, "Environment and Physical Model"; SYSTEMS.md S4): the agent's
-// cell, what it carries, its score and level, and the grid those change. No
-// physics: the caller says which cell the agent is on (in 3D, the one under
-// the torso's centre, cell_under) and what the controller's pick-up action is.
+// Channon 2015, "Environment and Physical Model"; docs/papers.md S4): the
+// agent's cell, what it carries, its score and level, and the grid those
+// change. No physics: the caller says which cell the agent is on (in 3D, the
+// one under the torso's centre, cell_under) and what the controller's pick-up
+// action is.
 // docs/rivercrossing.md gives the rules with the reason for each choice.
 #pragma once
 
@@ -17,7 +18,7 @@
 namespace bx {
 
 /// An agent carrying nothing picks up the stone it stands on when the action
-/// is at least this (the Keele 2D code's threshold, SYSTEMS.md S4).
+/// is at least this (the Keele group's 2D code, docs/rivercrossing.md).
 inline constexpr double kPickUpAction = 0.1;
 /// An agent carrying a stone puts it down on the water it stands on when the
 /// action is at most this.
@@ -38,7 +39,8 @@ inline constexpr double kPutDownAction = -0.1;
 ///   between dies there: every hazard entered meets one death test.
 /// - The grid's edge is a wall: a cell beyond it is taken as the nearest cell
 ///   inside.
-/// - A death ends the evaluation: every later call does nothing.
+/// - A death ends the evaluation, as a death ends the 2D code's run: every
+///   later call does nothing.
 class GridWorld {
  public:
   /// Level `first_level` (1..6), its layout drawn from `rng`; every later

@@ -1,8 +1,8 @@
 // The river crossing's six levels (Stanton & Channon 2015, "Environment and
-// Physical Model"; SYSTEMS.md S4): what each level's grid holds and where, drawn
-// from a random stream. Where the paper is silent, the Keele group's public 2D
-// code decides (the river's columns, where stones may lie, the resource's row);
-// docs/rivercrossing.md lists each choice.
+// Physical Model"; docs/papers.md S4): what each level's grid holds and where,
+// drawn from a random stream. Where the paper is silent, the Keele group's
+// public 2D code decides (the river's columns, where stones may lie, the
+// resource's row); docs/rivercrossing.md lists each choice.
 #pragma once
 
 #include "core/rng.h"

@@ -1,5 +1,5 @@
 // The river crossing's grid world (Stanton & Channon 2015, "Environment and
-// Physical Model"; SYSTEMS.md S4; docs/rivercrossing.md): the rules one by
+// Physical Model"; docs/papers.md S4; docs/rivercrossing.md): the rules one by
 // one, and a scripted agent that walks every level to its resource.
 #include "task/river/grid_world.h"
 

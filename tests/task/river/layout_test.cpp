@@ -1,5 +1,5 @@
 // The river crossing's six levels (Stanton & Channon 2015, "Environment and
-// Physical Model"; SYSTEMS.md S4; docs/rivercrossing.md): what each layout
+// Physical Model"; docs/papers.md S4; docs/rivercrossing.md): what each layout
 // holds and where, its determinism, and the solvability check.
 #include "task/river/layout.h"
 
