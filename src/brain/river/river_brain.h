@@ -4,7 +4,7 @@
 // landscape, and each step the physical network reads the landscape at the
 // four sensors and drives the pattern generator, whose motor neurons give
 // the joints' targets. Pure math: it knows cell codes and points in cell
-// widths, no world and no body. docs/rivercrossing-controller.md gives every
+// widths, no world and no body. docs/rivercrossing.md ("The controller") gives every
 // rule and the choices where the paper is silent.
 #pragma once
 

@@ -22,7 +22,7 @@ struct RiverShape {
   int dn_hidden = 4;  ///< the DN's hidden neurons (the paper: four)
   /// The PN's hidden neurons. The paper is silent; 4, the only hidden layer
   /// size it gives (the DN's), keeps the genome short for a run of 10^6
-  /// tournaments (docs/rivercrossing-controller.md).
+  /// tournaments (docs/rivercrossing.md ("The controller")).
   int pn_hidden = 4;
   int motifs = 5;   ///< PG motifs, and PN outputs (one per motif)
   int motors = 12;  ///< motor neurons, one per degree of freedom

@@ -59,7 +59,7 @@ class ShuntingModel {
   /// cell, row-major (cell (i, j) at j * width + i); `iota` the iota of each
   /// code. Each cell's input is iota[code] * iota_scale; then `sweeps`
   /// synchronous sweeps of eq. 3, every cell from the previous sweep's values
-  /// (see docs/rivercrossing-controller.md for why not in place).
+  /// (see docs/rivercrossing.md ("The controller") for why not in place).
   void shape(std::span<const int> cells, const std::array<int, river_cell::kCount>& iota);
 
   /// The activity of cell (i, j); 0 outside the grid.
