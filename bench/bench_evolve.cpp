@@ -121,7 +121,7 @@ SchedTimes sched_times(const std::vector<int>& pids) {
 
 // ---------------------------------------------------------------------------
 
-struct Creature {
+struct Sample {
   Genome genome;
   CreatureModel model;
   std::uint64_t seed = 0;  // evaluation seed
@@ -252,7 +252,7 @@ int main(int argc, char** argv) {
   // evaluation blows up (the raw replay needs a complete run)
   SimConfig rec_cfg = cfg.sim;
   rec_cfg.replay_fps = 1.0 / cfg.sim.physics.dt;
-  std::vector<Creature> cs;
+  std::vector<Sample> cs;
   cs.reserve(static_cast<std::size_t>(n));
   Rng rng(stream_seed({seed, 1}));
   long not_viable = 0, blew_up = 0;
@@ -266,7 +266,7 @@ int main(int argc, char** argv) {
         ++not_viable;
         continue;
       }
-      Creature c;
+      Sample c;
       c.genome = std::move(g);
       c.model = std::move(*dev.model);
       c.seed = stream_seed({seed, 2, static_cast<std::uint64_t>(i)});
@@ -296,7 +296,7 @@ int main(int argc, char** argv) {
   long total_steps = 0, min_steps = cs[0].steps, max_steps = cs[0].steps;
   int min_parts = 1 << 30, max_parts = 0;
   double parts_sum = 0;
-  for (const Creature& c : cs) {
+  for (const Sample& c : cs) {
     total_steps += c.steps;
     min_steps = std::min(min_steps, c.steps);
     max_steps = std::max(max_steps, c.steps);
@@ -313,7 +313,7 @@ int main(int argc, char** argv) {
   // ways (the parent writes it, the worker parses it) and development
   int inproc_mismatch = 0;
   double json_sum = 0, develop_sum = 0;
-  for (const Creature& c : cs) {
+  for (const Sample& c : cs) {
     std::vector<double> json_t, develop_t;
     for (int r = 0; r < reps; ++r) {
       double t0 = cpu_seconds();
@@ -334,7 +334,7 @@ int main(int argc, char** argv) {
   std::vector<GraphGenotype> genotypes;
   genotypes.reserve(cs.size());  // no reallocation: the jobs point into it
   std::vector<EvalJob> jobs;
-  for (const Creature& c : cs) {
+  for (const Sample& c : cs) {
     genotypes.emplace_back(c.genome);
     jobs.push_back({&genotypes.back(), c.seed});
   }
@@ -364,7 +364,7 @@ int main(int argc, char** argv) {
         ++pool_mismatch;
     }
   };
-  auto placement_of = [&](const Creature& c) {
+  auto placement_of = [&](const Sample& c) {
     return Pose{{0, 0, cfg.sim.task.drop_height - c.model.min_z()}, Mat3::identity()};
   };
 
@@ -383,7 +383,7 @@ int main(int argc, char** argv) {
       if (pid == 0) {
         ::close(fd[0]);
         double c0 = cpu_seconds();
-        for (const Creature& c : cs) run_raw(c.model, cfg.sim, placement_of(c), c.tape, c.seed);
+        for (const Sample& c : cs) run_raw(c.model, cfg.sim, placement_of(c), c.tape, c.seed);
         double cpu = cpu_seconds() - c0;
         ssize_t wr = ::write(fd[1], &cpu, sizeof cpu);
         ::_exit(wr == static_cast<ssize_t>(sizeof cpu) ? 0 : 1);
@@ -418,7 +418,7 @@ int main(int argc, char** argv) {
   const std::vector<int> self{static_cast<int>(::getpid())};
   for (int r = 0; r < reps; ++r) {
     for (std::size_t i = 0; i < cs.size(); ++i) {
-      const Creature& c = cs[i];
+      const Sample& c = cs[i];
       double t0 = cpu_seconds();
       EvalResult res = evaluate(c.model, cfg.sim, c.seed);
       double t1 = cpu_seconds();

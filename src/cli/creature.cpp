@@ -64,7 +64,7 @@ std::string joined_sets(const std::vector<std::string>& set) {
   return out;
 }
 
-Status apply_seconds(Creature& c, const std::optional<double>& seconds) { return set_seconds(c.cfg.sim, seconds); }
+Status apply_seconds(Subject& c, const std::optional<double>& seconds) { return set_seconds(c.cfg.sim, seconds); }
 
 // whether two run configs evaluate a creature alike: the same simulation and
 // the same evolution (which says how the elite was re-evaluated); check's
@@ -73,7 +73,7 @@ bool evaluates_alike(const RunConfig& a, const RunConfig& b) {
   return a.dialect == b.dialect && a.sim == b.sim && a.evolution == b.evolution;
 }
 
-Result<Creature> from_run(const RunTarget& t, const CreatureFlags& f) {
+Result<Subject> from_run(const RunTarget& t, const CreatureFlags& f) {
   if (!f.config.empty())
     return Error{"--config: a run's creature is evaluated with its run's config (use --set to vary it)"};
   if (f.seed) return Error{"--seed: a run's creature is evaluated with its own stored evaluation seed"};
@@ -117,7 +117,7 @@ Result<Creature> from_run(const RunTarget& t, const CreatureFlags& f) {
   if (!genome)
     return Error{t.dir + ": individual " + std::to_string(ind->id) + " is a genotype of kind " +
                  std::string(ind->genotype->kind()) + ": it has no body to grow"};
-  Creature c;
+  Subject c;
   c.genome = *genome;
   c.cfg = *cfg;
   c.seed = ind->seed;
@@ -168,13 +168,13 @@ Result<RunConfig> genome_config(const Genome& g, const std::string& text, const 
   return cfg;
 }
 
-Result<Creature> from_genome(const std::string& path, const CreatureFlags& f) {
+Result<Subject> from_genome(const std::string& path, const CreatureFlags& f) {
   if (f.id || f.gen) return Error{"--id/--gen: name an individual of a run; " + path + " is a genome file"};
   auto text = read_file(path);
   if (!text) return Error{text.error()};
   auto g = genome_from_string(*text, path);
   if (!g) return Error{g.error()};
-  Creature c;
+  Subject c;
   c.genome = std::move(*g);
   c.label = path;
   json prov;
@@ -269,11 +269,11 @@ Status set_seconds(SimConfig& sim, const std::optional<double>& seconds) {
   return Ok{};
 }
 
-Repeats Creature::repeats() const {
+Repeats Subject::repeats() const {
   return elite_repeats(cfg.evolution, scored_settings ? evaluations : 1);
 }
 
-std::string Creature::evaluations_note() const {
+std::string Subject::evaluations_note() const {
   if (!scored_settings || evaluations <= 1 || !stored_fitness) return "";
   char buf[128];
   std::snprintf(buf, sizeof buf, "(evaluation 1 of %d; the stored fitness %.6g is their %s", evaluations,
@@ -306,12 +306,12 @@ void add_creature_options(CLI::App* cmd, std::string& target, CreatureFlags& f) 
 
 bool names_run(const std::string& target) { return split_run(target).has_value(); }
 
-Result<Creature> resolve_creature(const std::string& target, const CreatureFlags& flags) {
+Result<Subject> resolve_creature(const std::string& target, const CreatureFlags& flags) {
   if (auto run = split_run(target)) return from_run(*run, flags);
   return from_genome(target, flags);
 }
 
-json provenance_json(const Creature& c, const std::string& config_text) {
+json provenance_json(const Subject& c, const std::string& config_text) {
   json p;
   p["run"] = c.run_dir;
   if (c.individual) {

@@ -38,7 +38,7 @@ struct CreatureFlags {
 };
 
 /// A creature to evaluate, with the config and seed to evaluate it with.
-struct Creature {
+struct Subject {
   Genome genome;
   RunConfig cfg;
   std::uint64_t seed = 1;
@@ -74,13 +74,13 @@ bool names_run(const std::string& target);
 
 /// The creature `target` names, with the flags applied; errors name the
 /// target or the flag.
-Result<Creature> resolve_creature(const std::string& target, const CreatureFlags& flags);
+Result<Subject> resolve_creature(const std::string& target, const CreatureFlags& flags);
 
 /// A run's individual's provenance, for the genome file `best --out` writes:
 /// run, individual, generation, fitness (and how many evaluations it is the
 /// mean of), seed, and the run's config (its
 /// text and a hash), so the file alone reproduces the scored evaluation.
-nlohmann::json provenance_json(const Creature& c, const std::string& config_text);
+nlohmann::json provenance_json(const Subject& c, const std::string& config_text);
 
 /// Sets the task's length from --seconds (unset: unchanged); checks its range.
 Status set_seconds(SimConfig& sim, const std::optional<double>& seconds);

@@ -62,7 +62,7 @@ struct Watched {
 };
 
 // grow and simulate with a replay, as `simulate --replay` does
-Result<Watched> simulate(const Creature& c) {
+Result<Watched> simulate(const Subject& c) {
   Development dev = develop(c.genome, c.cfg.sim.develop);
   if (!dev.viable()) return Error{c.label + ": not viable: " + dev.reason};
   const CreatureModel& m = *dev.model;
@@ -75,7 +75,7 @@ Result<Watched> simulate(const Creature& c) {
   return Watched{{label, replay_to_string(m, replay, res, info)}, res};
 }
 
-void print_result(const Creature& c, const EvalResult& res) {
+void print_result(const Subject& c, const EvalResult& res) {
   if (!c.settings.empty()) std::printf("%s\n", c.settings.c_str());
   std::printf("%s: simulated %.2f s, seed %llu, distance %.4f m, %s\n", c.label.c_str(), res.seconds,
               static_cast<unsigned long long>(c.seed), res.distance, fitness_line(res.fitness, c.scored_fitness()).c_str());

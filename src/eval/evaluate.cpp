@@ -7,6 +7,7 @@
 #include "core/rng.h"
 #include "geometry/ode.h"  // PhysicsFault
 #include "eval/step.h"
+#include "eval/task_table.h"
 #include "physics/world.h"
 
 namespace bx {
@@ -82,8 +83,8 @@ void report(const CreatureModel& m, const EvalState& s, EvalResult& res) {
   res.target_miss = score.target_miss;
 }
 
-EvalResult evaluate_once(const CreatureModel& m, const SimConfig& given, std::uint64_t seed,
-                         Replay* replay) {
+EvalResult evaluate_once(const CreatureModel& m, const ControllerModel& controller, const SimConfig& given,
+                         std::uint64_t seed, Replay* replay) {
   EvalResult res;
   res.warnings = m.warnings;
   reseed_physics(seed);
@@ -96,7 +97,7 @@ EvalResult evaluate_once(const CreatureModel& m, const SimConfig& given, std::ui
     drawn->motor.response_time = d.response_time;
   }
   const SimConfig& cfg = drawn ? *drawn : given;
-  auto task = make_task(m, cfg);
+  auto task = make_task(m, cfg, seed);
   if (!task) {
     res.note = task.error();
     return res;
@@ -105,7 +106,7 @@ EvalResult evaluate_once(const CreatureModel& m, const SimConfig& given, std::ui
   std::optional<ReplayRecorder> recorder;
   if (replay) recorder.emplace(cfg, *replay);
   try {
-    s.emplace(m, GraphBrain(m.brain), cfg, std::move(*task), start);
+    s.emplace(m, controller, cfg, std::move(*task), start);
     if (recorder) s->record_signals = true;  // the replay says each effector's frequency
     if (recorder) recorder->observe(m, *s);
     const long max_steps = s->task->max_steps();
@@ -199,28 +200,37 @@ std::string finer_step_text(const Repeats& r) {
 
 double repeated_fitness(const CreatureModel& m, const SimConfig& cfg, std::uint64_t seed, const Repeats& r,
                         const EvalResult& first, std::vector<double>* each) {
+  return repeated_fitness(m, GraphBrain(m.brain), cfg, seed, r, first, each);
+}
+
+double repeated_fitness(const CreatureModel& m, const ControllerModel& controller, const SimConfig& cfg,
+                        std::uint64_t seed, const Repeats& r, const EvalResult& first, std::vector<double>* each) {
   auto scored = [&](const EvalResult& e) { return e.failed ? r.failed_fitness : e.fitness; };
   const DividedSteps steps(cfg);
   double score = scored(first);
   if (each) each->assign(1, score);
   for (int k = 1; k < r.evaluations; ++k) {
-    const double f = scored(evaluate(m, steps.at(repeat_step_divisor(r, k)), repeat_seed(seed, k)));
+    const double f = scored(evaluate(m, controller, steps.at(repeat_step_divisor(r, k)), repeat_seed(seed, k)));
     if (each) each->push_back(f);
     score = fold_score(cfg.trial_score, score, k, f);
   }
   return score;
 }
 
-EvalResult evaluate(const CreatureModel& m, const SimConfig& cfg, std::uint64_t seed,
-                    Replay* replay) {
-  EvalResult res = evaluate_once(m, cfg, seed, replay);
+EvalResult evaluate(const CreatureModel& m, const SimConfig& cfg, std::uint64_t seed, Replay* replay) {
+  return evaluate(m, GraphBrain(m.brain), cfg, seed, replay);
+}
+
+EvalResult evaluate(const CreatureModel& m, const ControllerModel& controller, const SimConfig& cfg,
+                    std::uint64_t seed, Replay* replay) {
+  EvalResult res = evaluate_once(m, controller, cfg, seed, replay);
   if (cfg.trials <= 1) return res;
   // the first trial is the one a replay shows and the one distance, release
   // and target miss describe; the others only score
   res.trial_fitness = {res.fitness};
   double fitness = res.fitness, least = res.fitness;
   for (int k = 1; k < cfg.trials; ++k) {
-    EvalResult t = evaluate_once(m, cfg, trial_seed(seed, k), nullptr);
+    EvalResult t = evaluate_once(m, controller, cfg, trial_seed(seed, k), nullptr);
     res.trial_fitness.push_back(t.fitness);
     fitness += t.fitness;
     least = std::min(least, t.fitness);

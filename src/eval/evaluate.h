@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "develop/creature_model.h"
+#include "eval/creature.h"
 #include "eval/sim_config.h"
 
 namespace bx {
@@ -76,9 +77,9 @@ struct EvalResult {
   EvalDiagnostics diagnostics;
 };
 
-/// Simulates the creature on flat ground with its own brain, in the task
-/// cfg.task_kind names (a throwing task needs a catapult: for another
-/// creature it scores 0 with a note). Reseeds ODE's
+/// Simulates the creature (its body driven by its controller) on flat
+/// ground, in the task cfg.task_kind names (a throwing task needs a catapult:
+/// for another creature it scores 0 with a note). Reseeds ODE's
 /// generator from `seed` first, so equal inputs give bit-identical results.
 /// When `replay` is given, frames are appended to it.
 ///
@@ -87,8 +88,13 @@ struct EvalResult {
 /// brain_steps their sums, and a numerical explosion in any trial fails the
 /// whole evaluation; the rest (distance, release, target miss, seconds, the
 /// replay) is the first trial's, whose seed is `seed` itself.
-EvalResult evaluate(const CreatureModel& m, const SimConfig& cfg, std::uint64_t seed,
-                    Replay* replay = nullptr);
+EvalResult evaluate(const CreatureModel& body, const ControllerModel& controller, const SimConfig& cfg,
+                    std::uint64_t seed, Replay* replay = nullptr);
+inline EvalResult evaluate(const Creature& c, const SimConfig& cfg, std::uint64_t seed, Replay* replay = nullptr) {
+  return evaluate(*c.body, *c.controller, cfg, seed, replay);
+}
+/// A graph creature's body, driven by its own brain (GraphBrain).
+EvalResult evaluate(const CreatureModel& m, const SimConfig& cfg, std::uint64_t seed, Replay* replay = nullptr);
 
 /// The brain's schedule: how many brain steps have run by the end of the
 /// first `physics_steps` physics steps of `dt`. Brain step k (from 0) runs
@@ -167,6 +173,10 @@ std::string finer_step_text(const Repeats& r);
 /// step repeat_step_divisor says, a failed one counting as
 /// `r.failed_fitness`. `first` is evaluation 0, already simulated; each
 /// evaluation's fitness goes to `each` when given.
+double repeated_fitness(const CreatureModel& body, const ControllerModel& controller, const SimConfig& cfg,
+                        std::uint64_t seed, const Repeats& r, const EvalResult& first,
+                        std::vector<double>* each = nullptr);
+/// A graph creature's body, driven by its own brain.
 double repeated_fitness(const CreatureModel& m, const SimConfig& cfg, std::uint64_t seed, const Repeats& r,
                         const EvalResult& first, std::vector<double>* each = nullptr);
 

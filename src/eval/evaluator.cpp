@@ -36,10 +36,14 @@ EvalOutcome evaluate_genome(const Genome& g, const SimConfig& cfg, std::uint64_t
 }
 
 EvalOutcome evaluate_genotype(const Genotype& g, const SimConfig& cfg, std::uint64_t seed) {
-  if (const Genome* genome = graph_genome(g)) return evaluate_genome(*genome, cfg, seed);
   EvalOutcome out;
-  out.viable = false;
-  out.reason = "no task evaluates genotypes of kind " + std::string(g.kind()) + " yet";
+  auto creature = develop_creature(g, cfg);
+  if (!creature) {
+    out.viable = false;
+    out.reason = creature.error();
+    return out;
+  }
+  out.result = evaluate(*creature, cfg, seed);
   return out;
 }
 

@@ -37,10 +37,9 @@ struct EvalOutcome {
 /// Grows and evaluates one genome.
 EvalOutcome evaluate_genome(const Genome& g, const SimConfig& cfg, std::uint64_t seed);
 
-/// Evaluates one genotype: the work of every evaluator. A graph genome is
-/// grown and evaluated (evaluate_genome); a kind no task evaluates yet (a
-/// float vector: its body and controller come with the river crossing) is
-/// not viable, and says so.
+/// Evaluates one genotype: the work of every evaluator. It develops into
+/// cfg.creature's creature (develop_creature: not viable when it does not,
+/// a genotype of another kind included) and that creature is evaluated.
 EvalOutcome evaluate_genotype(const Genotype& g, const SimConfig& cfg, std::uint64_t seed);
 
 /// Evaluates batches of jobs; results come back in job order.

@@ -18,6 +18,12 @@ enum class TaskKind {
   Throwing,    ///< SimConfig::throwing (catapults, chaumont2007 section 4)
 };
 
+/// What a genotype develops into: a body and its controller (eval/creature.h,
+/// whose table says each kind's genotype and development).
+enum class CreatureKind {
+  Graph,  ///< Sims' graph genome: it grows its body and compiles its own brain
+};
+
 /// How several trials' fitnesses combine (SimConfig::trial_score).
 enum class TrialScore { Mean, Min };
 
@@ -30,6 +36,8 @@ struct SimConfig {
   /// k runs at time k / brain_hz, each one brain step long (1 / brain_hz s).
   double brain_hz = 100;
   DevelopDef develop;
+  /// What the genotypes develop into (genotype.kind).
+  CreatureKind creature = CreatureKind::Graph;
   TaskKind task_kind = TaskKind::Locomotion;
   LocomotionDef task;
   ThrowingDef throwing;

@@ -5,8 +5,6 @@
 #include <cmath>
 
 #include "eval/spectrum.h"
-#include "task/locomotion.h"
-#include "task/throwing.h"
 
 namespace bx {
 
@@ -109,17 +107,6 @@ bool step(const CreatureModel& m, const SimConfig& cfg, EvalState& s) {
   }
   s.task->observe(obs);
   return true;
-}
-
-Result<std::unique_ptr<Task>> make_task(const CreatureModel& m, const SimConfig& cfg) {
-  const double dt = cfg.physics.dt;
-  switch (cfg.task_kind) {
-    case TaskKind::Locomotion: return std::unique_ptr<Task>(new LocomotionTask(cfg.task, dt, m.n_parts()));
-    case TaskKind::Throwing:
-      if (m.projectile < 0) return Error{"not a catapult: the throwing task needs a genome with a catapult block"};
-      return std::unique_ptr<Task>(new ThrowingTask(cfg.throwing, dt, m.projectile, m.release_joint));
-  }
-  return Error{"unknown task kind"};
 }
 
 EvalDiagnostics diagnostics(const EvalState& s) {

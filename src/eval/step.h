@@ -72,10 +72,6 @@ struct EvalState {
 /// nothing observed) once the world blew up: s.failed and s.failure say why.
 bool step(const CreatureModel& m, const SimConfig& cfg, EvalState& s);
 
-/// The task of cfg.task_kind for this creature, or why it cannot have it
-/// (throwing needs a catapult).
-Result<std::unique_ptr<Task>> make_task(const CreatureModel& m, const SimConfig& cfg);
-
 /// What the world measured of its accuracy, and the effectors' activity
 /// (their frequencies too, when recorded).
 EvalDiagnostics diagnostics(const EvalState& s);

@@ -10,6 +10,8 @@
 
 #include "core/text.h"
 #include "core/files.h"
+#include "eval/creature.h"
+#include "eval/task_table.h"
 #include "genome/dialect.h"
 
 namespace bx {
@@ -84,7 +86,7 @@ const std::vector<Field>& fields() {
       {"task", "settle_timeout", Field::Real, 0, 1e4, {}, [](RunConfig& c) -> void* { return &c.sim.task.settle.timeout; }, "never settled within this (s): fitness 0"},
       {"task", "burst_seconds", Field::Real, 0, 1e4, {}, [](RunConfig& c) -> void* { return &c.sim.task.burst_seconds; }, "the first controller activation (s)"},
       {"task", "kappa", Field::Real, 0, 10, {}, [](RunConfig& c) -> void* { return &c.sim.task.kappa; }, "eq. 1's reward per block"},
-      {"task", "kind", Field::Choice, 0, 0, {"locomotion", "throwing"}, [](RunConfig& c) -> void* { return &c.sim.task_kind; }, "locomotion (the [task] keys) or throwing (the [throwing] keys; needs catapults)"},
+      {"task", "kind", Field::Choice, 0, 0, task_kind_names(), [](RunConfig& c) -> void* { return &c.sim.task_kind; }, "locomotion (the [task] keys) or throwing (the [throwing] keys; needs catapults)"},
       {"task", "trials", Field::Int, 1, 1000, {}, [](RunConfig& c) -> void* { return &c.sim.trials; }, "evaluations per creature under different physics seeds; fitness is their mean (task.trial_score)"},
       {"task", "trial_score", Field::Choice, 0, 0, {"mean", "min"}, [](RunConfig& c) -> void* { return &c.sim.trial_score; }, "how trials make the fitness: their mean, or the least of them (robust to luck); an elite's repeated evaluations (evolution.elite_evaluations) fold the same way"},
       {"task", "start_yaw_jitter", Field::Real, 0, 180, {}, [](RunConfig& c) -> void* { return &c.sim.start_yaw_jitter; }, "each physics seed turns the start by up to this (degrees) about the vertical"},
@@ -101,6 +103,7 @@ const std::vector<Field>& fields() {
       {"throwing", "touch_seconds", Field::Real, -1, 1e4, {}, [](RunConfig& c) -> void* { return &c.sim.throwing.touch_seconds; }, "after the release the creature may touch its projectile for this long (s); a later touch ends the throw where the projectile is (negative: no limit)"},
       {"throwing", "settle_timeout", Field::Real, 0, 1e4, {}, [](RunConfig& c) -> void* { return &c.sim.throwing.settle.timeout; }, "never settled within this (s): fitness 0"},
       {"replay", "fps", Field::Real, 1e-3, 1e4, {}, [](RunConfig& c) -> void* { return &c.sim.replay_fps; }, "replay frames per simulated second"},
+      {"genotype", "kind", Field::Choice, 0, 0, creature_kind_names(), [](RunConfig& c) -> void* { return &c.sim.creature; }, "what a genotype develops into, body and controller: graph (Sims' graph genome, of genome.dialect: it grows its body and brain)"},
       {"genome", "dialect", Field::Choice, 0, 0, {"sims1994", "miconi2006", "chaumont2007"}, [](RunConfig& c) -> void* { return &c.dialect; }, "sims1994, miconi2006 or chaumont2007: picks every default"},
       {"evolution", "algorithm", Field::Choice, 0, 0, {"generational", "steady_state"}, [](RunConfig& c) -> void* { return &c.evolution.algorithm; }, "generational (chaumont2007) or steady_state (miconi2006)"},
       {"evolution", "population", Field::Int, 3, 1000000, {}, [](RunConfig& c) -> void* { return &c.evolution.population; }, "individuals in the population"},

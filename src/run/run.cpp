@@ -132,8 +132,11 @@ Result<OpenRun> open_run(const std::string& dir, const std::vector<std::string>&
   return OpenRun{std::move(*store), std::move(*cfg), *seed};
 }
 
-// what the run breeds: today every preset evolves graph genomes
+// what the run breeds: the genotypes its creature kind develops, with their operators
 std::shared_ptr<const GenotypeOps> genotype_ops(const RunConfig& cfg) {
+  switch (cfg.sim.creature) {
+    case CreatureKind::Graph: break;
+  }
   return std::make_shared<GraphOps>(cfg.dialect, cfg.operators, cfg.sim.develop);
 }
 

@@ -133,9 +133,10 @@ TEST(Evaluator, NonViableGenomesComeBackAsValues) {
   EXPECT_NE(got[0].reason.find("self-intersection"), std::string::npos) << got[0].reason;
 }
 
-TEST(Evaluator, AGenotypeTravelsWithItsKindAndAKindWithoutATaskIsNotViable) {
+TEST(Evaluator, AGenotypeTravelsWithItsKindAndOneOfAnotherKindThanTheCreaturesIsNotViable) {
   // a float vector crosses the pipe as a float vector (the worker's reading
-  // of a graph genome would fail on it) and no task evaluates it yet
+  // of a graph genome would fail on it), and a graph creature does not
+  // develop from it
   FloatVector v({0.5, -0.25});
   std::vector<EvalJob> jobs = {{&v, 1}};
   ProcessPoolEvaluator pool(short_config(), 1, 60);
@@ -143,7 +144,8 @@ TEST(Evaluator, AGenotypeTravelsWithItsKindAndAKindWithoutATaskIsNotViable) {
     ASSERT_EQ(out.size(), 1u);
     EXPECT_FALSE(out[0].result.failed) << out[0].result.failure;
     EXPECT_FALSE(out[0].viable);
-    EXPECT_EQ(out[0].reason, "no task evaluates genotypes of kind floats yet");
+    EXPECT_EQ(out[0].reason,
+              "a genotype of kind floats, but genotype.kind \"graph\" develops graph genotypes");
   }
 }
 

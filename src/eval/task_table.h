@@ -1,0 +1,37 @@
+// The task table: one row per task kind (config task.kind), saying how to
+// make the kind's Task for one trial of one creature. A new task is a new
+// row here and its own files in src/task/; the loop (step.h) and
+// evaluation (evaluate.h) stay as they are.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string_view>
+#include <vector>
+
+#include "core/result.h"
+#include "develop/creature_model.h"
+#include "eval/sim_config.h"
+#include "task/task.h"
+
+namespace bx {
+
+/// One task kind.
+struct TaskRow {
+  TaskKind kind;
+  std::string_view name;  ///< its task.kind in configs
+  /// The task of one trial, whose physics seed is `seed` (a task may draw
+  /// its layout from it), or why this creature cannot have it.
+  Result<std::unique_ptr<Task>> (*make)(const CreatureModel&, const SimConfig&, std::uint64_t seed);
+};
+
+/// The row of a kind.
+const TaskRow& task_row(TaskKind kind);
+/// Every kind's name, in TaskKind's order (the config's choices).
+std::vector<std::string_view> task_kind_names();
+
+/// The task of cfg.task_kind for this creature's trial of physics seed
+/// `seed`, or why it cannot have it (throwing needs a catapult).
+Result<std::unique_ptr<Task>> make_task(const CreatureModel& m, const SimConfig& cfg, std::uint64_t seed);
+
+}  // namespace bx
