@@ -1,0 +1,88 @@
+// The river crossing's controller as the loop sees it: the task inputs in
+// their documented order reach the brain, effectors are 2 m - 1 of its motor
+// neurons and task output 0 is the decision network's action.
+#include "brain/river/river_controller.h"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "core/rng.h"
+
+namespace bx {
+namespace {
+
+Motif some_motif() {
+  Motif m;
+  m.w = {{{0.5, -1, 0.2}, {1.5, 0.1, -0.7}, {0, 2, -0.3}}};
+  m.tau = {0.2, 0.3, 0.5};
+  m.alpha = {0.1, -0.4, 0.6};
+  m.input = 0;
+  m.output = 2;
+  return m;
+}
+
+// Genes whose DN, on a stone, asks to put down (action -1) and sets the
+// resource's iota to 1; every other weight random.
+RiverBrainModel stone_model() {
+  Rng rng(7);
+  std::vector<double> g(181);
+  for (double& x : g) x = rng.uniform(-2, 2);
+  std::fill(g.begin(), g.begin() + 44, 0.0);
+  g[0 * 6 + river_cell::kStone] = 2;          // stone -> hidden 0
+  g[24 + river_cell::kResource * 4 + 0] = 3;  // hidden 0 -> resource's iota
+  g[24 + 0 * 4 + 0] = -3;                     // hidden 0 -> action
+  auto m = make_river_brain_model(RiverBrainDef{}, some_motif(), g);
+  EXPECT_TRUE(m.ok()) << m.error();
+  return *m;
+}
+
+TEST(RiverController, TakesTheGridTheCellCarryingAndFourSensorPoints) {
+  RiverController c(stone_model());
+  EXPECT_EQ(c.n_sensors(), 0);
+  EXPECT_EQ(c.n_effectors(), 12);
+  EXPECT_EQ(c.n_task_inputs(), 400 + 1 + 1 + 8);
+  EXPECT_EQ(c.n_task_outputs(), 1);
+  const RiverInputs& in = c.inputs();
+  EXPECT_EQ(in.here(), 400);
+  EXPECT_EQ(in.carrying(), 401);
+  EXPECT_EQ(in.sensors(), 402);
+}
+
+TEST(RiverController, DrivesItsBrainWithTheInputsInTheirOrder) {
+  const RiverBrainModel m = stone_model();
+  RiverController c(m);
+  auto s = c.make_state();
+  // before the first step: signals and action 0
+  for (double e : s->effectors()) EXPECT_EQ(e, 0);
+  EXPECT_EQ(s->task_outputs()[0], 0);
+
+  // a resource at (5, 7), the agent on a stone, carrying, sensors around (4.5, 6.5)
+  std::vector<double> in(static_cast<std::size_t>(c.n_task_inputs()), river_cell::kGrass);
+  std::vector<int> grid(400, river_cell::kGrass);
+  grid[7 * 20 + 5] = river_cell::kResource;
+  in[7 * 20 + 5] = river_cell::kResource;
+  in[400] = river_cell::kStone;
+  in[401] = 1;
+  const GridPoint points[4] = {{5.0, 6.5}, {4.5, 7.0}, {4.0, 6.5}, {4.5, 6.0}};
+  for (int k = 0; k < 4; ++k) {
+    in[static_cast<std::size_t>(402 + 2 * k)] = points[k].x;
+    in[static_cast<std::size_t>(403 + 2 * k)] = points[k].y;
+  }
+  // the same brain driven by hand
+  RiverBrain hand(m);
+  for (int step = 0; step < 3; ++step) {
+    s->step({}, in, 0.01);
+    hand.set_grid(grid);
+    hand.decide(river_cell::kStone, true);
+    hand.step(points, 0.01);
+    for (int j = 0; j < 12; ++j) ASSERT_DOUBLE_EQ(s->effectors()[j], 2 * hand.motors()[j] - 1) << j;
+  }
+  EXPECT_EQ(s->task_outputs()[0], -1);  // put down, as the genes say on a stone
+  EXPECT_EQ(hand.decision().iota[river_cell::kResource], 1);
+  // the landscape saw the resource: the sensor nearest it reads the most
+  EXPECT_GT(hand.pn().inputs()[0], 0);
+}
+
+}  // namespace
+}  // namespace bx
