@@ -81,6 +81,7 @@ void report(const CreatureModel& m, const EvalState& s, EvalResult& res) {
   res.fitness = score.fitness;
   res.distance = score.distance;
   res.target_miss = score.target_miss;
+  res.metrics = std::move(score.metrics);
 }
 
 EvalResult evaluate_once(const CreatureModel& m, const ControllerModel& controller, const SimConfig& given,

@@ -66,6 +66,8 @@ struct EvalResult {
   /// settled: once the creature rested), or -1: never (not kept in records)
   double throw_begin_time = 0;
   double target_miss = -1;  ///< throwing, aim: D_t (m), or -1
+  /// The task's own measures by name (TaskScore::metrics); the first trial's.
+  std::vector<Metric> metrics;
   double seconds = 0;       ///< simulated time
   long steps = 0;            ///< physics steps
   long brain_steps = 0;      ///< brain steps run (at SimConfig::brain_hz; not those the task had the brain wait)

@@ -51,6 +51,25 @@ T get(const json& j, const char* name) {
   }
 }
 
+// metrics as [[name, value], ...]: an array keeps the task's order
+json metrics_json(const std::vector<Metric>& metrics) {
+  json a = json::array();
+  for (const Metric& m : metrics) a.push_back(json::array({m.name, num(m.value)}));
+  return a;
+}
+
+std::vector<Metric> get_metrics(const json& j, const char* name) {
+  const json& a = field(j, name);
+  if (!a.is_array()) throw std::runtime_error(std::string(name) + " is not an array");
+  std::vector<Metric> out;
+  for (const json& m : a) {
+    if (!m.is_array() || m.size() != 2 || !m[0].is_string())
+      throw std::runtime_error(std::string(name) + " holds something other than [name, value]");
+    out.push_back({m[0].get<std::string>(), read_num(m[1], name)});
+  }
+  return out;
+}
+
 }  // namespace
 
 json job_to_json(const EvalJob& job) {
@@ -94,6 +113,7 @@ json outcome_to_json(const EvalOutcome& o) {
           {"distance", num(r.distance)},
           {"release_time", num(r.release_time)},
           {"target_miss", num(r.target_miss)},
+          {"metrics", metrics_json(r.metrics)},
           {"seconds", num(r.seconds)},
           {"steps", r.steps},
           {"brain_steps", r.brain_steps},
@@ -123,6 +143,7 @@ Result<EvalOutcome> outcome_from_json(const json& j) {
     r.distance = get_num(j, "distance");
     r.release_time = get_num(j, "release_time");
     r.target_miss = get_num(j, "target_miss");
+    r.metrics = get_metrics(j, "metrics");
     r.seconds = get_num(j, "seconds");
     r.steps = get<long>(j, "steps");
     r.brain_steps = get<long>(j, "brain_steps");

@@ -77,11 +77,21 @@ struct Scenario {
   double drop_height = 0;  ///< gap between the lowest part and the ground (m)
 };
 
+/// A quantity a task measured beside its fitness, by name (the river
+/// crossing's levels completed, food eaten): one channel for every task, so
+/// a new task's measures need no field of their own in the results.
+struct Metric {
+  std::string name;
+  double value = 0;
+  friend bool operator==(const Metric&, const Metric&) = default;
+};
+
 /// What an evaluation scored, read once the loop has ended.
 struct TaskScore {
   double fitness = 0;
   double distance = 0;       ///< m, by the task's metric (throwing: D_p)
   double target_miss = -1;   ///< throwing, aim: D_t (m), or -1
+  std::vector<Metric> metrics;  ///< the task's own measures, in the task's order
 };
 
 /// What a replay shows beside the creature.

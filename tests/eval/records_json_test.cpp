@@ -36,6 +36,11 @@ void expect_same(const EvalOutcome& a, const EvalOutcome& b) {
   EXPECT_TRUE(same_bits(x.distance, y.distance));
   EXPECT_TRUE(same_bits(x.release_time, y.release_time));
   EXPECT_TRUE(same_bits(x.target_miss, y.target_miss));
+  ASSERT_EQ(x.metrics.size(), y.metrics.size());
+  for (std::size_t i = 0; i < x.metrics.size(); ++i) {
+    EXPECT_EQ(x.metrics[i].name, y.metrics[i].name);
+    EXPECT_TRUE(same_bits(x.metrics[i].value, y.metrics[i].value)) << x.metrics[i].name;
+  }
   EXPECT_TRUE(same_bits(x.seconds, y.seconds));
   EXPECT_EQ(x.steps, y.steps);
   EXPECT_EQ(x.brain_steps, y.brain_steps);
@@ -63,6 +68,7 @@ TEST(OutcomeJson, EveryFieldRoundTripsBitForBit) {
   r.distance = -1e-300;
   r.release_time = 0.4999999999999999;
   r.target_miss = 12345.678901234567;
+  r.metrics = {{"levels completed", 3}, {"food eaten", 1.0 / 7.0}, {"a \"quoted\" name", -0.0}};
   r.seconds = 1.0 / 3.0;
   r.steps = 1L << 40;
   r.brain_steps = 7;
