@@ -1,13 +1,21 @@
 // The river crossing's quadruped (Stanton & Channon 2015, "Environment and
 // Physical Model"; docs/rivercrossing.md, "The quadruped"): the body as the
-// paper gives it.
+// paper gives it, and, in real ODE physics with the paper's PD motors, that it
+// stands on mid-range targets and comes to rest under constant ones. The
+// QuadrupedScale tests are the measurements behind the unit and density.
 #include "task/river/quadruped.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 #include <string>
+#include <vector>
+
+#include "core/rng.h"
+#include "eval/check.h"  // kRestTravel: the rest law's bound
+#include "physics/world.h"
 
 namespace bx {
 namespace {
@@ -167,6 +175,219 @@ TEST(Quadruped, PhysicsAndMotorsAreThePapers) {
   // the defaults' weight and inertia products (QuadrupedDef)
   EXPECT_NEAR(def.density * std::pow(def.unit, 4), 0.1, 1e-12);
   EXPECT_NEAR(def.density * std::pow(def.unit, 5), 4, 1e-12);
+}
+
+// ---- in physics ----------------------------------------------------------
+
+// what a drop measured, lengths in cell widths
+struct Outcome {
+  std::string failure;       // check_explosion's first message
+  double torso_z = 0;        // torso's centre at the end
+  double lowest_torso = 0;   // torso's centre, lowest from `stand_from` on
+  double tilt = 0;           // largest angle of the torso's z from the vertical, from `stand_from` on
+  double travel = 0;         // centre of mass, from `mark` to the end
+  double speed = 0;          // fastest part over the last `still` seconds (u/s)
+  double rate = 0;           // fastest joint over the last `still` seconds (rad/s)
+  double gap = 0;            // joints' largest gap, whole run
+};
+
+struct Schedule {
+  double seconds = 20;
+  double mark = 10;
+  double still = 5;
+  double stand_from = 2;
+};
+
+// the quadruped dropped flat, its feet 0.01 u above the ground, every
+// effector held at its signal from the first step
+Outcome drop(const QuadrupedDef& def, const PhysicsDef& physics, std::span<const double> signals,
+             const Schedule& sch = {}) {
+  const double u = def.unit;
+  const CreatureModel m = make_quadruped(def);
+  World w(physics);
+  w.add_creature(m, {{0, 0, quadruped_foot_depth(def) + 0.01 * u}, Mat3::identity()});
+  const MotorDef motor = river_motor();
+  Outcome o;
+  o.lowest_torso = 1e300;
+  Vec3 mark = w.centre_of_mass();
+  const int steps = static_cast<int>(std::lround(sch.seconds / physics.dt));
+  for (int i = 1; i <= steps; ++i) {
+    w.apply_effectors(m, motor, signals);
+    w.step();
+    if (o.failure.empty()) o.failure = w.check_explosion();
+    if (!std::isfinite(w.part_pose(kTorso).p.z)) break;
+    const double t = i * physics.dt;
+    if (std::abs(t - sch.mark) < physics.dt / 2) mark = w.centre_of_mass();
+    const Pose torso = w.part_pose(kTorso);
+    if (t >= sch.stand_from) {
+      o.lowest_torso = std::min(o.lowest_torso, torso.p.z / u);
+      o.tilt = std::max(o.tilt, std::acos(std::clamp(torso.R.m[2][2], -1.0, 1.0)));
+    }
+    if (t > sch.seconds - sch.still) {
+      for (int p = 0; p < m.n_parts(); ++p) o.speed = std::max(o.speed, norm(w.part_velocity(p)) / u);
+      for (const EffectorModel& e : m.effectors) o.rate = std::max(o.rate, std::abs(w.joint_rate(e.joint, e.dof)));
+    }
+  }
+  o.torso_z = w.part_pose(kTorso).p.z / u;
+  o.travel = norm(w.centre_of_mass() - mark) / u;
+  o.gap = w.stats().max_joint_gap / u;
+  return o;
+}
+
+std::vector<double> all(double s) { return std::vector<double>(kQuadrupedEffectors, s); }
+
+// Standing: the torso's centre above this (u). The pose built has it at 0.525
+// u (0.1 u of torso, then 0.425 u of leg below it); a body that has sunk onto
+// its limbs has it at 0.2 u or less (the level upper limbs hang 0.1 u below
+// the torso's bottom). Measured: 0.485.
+constexpr double kStanding = 0.4;
+
+TEST(Quadruped, TheBuiltPoseIsMidRangeAndPositiveLowersALimb) {
+  // the torso held in the air, no gravity: each limb goes where its targets say
+  const QuadrupedDef def;
+  const double u = def.unit;
+  const CreatureModel m = make_quadruped(def);
+  PhysicsDef physics = river_physics(def);
+  physics.gravity = 0;
+  auto pose_at = [&](std::vector<double> signals) {
+    World w(physics);
+    w.add_creature(m, {{0, 0, 10 * u}, Mat3::identity()});
+    w.fix_part_to_world(kTorso);
+    for (int i = 0; i < 1000; ++i) {
+      w.apply_effectors(m, river_motor(), signals);
+      w.step();
+    }
+    std::vector<Pose> poses;
+    for (int p = 0; p < m.n_parts(); ++p) poses.push_back(w.part_pose(p));
+    std::vector<double> angles;
+    for (const EffectorModel& e : m.effectors) angles.push_back(w.joint_position(e.joint, e.dof));
+    return std::pair{poses, angles};
+  };
+  const Vec3 down{0, 0, -1};
+  // 0: the pose built, every angle 0
+  {
+    auto [poses, angles] = pose_at(all(0));
+    for (int e = 0; e < kQuadrupedEffectors; ++e) EXPECT_NEAR(angles[e], 0, 1e-6) << e;
+    for (int leg = 0; leg < kLegs; ++leg)
+      expect_near(poses[upper_limb(leg)].R.column(0), out_of(leg), 1e-6, "upper limb level");
+  }
+  // +1: upper limbs straight down, lower limbs at a right angle, pointing in
+  {
+    auto [poses, angles] = pose_at(all(1));
+    for (int leg = 0; leg < kLegs; ++leg) {
+      EXPECT_NEAR(angles[3 * leg + 1], kPi / 2, 1e-3) << leg;
+      EXPECT_NEAR(angles[3 * leg + 2], kPi / 4, 1e-3) << leg;
+      EXPECT_NEAR(dot(poses[upper_limb(leg)].R.column(0), down), 1, 1e-3) << leg;
+      EXPECT_LT(poses[lower_limb(leg)].R.column(0).z, 1e-3) << leg;
+      EXPECT_GT(poses[lower_limb(leg)].R.column(0).z, -1e-3) << leg;
+    }
+  }
+  // -1: upper limbs straight up, lower limbs straight on
+  {
+    auto [poses, angles] = pose_at(all(-1));
+    for (int leg = 0; leg < kLegs; ++leg) {
+      EXPECT_NEAR(dot(poses[upper_limb(leg)].R.column(0), -1.0 * down), 1, 1e-3) << leg;
+      EXPECT_NEAR(dot(poses[lower_limb(leg)].R.column(0), -1.0 * down), 1, 1e-3) << leg;
+    }
+  }
+  // leg 0's yaw at +1 alone: it turns clockwise seen from above, onto +x
+  {
+    std::vector<double> s = all(0);
+    s[0] = 1;
+    auto [poses, angles] = pose_at(s);
+    expect_near(poses[upper_limb(0)].R.column(0), {1, 0, 0}, 1e-3, "leg 0 turned to +x");
+  }
+}
+
+TEST(Quadruped, StandsOnMidRangeTargetsAndComesToRest) {
+  const QuadrupedDef def;
+  Outcome o = drop(def, river_physics(def), all(0));
+  EXPECT_EQ(o.failure, "");
+  EXPECT_GT(o.lowest_torso, kStanding);  // measured 0.485
+  EXPECT_LT(o.tilt, 0.01);               // level (symmetric): measured 0
+  // at rest: in the last 5 of 20 s every part below 1e-5 u/s and every joint
+  // below 1e-5 rad/s; the centre moves less than 1e-5 u in the last 10 s
+  // (measured 2e-9 u/s, 2e-9 rad/s, 2e-8 u)
+  EXPECT_LT(o.speed, 1e-5);
+  EXPECT_LT(o.rate, 1e-5);
+  EXPECT_LT(o.travel, 1e-5);
+  EXPECT_LT(o.gap, 1e-3);  // measured 1e-6 u
+}
+
+TEST(Quadruped, ComesToRestUnderConstantTargetsOffTheMiddle) {
+  // every effector at -1, -0.5, 0.5, 1, then 8 patterns of 12 signals drawn
+  // uniformly in [-1, 1]; under both friction bounds. This light, slow body
+  // (gravity's time scale sqrt(u / g) is 2 s) settles within 40 s where the
+  // rest law's creatures take 5: measured from 40 to 60 s, at the rest law's
+  // bound (kRestTravel of the body length; docs/physics.md)
+  const QuadrupedDef def;
+  const double bound = kRestTravel * make_quadruped(def).body_length() / def.unit;  // 0.049 u
+  std::vector<std::vector<double>> patterns = {all(-1), all(-0.5), all(0.5), all(1)};
+  for (std::uint64_t seed = 1; seed <= 8; ++seed) {
+    Rng rng(seed);
+    std::vector<double> s(kQuadrupedEffectors);
+    for (double& x : s) x = rng.uniform(-1, 1);
+    patterns.push_back(s);
+  }
+  const Schedule sch{60, 40, 5, 2};
+  for (FrictionBound fb : {FrictionBound::Lagged, FrictionBound::Ode}) {
+    PhysicsDef physics = river_physics(def);
+    physics.friction_bound = fb;
+    for (std::size_t k = 0; k < patterns.size(); ++k) {
+      const std::string what = "pattern " + std::to_string(k) + (fb == FrictionBound::Ode ? " (ode)" : " (lagged)");
+      Outcome o = drop(def, physics, patterns[k], sch);
+      EXPECT_EQ(o.failure, "") << what;
+      EXPECT_LT(o.travel, bound) << what;  // measured at most 0.013 u
+      EXPECT_LT(o.gap, 0.01) << what;      // measured at most 5e-4 u
+    }
+  }
+}
+
+// ---- the unit and density (docs/rivercrossing.md, "Unit and density") ----
+
+TEST(QuadrupedScale, AtOneMetreAndDensityOneItSinksOntoItsLimbs) {
+  // ODE's usual density and a 1 m cell: 0.36 kg, 1 kg m of weight product;
+  // the hips would need 0.57 N m to hold it, 2.3 rad of ks's error
+  const QuadrupedDef def{1, 1};
+  Outcome o = drop(def, river_physics(def), all(0));
+  EXPECT_EQ(o.failure, "");
+  EXPECT_LT(o.torso_z, 0.25);  // measured 0.178
+}
+
+TEST(QuadrupedScale, FourTimesDenserItSinksOntoItsLimbs) {
+  QuadrupedDef def;
+  def.density *= 4;  // 0.4 kg m
+  Outcome o = drop(def, river_physics(def), all(0));
+  EXPECT_EQ(o.failure, "");
+  EXPECT_LT(o.torso_z, 0.25);  // measured 0.191
+  def.density /= 2;            // 0.2 kg m: still stands
+  EXPECT_GT(drop(def, river_physics(def), all(0)).lowest_torso, kStanding);  // measured 0.442
+}
+
+TEST(QuadrupedScale, LimbsOfTooLittleInertiaShakeItApart) {
+  // the same weight product (0.1 kg m) at a quarter and half the cell: 1 and
+  // 2 kg m^2 of inertia product. kd's explicit torque then overshoots within
+  // a step: at 1 kg m^2 mid-range targets tear it, at 2 those of the legs
+  // folded up over the torso (-1)
+  const QuadrupedDef quarter{10, 1e-5};
+  EXPECT_NE(drop(quarter, river_physics(quarter), all(0)).failure, "");
+  const QuadrupedDef half{20, 6.25e-7};
+  EXPECT_EQ(drop(half, river_physics(half), all(0)).failure, "");
+  EXPECT_NE(drop(half, river_physics(half), all(-1)).failure, "");
+  const QuadrupedDef chosen;
+  EXPECT_EQ(drop(chosen, river_physics(chosen), all(-1)).failure, "");
+}
+
+TEST(QuadrupedScale, AOneMetreCellInAFortiethOfEarthsGravityStandsTheSame) {
+  // only density x unit^4 x g and density x unit^5 matter: both the same
+  const QuadrupedDef chosen;
+  const QuadrupedDef metre{1, 4};
+  PhysicsDef low = river_physics(metre);
+  low.gravity = -9.81 / 40;
+  const Outcome a = drop(chosen, river_physics(chosen), all(0));
+  const Outcome b = drop(metre, low, all(0));
+  EXPECT_EQ(b.failure, "");
+  EXPECT_NEAR(a.torso_z, b.torso_z, 0.005);  // measured 0.4855 and 0.4857
 }
 
 }  // namespace
