@@ -367,8 +367,8 @@ TEST(QuadrupedScale, FourTimesDenserItSinksOntoItsLimbs) {
 TEST(QuadrupedScale, LimbsOfTooLittleInertiaShakeItApart) {
   // the same weight product (0.1 kg m) at a quarter and half the cell: 1 and
   // 2 kg m^2 of inertia product. kd's explicit torque then overshoots within
-  // a step: at 1 kg m^2 mid-range targets tear it, at 2 those of the legs
-  // folded up over the torso (-1)
+  // a step: at 1 kg m^2 mid-range targets tear it, at 2 those of every leg
+  // pointing straight up (-1)
   const QuadrupedDef quarter{10, 1e-5};
   EXPECT_NE(drop(quarter, river_physics(quarter), all(0)).failure, "");
   const QuadrupedDef half{20, 6.25e-7};
