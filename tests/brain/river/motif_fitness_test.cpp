@@ -1,14 +1,19 @@
 // The motif's fitness: the transform against sines of known power, the
-// formula against hand-built signals, the gene decoding's order and ranges.
+// formula against hand-built signals, the gene decoding's order and ranges,
+// and a motif found by motif_search_test.cpp's search that oscillates at
+// 1 Hz under input and rests without.
 #include "brain/river/motif_fitness.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
 #include <string>
 #include <vector>
+
+#include "core/rng.h"
 
 namespace bx {
 namespace {
@@ -242,6 +247,61 @@ TEST(MotifGenes, ErrorsNameTheCountsGeneAndField) {
   d = MotifGeneDef{};
   d.weight_max = 0;
   EXPECT_NE(check_motif_gene_def(d).error().find("weight_max is 0"), std::string::npos);
+}
+
+// The motif motif_search_test.cpp's search found (seed 20150720, population
+// 1000, 10^6 tournaments of 3; fitness 0.899), decoded from its genes and
+// printed to full precision: the preliminary motif of docs/rivercrossing.md
+// ("The motif's fitness").
+Motif found_motif() {
+  Motif m;
+  m.w = {{{-0.78630925075382407, 3.6669557859373043, -4.7247363080404803},
+          {-8.8162795527556366, 12.705745667407337, -7.2059718682943936},
+          {15.864952637365167, 2.5488696262760624, -3.6057886851183731}}};
+  m.tau = {1.7837384832752037, 0.39452987811361484, 0.19103254352260157};
+  m.alpha = {-0.065087467485112405, -10.369384569603891, -2.148256443495506};
+  m.input = 0;
+  m.output = 2;
+  return m;
+}
+
+TEST(MotifFitness, FoundMotifOscillatesAtOneHertzUnderInputAndRestsWithout) {
+  const Motif m = found_motif();
+  ASSERT_TRUE(check_motif(m).ok());
+  const MotifScore s = score_motif(m, MotifFitnessDef{});
+  ASSERT_TRUE(s.finite);
+  EXPECT_NEAR(s.dominant_hz, 1, 0.1);
+  // a full oscillation: at least the reference's power at 1 Hz, little elsewhere
+  EXPECT_GT(s.target_power, 0.11);
+  EXPECT_LT(s.other_power, 0.02);
+  // without input it rings down from rest to a fixed point: a small range
+  // over the whole run, almost none over the last second
+  EXPECT_LT(s.quiet_range, 0.1);
+  const std::vector<double> quiet = motif_trace(m, 0, 10, 0.01);
+  const auto [lo, hi] = std::minmax_element(quiet.end() - 100, quiet.end());
+  EXPECT_LT(*hi - *lo, 1e-3);
+  EXPECT_GT(s.fitness, 0.85);
+  EXPECT_EQ(motif_fitness(m, MotifFitnessDef{}), s.fitness);
+}
+
+TEST(MotifFitness, FoundMotifBeatsZeroAndRandomMotifs) {
+  const double found = motif_fitness(found_motif(), MotifFitnessDef{});
+  Motif zero;
+  zero.output = 2;
+  EXPECT_GT(found, motif_fitness(zero, MotifFitnessDef{}));
+  // the best of 100 random motifs, drawn as the search's first population
+  Rng rng(7);
+  double best_random = 0;
+  for (int r = 0; r < 100; ++r) {
+    std::vector<double> g(kMotifGenes);
+    for (double& x : g) x = rng.uniform(-1, 1);
+    const Motif m = *motif_from_genes(g, MotifGeneDef{});
+    const MotifScore s = score_motif(m, MotifFitnessDef{});
+    EXPECT_EQ(motif_fitness(m, MotifFitnessDef{}), s.fitness);
+    best_random = std::max(best_random, s.fitness);
+  }
+  EXPECT_GT(found, best_random);
+  EXPECT_LT(best_random, 0.1);
 }
 
 }  // namespace
