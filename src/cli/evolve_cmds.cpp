@@ -98,8 +98,11 @@ int cmd_run(const RunArgs& a) {
     for (int k = 2; fs::exists(dir); ++k) dir = "runs/" + src->first + "-" + timestamp() + "-" + std::to_string(k);
   }
   if (Status s = create_run(dir, *cfg, src->second, a.config, a.seed); !s) return fail(s.error());
-  if (!a.quiet) std::printf("run %s: %s, seed %llu, %d workers -> %s\n", src->first.c_str(),
-                            std::string(to_string(cfg->dialect)).c_str(),
+  // what it evolves: a graph genome's dialect, or another creature kind's name
+  const std::string what = cfg->sim.creature == CreatureKind::Graph
+                               ? std::string(to_string(cfg->dialect))
+                               : std::string(creature_kind_row(cfg->sim.creature).name) + " creatures";
+  if (!a.quiet) std::printf("run %s: %s, seed %llu, %d workers -> %s\n", src->first.c_str(), what.c_str(),
                             static_cast<unsigned long long>(a.seed), a.workers, dir.c_str());
   catch_interrupts(dir);
   return finish(dir, drive_run(dir, {a.workers, a.quiet, a.stop_after}));

@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "brain/river/river_controller.h"
 #include "develop/develop.h"
 #include "genome/graph_genotype.h"
 
@@ -15,9 +16,51 @@ Result<Creature> develop_graph(const Genotype& g, const SimConfig& cfg) {
   return graph_creature(std::move(*dev.model));
 }
 
+// the river crossing: its quadruped, built in code, driven by the hybrid
+// controller whose weights are the genes
+Result<Creature> develop_river(const Genotype& g, const SimConfig& cfg) {
+  const RiverDef& r = cfg.river;
+  if (Status s = check_quadruped_def(r.body); !s) return Error{s.error()};
+  auto model = make_river_brain_model(r.brain, r.motif, static_cast<const FloatVector&>(g).genes);
+  if (!model) return Error{model.error()};
+  Creature c;
+  c.body = std::make_unique<const CreatureModel>(make_quadruped(r.body));
+  c.controller = std::make_unique<RiverController>(std::move(*model));
+  return c;
+}
+
+FloatVectorDef river_genes(const SimConfig& cfg) {
+  const RiverDef& r = cfg.river;
+  return {river_gene_count(r.brain.shape), -r.gene_range, r.gene_range, r.gene_sigma};
+}
+
+std::vector<SimField> river_fields() {
+  auto motif_row = [](int i) -> std::function<void*(SimConfig&)> {
+    return [i](SimConfig& c) -> void* { return &c.river.motif.w[static_cast<std::size_t>(i)]; };
+  };
+  return {
+      {"river", "unit", SimField::Real, 1e-6, 1e6, {}, [](SimConfig& c) -> void* { return &c.river.body.unit; }, "river crossing: a cell's width, the quadruped's length unit (m)"},
+      {"river", "density", SimField::Real, 1e-12, 1e6, {}, [](SimConfig& c) -> void* { return &c.river.body.density; }, "river crossing: the quadruped's parts' density (kg/m^3)"},
+      {"river", "pn_hidden", SimField::Int, 1, 1000, {}, [](SimConfig& c) -> void* { return &c.river.brain.shape.pn_hidden; }, "river crossing: the physical network's hidden neurons (the paper is silent)"},
+      {"river", "sweeps", SimField::Int, 0, 100000, {}, [](SimConfig& c) -> void* { return &c.river.brain.landscape.sweeps; }, "river crossing: shunting model iterations from zero (eq. 3)"},
+      {"river", "max_activity", SimField::Real, 1e-6, 1e6, {}, [](SimConfig& c) -> void* { return &c.river.brain.landscape.max_activity; }, "river crossing: maxI, the shunting model's cap"},
+      {"river", "iota_scale", SimField::Real, 1e-6, 1e6, {}, [](SimConfig& c) -> void* { return &c.river.brain.landscape.iota_scale; }, "river crossing: a cell's input is its kind's iota (-1, 0, 1) times this"},
+      {"river", "gene_range", SimField::Real, 1e-6, 1e6, {}, [](SimConfig& c) -> void* { return &c.river.gene_range; }, "river crossing: every weight stays in [-gene_range, gene_range]"},
+      {"river", "gene_sigma", SimField::Real, 0, 1e6, {}, [](SimConfig& c) -> void* { return &c.river.gene_sigma; }, "river crossing: a mutated weight moves by N(0, gene_sigma)"},
+      {"motif", "w0", SimField::Triple, -1e6, 1e6, {}, motif_row(0), "river crossing's CTRNN motif: weights into neuron 0 from neurons 0, 1, 2 (eq. 5)"},
+      {"motif", "w1", SimField::Triple, -1e6, 1e6, {}, motif_row(1), "... into neuron 1"},
+      {"motif", "w2", SimField::Triple, -1e6, 1e6, {}, motif_row(2), "... into neuron 2"},
+      {"motif", "tau", SimField::Triple, 1e-6, 1e6, {}, [](SimConfig& c) -> void* { return &c.river.motif.tau; }, "... time constants (s)"},
+      {"motif", "alpha", SimField::Triple, -1e6, 1e6, {}, [](SimConfig& c) -> void* { return &c.river.motif.alpha; }, "... biases (eq. 6)"},
+      {"motif", "input", SimField::Int, 0, 2, {}, [](SimConfig& c) -> void* { return &c.river.motif.input; }, "... the neuron that takes the physical network's drive"},
+      {"motif", "output", SimField::Int, 0, 2, {}, [](SimConfig& c) -> void* { return &c.river.motif.output; }, "... the neuron the motor neurons read"},
+  };
+}
+
 // one row per CreatureKind, in its order
 const CreatureKindRow kKinds[] = {
-    {CreatureKind::Graph, "graph", GraphGenotype::kKind, develop_graph},
+    {CreatureKind::Graph, "graph", GraphGenotype::kKind, develop_graph, nullptr, nullptr},
+    {CreatureKind::River, "river", "floats", develop_river, river_genes, river_fields},
 };
 
 }  // namespace
@@ -27,6 +70,14 @@ const CreatureKindRow& creature_kind_row(CreatureKind kind) { return kKinds[stat
 std::vector<std::string_view> creature_kind_names() {
   std::vector<std::string_view> out;
   for (const CreatureKindRow& r : kKinds) out.push_back(r.name);
+  return out;
+}
+
+std::vector<SimField> creature_fields() {
+  std::vector<SimField> out;
+  for (const CreatureKindRow& r : kKinds)
+    if (r.fields)
+      for (SimField& f : r.fields()) out.push_back(std::move(f));
   return out;
 }
 

@@ -14,6 +14,8 @@
 #include "core/result.h"
 #include "develop/creature_model.h"
 #include "eval/sim_config.h"
+#include "eval/sim_field.h"
+#include "genome/float_vector.h"
 #include "genome/genotype.h"
 
 namespace bx {
@@ -33,12 +35,19 @@ struct CreatureKindRow {
   /// The creature, or why the genotype is not viable (a value, never an
   /// exception); the genotype is of genotype_kind.
   Result<Creature> (*develop)(const Genotype&, const SimConfig&);
+  /// A float-vector kind's genes: their count, box and mutation (the run
+  /// breeds them with FloatVectorOps); null for a kind of other genotypes.
+  FloatVectorDef (*float_genes)(const SimConfig&);
+  /// The config keys it brings (none: its keys are the reader's own).
+  std::vector<SimField> (*fields)();
 };
 
 /// The row of a kind.
 const CreatureKindRow& creature_kind_row(CreatureKind kind);
 /// Every kind's name, in CreatureKind's order (the config's choices).
 std::vector<std::string_view> creature_kind_names();
+/// Every row's own config keys, in the table's order.
+std::vector<SimField> creature_fields();
 
 /// Develops a genotype into cfg.creature's creature: its body and
 /// controller, or why it is not viable (a genotype of another kind than

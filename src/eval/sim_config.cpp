@@ -1,5 +1,7 @@
 #include "eval/sim_config.h"
 
+#include "eval/task_table.h"
+
 namespace bx {
 
 SimConfig default_sim_config(Dialect d) {
@@ -86,16 +88,10 @@ SimConfig default_sim_config(const Genome& g) {
   return c;
 }
 
-double& task_seconds(SimConfig& c) {
-  return c.task_kind == TaskKind::Throwing ? c.throwing.seconds : c.task.seconds;
-}
+double& task_seconds(SimConfig& c) { return task_row(c.task_kind).seconds(c); }
 
-double task_drop_height(const SimConfig& c) {
-  return c.task_kind == TaskKind::Throwing ? c.throwing.drop_height : c.task.drop_height;
-}
+double task_drop_height(const SimConfig& c) { return task_row(c.task_kind).drop_height(c); }
 
-const char* task_drop_height_key(const SimConfig& c) {
-  return c.task_kind == TaskKind::Throwing ? "throwing.drop_height" : "task.drop_height";
-}
+std::string_view task_drop_height_key(const SimConfig& c) { return task_row(c.task_kind).drop_height_key; }
 
 }  // namespace bx

@@ -2,12 +2,14 @@
 // each dialect's paper constants as defaults.
 #pragma once
 
+#include <string_view>
 #include <vector>
 
 #include "develop/develop.h"
 #include "genome/genome.h"
 #include "physics/physics_def.h"
 #include "task/locomotion.h"
+#include "task/river/river_def.h"
 #include "task/throwing.h"
 
 namespace bx {
@@ -16,12 +18,14 @@ namespace bx {
 enum class TaskKind {
   Locomotion,  ///< SimConfig::task
   Throwing,    ///< SimConfig::throwing (catapults, chaumont2007 section 4)
+  River,       ///< SimConfig::river's task (the river crossing; its quadruped only)
 };
 
 /// What a genotype develops into: a body and its controller (eval/creature.h,
 /// whose table says each kind's genotype and development).
 enum class CreatureKind {
   Graph,  ///< Sims' graph genome: it grows its body and compiles its own brain
+  River,  ///< a float vector: the river crossing's controller weights, driving its quadruped
 };
 
 /// How several trials' fitnesses combine (SimConfig::trial_score).
@@ -41,6 +45,7 @@ struct SimConfig {
   TaskKind task_kind = TaskKind::Locomotion;
   LocomotionDef task;
   ThrowingDef throwing;
+  RiverDef river;  ///< the river crossing's creature and task
   /// Evaluations per creature under different physics seeds; its fitness is
   /// their mean (QuickStep's randomised solver makes a chaotic motion, such
   /// as a throw, depend on the seed).
@@ -90,6 +95,6 @@ double& task_seconds(SimConfig& c);
 /// The active task's drop height (m) and its key: task.drop_height or
 /// throwing.drop_height.
 double task_drop_height(const SimConfig& c);
-const char* task_drop_height_key(const SimConfig& c);
+std::string_view task_drop_height_key(const SimConfig& c);
 
 }  // namespace bx

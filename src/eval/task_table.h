@@ -1,7 +1,8 @@
 // The task table: one row per task kind (config task.kind), saying how to
-// make the kind's Task for one trial of one creature. A new task is a new
-// row here and its own files in src/task/; the loop (step.h) and
-// evaluation (evaluate.h) stay as they are.
+// make the kind's Task for one trial of one creature, its length and drop,
+// and the config keys it brings. A new task is a new row here and its own
+// files in src/task/; the loop (step.h), evaluation (evaluate.h) and the
+// config reader stay as they are.
 #pragma once
 
 #include <cstdint>
@@ -12,6 +13,7 @@
 #include "core/result.h"
 #include "develop/creature_model.h"
 #include "eval/sim_config.h"
+#include "eval/sim_field.h"
 #include "task/task.h"
 
 namespace bx {
@@ -23,12 +25,20 @@ struct TaskRow {
   /// The task of one trial, whose physics seed is `seed` (a task may draw
   /// its layout from it), or why this creature cannot have it.
   Result<std::unique_ptr<Task>> (*make)(const CreatureModel&, const SimConfig&, std::uint64_t seed);
+  /// Its evaluation's length (s) and drop height (m) in a config, and their keys.
+  double& (*seconds)(SimConfig&);
+  double (*drop_height)(const SimConfig&);
+  std::string_view seconds_key, drop_height_key;
+  /// The config keys it brings (none: its keys are the reader's own).
+  std::vector<SimField> (*fields)();
 };
 
 /// The row of a kind.
 const TaskRow& task_row(TaskKind kind);
 /// Every kind's name, in TaskKind's order (the config's choices).
 std::vector<std::string_view> task_kind_names();
+/// Every row's own config keys, in the table's order.
+std::vector<SimField> task_fields();
 
 /// The task of cfg.task_kind for this creature's trial of physics seed
 /// `seed`, or why it cannot have it (throwing needs a catapult).

@@ -2,6 +2,8 @@
 
 #include <toml++/toml.h>
 
+#include <algorithm>
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <functional>
@@ -22,21 +24,45 @@ namespace {
 struct Field {
   std::string_view section;
   std::string_view key;
-  enum Kind { Real, Int, Long, Bool, Choice, Vec } kind;
+  enum Kind { Real, Int, Long, Bool, Choice, Vec, Triple } kind;  // Triple: std::array<double, 3>
   double lo, hi;                                  // inclusive range (Real, Int, each of Vec's)
   std::vector<std::string_view> choices;          // Choice: names, by enum value
   std::function<void*(RunConfig&)> at;            // the field's address
   std::string_view doc;                           // one line for docs/config.md
 };
 
+Vec3 triple(void* p) {
+  const auto& a = *static_cast<std::array<double, 3>*>(p);
+  return {a[0], a[1], a[2]};
+}
+
 template <class E>
 E& as_enum(void* p) {
   return *static_cast<E*>(p);
 }
 
+// the reader's own keys, then those the task and creature tables bring
+// (eval/task_table.h, eval/creature.h), each table's sections together
+std::vector<Field> with_table_fields(std::vector<Field> own) {
+  std::vector<SimField> table = task_fields();
+  for (SimField& f : creature_fields()) table.push_back(std::move(f));
+  // sections in the order they first appear, each with all its keys (a
+  // section written twice would not be valid TOML)
+  std::vector<std::string_view> sections;
+  for (const SimField& f : table)
+    if (std::find(sections.begin(), sections.end(), f.section) == sections.end()) sections.push_back(f.section);
+  static constexpr Field::Kind kinds[] = {Field::Real, Field::Int, Field::Choice, Field::Triple};
+  for (std::string_view sec : sections)
+    for (const SimField& f : table)
+      if (f.section == sec)
+        own.push_back({f.section, f.key, kinds[f.kind], f.lo, f.hi, f.choices,
+                       [at = f.at](RunConfig& c) -> void* { return at(c.sim); }, f.doc});
+  return own;
+}
+
 const std::vector<Field>& fields() {
   constexpr double inf = 1e300;
-  static const std::vector<Field> f = {
+  static const std::vector<Field> f = with_table_fields({
       {"physics", "dt", Field::Real, 1e-5, 1, {}, [](RunConfig& c) -> void* { return &c.sim.physics.dt; }, "physics step (s)"},
       {"physics", "gravity", Field::Real, -inf, inf, {}, [](RunConfig& c) -> void* { return &c.sim.physics.gravity; }, "gravity along z (m/s^2)"},
       {"physics", "erp", Field::Real, 0, 1, {}, [](RunConfig& c) -> void* { return &c.sim.physics.erp; }, "ODE error reduction parameter"},
@@ -60,7 +86,7 @@ const std::vector<Field>& fields() {
       {"physics", "fudge_factor", Field::Real, 0, 1, {}, [](RunConfig& c) -> void* { return &c.sim.physics.fudge_factor; }, "share of a motor's force allowed at a joint stop (ODE's dParamFudgeFactor)"},
       {"physics", "contact_max_correcting_vel", Field::Real, 0, 1e6, {}, [](RunConfig& c) -> void* { return &c.sim.physics.contact_max_correcting_vel; }, "fastest depenetration of contacts (m/s; 0: unbounded)"},
       {"physics", "contact_surface_layer", Field::Real, 0, 1, {}, [](RunConfig& c) -> void* { return &c.sim.physics.contact_surface_layer; }, "depth contacts may sink before they push back (m)"},
-      {"motor", "model", Field::Choice, 0, 0, {"servo", "saturation", "torque", "pd"}, [](RunConfig& c) -> void* { return &c.sim.motor.model; }, "servo (miconi2006), saturation (chaumont2007 5.3), torque (sims1994), pd (rivercrossing)"},
+      {"motor", "model", Field::Choice, 0, 0, {"servo", "saturation", "torque", "pd"}, [](RunConfig& c) -> void* { return &c.sim.motor.model; }, "servo (miconi2006), saturation (chaumont2007 5.3), torque (sims1994), pd (a spring and damper towards a target angle: kp, kd)"},
       {"motor", "max_speed", Field::Real, 0, inf, {}, [](RunConfig& c) -> void* { return &c.sim.motor.max_speed; }, "servo: target speed at signal 1; saturation: the fixed high target speed (rad/s or m/s)"},
       {"motor", "max_force", Field::Real, 0, inf, {}, [](RunConfig& c) -> void* { return &c.sim.motor.max_force; }, "servo: torque cap (N m or N)"},
       {"motor", "off_brake", Field::Real, 0, 1, {}, [](RunConfig& c) -> void* { return &c.sim.motor.off_brake; }, "while the task holds the controller off (settling), each motor brakes its joint with this share of its full force (a joint's friction; 0: limp, frictionless)"},
@@ -86,7 +112,7 @@ const std::vector<Field>& fields() {
       {"task", "settle_timeout", Field::Real, 0, 1e4, {}, [](RunConfig& c) -> void* { return &c.sim.task.settle.timeout; }, "never settled within this (s): fitness 0"},
       {"task", "burst_seconds", Field::Real, 0, 1e4, {}, [](RunConfig& c) -> void* { return &c.sim.task.burst_seconds; }, "the first controller activation (s)"},
       {"task", "kappa", Field::Real, 0, 10, {}, [](RunConfig& c) -> void* { return &c.sim.task.kappa; }, "eq. 1's reward per block"},
-      {"task", "kind", Field::Choice, 0, 0, task_kind_names(), [](RunConfig& c) -> void* { return &c.sim.task_kind; }, "locomotion (the [task] keys) or throwing (the [throwing] keys; needs catapults)"},
+      {"task", "kind", Field::Choice, 0, 0, task_kind_names(), [](RunConfig& c) -> void* { return &c.sim.task_kind; }, "locomotion (the [task] keys), throwing (the [throwing] keys; needs catapults), or a task with keys of its own (docs/config.md)"},
       {"task", "trials", Field::Int, 1, 1000, {}, [](RunConfig& c) -> void* { return &c.sim.trials; }, "evaluations per creature under different physics seeds; fitness is their mean (task.trial_score)"},
       {"task", "trial_score", Field::Choice, 0, 0, {"mean", "min"}, [](RunConfig& c) -> void* { return &c.sim.trial_score; }, "how trials make the fitness: their mean, or the least of them (robust to luck); an elite's repeated evaluations (evolution.elite_evaluations) fold the same way"},
       {"task", "start_yaw_jitter", Field::Real, 0, 180, {}, [](RunConfig& c) -> void* { return &c.sim.start_yaw_jitter; }, "each physics seed turns the start by up to this (degrees) about the vertical"},
@@ -103,7 +129,7 @@ const std::vector<Field>& fields() {
       {"throwing", "touch_seconds", Field::Real, -1, 1e4, {}, [](RunConfig& c) -> void* { return &c.sim.throwing.touch_seconds; }, "after the release the creature may touch its projectile for this long (s); a later touch ends the throw where the projectile is (negative: no limit)"},
       {"throwing", "settle_timeout", Field::Real, 0, 1e4, {}, [](RunConfig& c) -> void* { return &c.sim.throwing.settle.timeout; }, "never settled within this (s): fitness 0"},
       {"replay", "fps", Field::Real, 1e-3, 1e4, {}, [](RunConfig& c) -> void* { return &c.sim.replay_fps; }, "replay frames per simulated second"},
-      {"genotype", "kind", Field::Choice, 0, 0, creature_kind_names(), [](RunConfig& c) -> void* { return &c.sim.creature; }, "what a genotype develops into, body and controller: graph (Sims' graph genome, of genome.dialect: it grows its body and brain)"},
+      {"genotype", "kind", Field::Choice, 0, 0, creature_kind_names(), [](RunConfig& c) -> void* { return &c.sim.creature; }, "what a genotype develops into, body and controller: graph (Sims' graph genome, of genome.dialect: it grows its body and brain), or a kind with a fixed body and keys of its own (docs/config.md)"},
       {"genome", "dialect", Field::Choice, 0, 0, {"sims1994", "miconi2006", "chaumont2007"}, [](RunConfig& c) -> void* { return &c.dialect; }, "sims1994, miconi2006 or chaumont2007: picks every default"},
       {"evolution", "algorithm", Field::Choice, 0, 0, {"generational", "steady_state"}, [](RunConfig& c) -> void* { return &c.evolution.algorithm; }, "generational (chaumont2007) or steady_state (miconi2006)"},
       {"evolution", "population", Field::Int, 3, 1000000, {}, [](RunConfig& c) -> void* { return &c.evolution.population; }, "individuals in the population"},
@@ -145,7 +171,7 @@ const std::vector<Field>& fields() {
       {"check", "max_held", Field::Real, 0, 1e6, {}, [](RunConfig& c) -> void* { return &c.check.max_held; }, "check: with every joint held still by its motor (a catapult still releasing), at most this share"},
       {"check", "rest_seconds", Field::Real, 0, 1e6, {}, [](RunConfig& c) -> void* { return &c.check.rest_seconds; }, "check: clamped effectors may keep more than max_clamped if the creature is then at rest over its last this many seconds (a transient: a stroke or a topple, named in a note); 0: never"},
       {"check", "converge_seeds", Field::Int, 1, 100, {}, [](RunConfig& c) -> void* { return &c.check.converge_seeds; }, "check: dt/2, dt/4, 2x iterations, the motor lag and the half rate each as the median over this many seeds, against the median at dt (for chaotic tasks)"},
-  };
+  });
   return f;
 }
 
@@ -229,7 +255,8 @@ Status set_field(const Field& f, RunConfig& cfg, const toml::node& n, const std:
       if (!n.is_boolean()) return bad("expected true or false");
       *static_cast<bool*>(p) = *n.value<bool>();
       return Ok{};
-    case Field::Vec: {
+    case Field::Vec:
+    case Field::Triple: {
       const toml::array* a = n.as_array();
       if (!a || a->size() != 3) return bad("expected an array of 3 numbers");
       Vec3 v;
@@ -242,7 +269,10 @@ Status set_field(const Field& f, RunConfig& cfg, const toml::node& n, const std:
           return bad("each out of range [" + num(f.lo) + ", " + num(f.hi) + "]");
         v[static_cast<int>(i)] = *x;
       }
-      *static_cast<Vec3*>(p) = v;
+      if (f.kind == Field::Vec)
+        *static_cast<Vec3*>(p) = v;
+      else
+        *static_cast<std::array<double, 3>*>(p) = {v.x, v.y, v.z};
       return Ok{};
     }
     case Field::Choice: {
@@ -413,7 +443,7 @@ Result<RunConfig> read_run_config(std::string_view text, std::string_view source
   // a drop jittered lower than the ground would start the creature inside it
   if (cfg.sim.start_drop_jitter > task_drop_height(cfg.sim))
     return Error{std::string(source) + ": task.start_drop_jitter: " + num(cfg.sim.start_drop_jitter) +
-                 " m is more than " + task_drop_height_key(cfg.sim) + " (" + num(task_drop_height(cfg.sim)) +
+                 " m is more than " + std::string(task_drop_height_key(cfg.sim)) + " (" + num(task_drop_height(cfg.sim)) +
                  " m): a lowered drop would start the creature inside the ground"};
   return cfg;
 }
@@ -449,6 +479,7 @@ std::string config_to_toml(const RunConfig& cfg_in, bool sim_only) {
       case Field::Bool: ss << (*static_cast<bool*>(p) ? "true" : "false"); break;
       case Field::Choice: ss << '"' << f.choices[*static_cast<int*>(p)] << '"'; break;
       case Field::Vec: ss << vec_text(*static_cast<Vec3*>(p)); break;
+      case Field::Triple: ss << vec_text(triple(p)); break;
     }
     ss << "\n";
   }
@@ -472,6 +503,7 @@ std::string config_reference_markdown() {
         case Field::Bool: ss << " " << (*static_cast<bool*>(p) ? "true" : "false") << " |"; break;
         case Field::Choice: ss << " " << f.choices[*static_cast<int*>(p)] << " |"; break;
         case Field::Vec: ss << " " << vec_text(*static_cast<Vec3*>(p)) << " |"; break;
+        case Field::Triple: ss << " " << vec_text(triple(p)) << " |"; break;
       }
     }
     ss << " " << f.doc << " |\n";

@@ -134,9 +134,8 @@ Result<OpenRun> open_run(const std::string& dir, const std::vector<std::string>&
 
 // what the run breeds: the genotypes its creature kind develops, with their operators
 std::shared_ptr<const GenotypeOps> genotype_ops(const RunConfig& cfg) {
-  switch (cfg.sim.creature) {
-    case CreatureKind::Graph: break;
-  }
+  const CreatureKindRow& kind = creature_kind_row(cfg.sim.creature);
+  if (kind.float_genes) return std::make_shared<FloatVectorOps>(kind.float_genes(cfg.sim));
   return std::make_shared<GraphOps>(cfg.dialect, cfg.operators, cfg.sim.develop);
 }
 

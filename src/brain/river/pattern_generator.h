@@ -28,6 +28,7 @@ struct Motif {
   std::array<double, kMotifNeurons> alpha{};       ///< biases (eq. 6)
   int input = 0;   ///< the neuron whose eq. 5 sum takes the external input
   int output = 0;  ///< the neuron the motor neurons read
+  friend bool operator==(const Motif&, const Motif&) = default;
 };
 
 /// An error naming the field and value if a motif cannot run: a non-finite

@@ -25,6 +25,7 @@ namespace bx {
 struct RiverBrainDef {
   RiverShape shape;
   ShuntingDef landscape;
+  friend bool operator==(const RiverBrainDef&, const RiverBrainDef&) = default;
 };
 
 /// One individual's controller, immutable and shared by its evaluations:

@@ -26,6 +26,7 @@ struct RiverShape {
   int pn_hidden = 4;
   int motifs = 5;   ///< PG motifs, and PN outputs (one per motif)
   int motors = 12;  ///< motor neurons, one per degree of freedom
+  friend bool operator==(const RiverShape&, const RiverShape&) = default;
 };
 
 /// An error naming the field and value if a size is below 1.

@@ -29,6 +29,7 @@ struct ShuntingDef {
   /// of maxI the "maximum iota value", and maps a source to exactly 1 after
   /// the PN's division by maxI.
   double iota_scale = 15;
+  friend bool operator==(const ShuntingDef&, const ShuntingDef&) = default;
 };
 
 /// An error naming the field and value if the SM cannot run: a size below 1,

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "brain/river/found_motif.h"
 #include "core/rng.h"
 
 namespace bx {
@@ -249,22 +250,9 @@ TEST(MotifGenes, ErrorsNameTheCountsGeneAndField) {
   EXPECT_NE(check_motif_gene_def(d).error().find("weight_max is 0"), std::string::npos);
 }
 
-// The motif motif_search_test.cpp's search found (seed 20150720, population
-// 1000, 10^6 tournaments of 3; fitness 0.899), decoded from its genes and
-// printed to full precision: the preliminary motif of docs/rivercrossing.md
-// ("The motif's fitness").
-Motif found_motif() {
-  Motif m;
-  m.w = {{{-0.78630925075382407, 3.6669557859373043, -4.7247363080404803},
-          {-8.8162795527556366, 12.705745667407337, -7.2059718682943936},
-          {15.864952637365167, 2.5488696262760624, -3.6057886851183731}}};
-  m.tau = {1.7837384832752037, 0.39452987811361484, 0.19103254352260157};
-  m.alpha = {-0.065087467485112405, -10.369384569603891, -2.148256443495506};
-  m.input = 0;
-  m.output = 2;
-  return m;
-}
-
+// found_motif() (brain/river/found_motif.h): what motif_search_test.cpp's
+// search found (seed 20150720, population 1000, 10^6 tournaments of 3;
+// fitness 0.899), decoded from its genes and printed to full precision.
 TEST(MotifFitness, FoundMotifOscillatesAtOneHertzUnderInputAndRestsWithout) {
   const Motif m = found_motif();
   ASSERT_TRUE(check_motif(m).ok());

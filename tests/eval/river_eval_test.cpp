@@ -1,0 +1,134 @@
+// The river crossing through the generic channels: a float vector develops,
+// by its creature kind's row, into the quadruped and its hybrid controller;
+// the task table makes the river task per trial; evaluation runs them on
+// real physics and reports the task's named metrics.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "core/rng.h"
+#include "eval/creature.h"
+#include "eval/evaluate.h"
+#include "eval/evaluator.h"
+#include "eval/task_table.h"
+#include "genome/float_vector.h"
+#include "io/config.h"
+
+namespace bx {
+namespace {
+
+SimConfig river_config(double seconds) {
+  SimConfig cfg;
+  cfg.creature = CreatureKind::River;
+  cfg.task_kind = TaskKind::River;
+  cfg.physics = river_physics(cfg.river.body);
+  cfg.motor = river_motor();
+  cfg.river.task.seconds = seconds;
+  return cfg;
+}
+
+FloatVector random_genes(const SimConfig& cfg, std::uint64_t seed) {
+  const FloatVectorDef def = creature_kind_row(cfg.creature).float_genes(cfg);
+  Rng rng(seed);
+  std::vector<double> g(static_cast<std::size_t>(def.length));
+  for (double& x : g) x = rng.uniform(def.lo, def.hi);
+  return FloatVector(g);
+}
+
+TEST(RiverEval, AConfigPicksTheQuadrupedAndTheRiverTask) {
+  auto cfg = read_run_config("[genotype]\nkind = \"river\"\n[task]\nkind = \"river\"\n[river]\nseconds = 30\n"
+                             "[motif]\ntau = [1, 0.5, 0.25]\n",
+                             "run.toml");
+  ASSERT_TRUE(cfg.ok()) << cfg.error();
+  EXPECT_EQ(cfg->sim.creature, CreatureKind::River);
+  EXPECT_EQ(cfg->sim.task_kind, TaskKind::River);
+  EXPECT_EQ(cfg->sim.river.task.seconds, 30);
+  EXPECT_EQ(cfg->sim.river.motif.tau[1], 0.5);
+  // and writes them back as it read them
+  const std::string text = config_to_toml(*cfg);
+  EXPECT_NE(text.find("[motif]\nw0 = "), std::string::npos) << text;
+  auto again = read_run_config(text, "config.toml");
+  ASSERT_TRUE(again.ok()) << again.error();
+  EXPECT_EQ(again->sim, cfg->sim);
+  // a motif's time constant is checked like any key
+  auto bad = read_run_config("[motif]\ntau = [1, 0, 1]\n", "run.toml");
+  ASSERT_FALSE(bad.ok());
+  EXPECT_EQ(bad.error(), "run.toml: motif.tau: each out of range [1e-06, 1000000], got [1, 0, 1]");
+}
+
+TEST(RiverEval, AFloatVectorDevelopsIntoTheQuadrupedAndItsController) {
+  const SimConfig cfg = river_config(5);
+  const FloatVectorDef genes = creature_kind_row(cfg.creature).float_genes(cfg);
+  EXPECT_EQ(genes.length, 181);  // the paper's shape (docs/rivercrossing.md)
+  auto c = develop_creature(random_genes(cfg, 1), cfg);
+  ASSERT_TRUE(c.ok()) << c.error();
+  EXPECT_EQ(c->body->n_parts(), 9);
+  EXPECT_EQ(c->controller->n_effectors(), 12);
+  EXPECT_EQ(c->controller->n_task_outputs(), 1);
+  // a vector of another length is not viable, and says both counts
+  auto short_one = develop_creature(FloatVector(std::vector<double>(180, 0.0)), cfg);
+  ASSERT_FALSE(short_one.ok());
+  EXPECT_NE(short_one.error().find("180"), std::string::npos) << short_one.error();
+  EXPECT_NE(short_one.error().find("181"), std::string::npos) << short_one.error();
+}
+
+TEST(RiverEval, TheRiverTaskNeedsTheQuadruped) {
+  SimConfig cfg;
+  cfg.task_kind = TaskKind::River;
+  auto t = make_task(CreatureModel{}, cfg, 1);
+  ASSERT_FALSE(t.ok());
+  EXPECT_EQ(t.error(), "the river crossing's task needs its quadruped: genotype.kind = \"river\"");
+}
+
+TEST(RiverEval, ARandomControllerWalksTheGridOnRealPhysicsAndReportsItsMetrics) {
+  const SimConfig cfg = river_config(10);
+  const FloatVector g = random_genes(cfg, 3);
+  const EvalOutcome out = evaluate_genotype(g, cfg, 42);
+  ASSERT_TRUE(out.viable) << out.reason;
+  const EvalResult& r = out.result;
+  EXPECT_FALSE(r.failed) << r.failure;
+  EXPECT_GE(r.fitness, 0);
+  ASSERT_GE(r.metrics.size(), 5u);
+  EXPECT_EQ(r.metrics[0].name, "level");
+  EXPECT_GE(r.metrics[0].value, 1);
+  // the controller drives the joints: its signals move
+  double moving = 0;
+  for (double sd : r.diagnostics.effector_sd) moving = std::max(moving, sd);
+  EXPECT_GT(moving, 0.01);
+  // the same genes and seed give the same evaluation, in a worker too
+  std::vector<EvalJob> jobs = {{&g, 42}};
+  ProcessPoolEvaluator pool(cfg, 1, 120);
+  const EvalOutcome again = pool.evaluate(jobs)[0];
+  EXPECT_EQ(again.result.fitness, r.fitness);
+  EXPECT_EQ(again.result.metrics, r.metrics);
+  EXPECT_EQ(again.result.steps, r.steps);
+}
+
+// Issue 32: the river crossing comes in through the interfaces, so its words
+// appear in src/ (comments aside) only in its own folders and the tables'.
+TEST(RiverEval, ItsWordsLiveInItsOwnFoldersAndTheTablesOnly) {
+  namespace fs = std::filesystem;
+  const fs::path src = fs::path(BESTIARY_SOURCE_DIR) / "src";
+  std::set<std::string> folders;
+  for (const auto& e : fs::recursive_directory_iterator(src)) {
+    if (!e.is_regular_file()) continue;
+    std::ifstream in(e.path());
+    std::string line;
+    while (std::getline(in, line)) {
+      std::string code = line.substr(0, line.find("//"));  // comments aside
+      for (char& c : code) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      if (code.find("river") != std::string::npos || code.find("shunting") != std::string::npos)
+        folders.insert(fs::relative(e.path().parent_path(), src).string());
+    }
+  }
+  EXPECT_EQ(folders, (std::set<std::string>{"brain/river", "eval", "task/river"}));
+}
+
+}  // namespace
+}  // namespace bx
