@@ -38,6 +38,8 @@ enum class PoweredStops {
   /// angular motor on the joint's axes) beside the stops, so a motor at a
   /// stop is solved with it: no more than its force, no faster than its
   /// speed. Sliders, pistons and ball joints keep ODE's joint motor.
+  /// MotorModel::PD needs it: its implicit damper is this motor's row, with
+  /// no force limit.
   Separate,
 };
 
@@ -109,7 +111,11 @@ enum class MotorModel {
   Saturation,  ///< chaumont2007 5.3: target velocity sign(s)*max_speed, force cap
                ///< |s|*strength*cross-section of the larger part (3.4)
   Torque,      ///< sims1994: torque s*strength*cross-section of the larger part
-  PD,          ///< rivercrossing: T = kp(theta_d - theta) - kd*dtheta, theta_d from s
+  /// rivercrossing: T = kp(theta_d - theta) - kd*dtheta, theta_d from s. The
+  /// damper is implicit (dtheta at the end of the step, through a joint motor
+  /// row of CFM 1/kd: stable for any limb inertia), so it needs
+  /// PoweredStops::Separate (World::apply_effectors; docs/physics.md cause 28)
+  PD,
 };
 
 /// The motors of every effector of a creature.

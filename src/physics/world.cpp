@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 #include <string>
 
 #include "geometry/ode.h"
@@ -154,10 +155,31 @@ struct World::Impl {
       if (j.broken) return;
       dJointSetAMotorParam(j.motor, dParamVel + dParamGroup * dof, speed);
       dJointSetAMotorParam(j.motor, dParamFMax + dParamGroup * dof, force);
+      // the world's CFM, which the row had from its creation, in case a PD
+      // motor softened it (drive_pd)
+      dJointSetAMotorParam(j.motor, dParamCFM + dParamGroup * dof, def.cfm);
       return;
     }
     set_param(j, dof, dParamVel, speed);
     set_param(j, dof, dParamFMax, force);
+  }
+
+  // MotorModel::PD on a joint with a motor of its own (PoweredStops::
+  // Separate), its damper implicit: the motor's row gets the target speed
+  // kp err / kd, no force limit and CFM 1/kd. ODE solves each motor row for
+  // J v' = speed - CFM lambda, lambda being the row's torque and v' the
+  // joint's rate at the end of the step (step.cpp: cfm / h on the diagonal
+  // of J M^-1 J', speed / h in the right-hand side), so the motor applies
+  // lambda = kp err - kd v': the spring from the angle at the start of the
+  // step, the damper from the rate the step ends with, stable whatever the
+  // limb's inertia (docs/physics.md cause 28). The motor's rows are apart
+  // from the joint's stop rows, so the unlimited force never meets ODE's
+  // powered-stop fallback (a plain torque of FMax x fudge).
+  void drive_pd(const Joint& j, int dof, double kp_err, double kd) const {
+    if (j.broken) return;
+    dJointSetAMotorParam(j.motor, dParamVel + dParamGroup * dof, kp_err / kd);
+    dJointSetAMotorParam(j.motor, dParamFMax + dParamGroup * dof, dInfinity);
+    dJointSetAMotorParam(j.motor, dParamCFM + dParamGroup * dof, 1 / kd);
   }
 
   // joint parameter of one degree of freedom
@@ -544,6 +566,10 @@ void World::brake_effectors(const CreatureModel& m, const MotorDef& motor, doubl
 void World::apply_effectors(const CreatureModel& m, const MotorDef& motor,
                             std::span<const double> signals) {
   auto& w = *impl_;
+  if (motor.model == MotorModel::PD && w.def.powered_stops != PoweredStops::Separate)
+    throw std::invalid_argument(
+        "World: PD motors need physics.powered_stops = \"separate\" (their damper is a joint motor "
+        "row of its own, beside the stops; docs/physics.md cause 28)");
   bool torques = false;
   auto drive = [&w](const Impl::Joint& j, int dof, double speed, double force) { w.drive(j, dof, speed, force); };
   // the motors' first-order lag: the share of the gap closed in one step
@@ -584,7 +610,16 @@ void World::apply_effectors(const CreatureModel& m, const MotorDef& motor,
         } else {
           target = s * (is_linear_dof(j.type, em.dof) ? 1.0 : kPi);
         }
-        double err = target - w.position(j, em.dof);
+        const double err = target - w.position(j, em.dof);
+        if (j.motor && motor.kd > 0) {
+          // hinges and universal joints: the damper implicit in the joint's own motor
+          w.drive_pd(j, em.dof, motor.kp * err, motor.kd);
+          break;
+        }
+        // no damper (kd = 0: the spring alone, explicit; the motor row off),
+        // or a joint without a motor of its own (slider, piston, ball): the
+        // explicit torque from the angle and rate at the start of the step
+        if (j.motor) drive(j, em.dof, 0, 0);
         w.joint_torque[em.joint][em.dof] += motor.kp * err - motor.kd * w.rate(j, em.dof);
         torques = true;
         break;

@@ -53,6 +53,11 @@ class World {
   bool joint_broken(int j) const;
 
   /// Sets every motor from the effector signals (in [-1,1], brain order).
+  /// MotorModel::PD damps implicitly through each hinge's and universal
+  /// joint's motor of its own, so it needs PoweredStops::Separate: under
+  /// PoweredStops::Ode it throws std::invalid_argument. With kd = 0, and on
+  /// sliders, pistons and ball joints (no motor of their own), the PD is an
+  /// explicit torque from the angle and rate at the start of the step.
   void apply_effectors(const CreatureModel& m, const MotorDef& motor,
                        std::span<const double> signals);
 

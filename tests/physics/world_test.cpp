@@ -9,6 +9,8 @@
 
 #include <array>
 #include <random>
+#include <stdexcept>
+#include <vector>
 
 #include <algorithm>
 #include <cmath>
@@ -442,6 +444,7 @@ namespace {
 TEST(World, PDMotorHoldsTheTargetAngleFromTheSignal) {
   PhysicsDef def;
   def.gravity = 0;
+  def.powered_stops = PoweredStops::Separate;  // PD's damper is the joint's own motor row
   World w(def);
   CreatureModel m = driven_pendulum(w, {-1.0, 1.0});
   MotorDef motor;
@@ -455,6 +458,161 @@ TEST(World, PDMotorHoldsTheTargetAngleFromTheSignal) {
   }
   EXPECT_NEAR(w.joint_position(0, 0), 0.5, 0.01);
   EXPECT_NEAR(w.joint_rate(0, 0), 0, 0.01);
+}
+
+TEST(World, PDMotorNeedsSeparatePoweredStops) {
+  // ODE's own joint motor at a stop is a plain torque of FMax x fudge, and
+  // the implicit damper's FMax is unlimited
+  PhysicsDef def;
+  def.gravity = 0;
+  World w(def);
+  CreatureModel m = driven_pendulum(w, {-1.0, 1.0});
+  MotorDef motor;
+  motor.model = MotorModel::PD;
+  double s[1] = {0.5};
+  EXPECT_THROW(w.apply_effectors(m, motor, s), std::invalid_argument);
+  motor.model = MotorModel::Servo;
+  EXPECT_NO_THROW(w.apply_effectors(m, motor, s));
+}
+
+// The PD tests' limb: the driven pendulum's 0.5 m bar (0.02 m square) of
+// `mass`, in a world without gravity, its hinge's stops at +-1 rad, PD motors
+// on powered_stops separate at step `dt`. I is its inertia about the hinge.
+struct PDLimb {
+  CreatureModel m;
+  double I;
+};
+PDLimb pd_limb(double mass) {
+  PDLimb l{pendulum(0.5, 0), mass * ((0.02 * 0.02 + 0.5 * 0.5) / 12 + 0.25 * 0.25)};
+  l.m.parts[1].mass = mass;
+  l.m.joints[0].limits = {{-1, 1}};
+  EffectorModel e;
+  e.joint = 0;
+  l.m.effectors.push_back(e);
+  return l;
+}
+PhysicsDef pd_physics(double dt) {
+  PhysicsDef def;
+  def.gravity = 0;
+  def.dt = dt;
+  def.powered_stops = PoweredStops::Separate;
+  return def;
+}
+// runs the limb from rest at angle 0 under signal s for `seconds`, calling
+// probe(t, angle, rate) after every step
+template <class Probe>
+void run_pd(const PDLimb& l, const MotorDef& motor, double dt, double s, double seconds, Probe probe) {
+  World w(pd_physics(dt));
+  w.add_creature(l.m, {{0, 0, 0}, Mat3::identity()});
+  w.fix_part_to_world(0);
+  double sig[1] = {s};
+  const int steps = static_cast<int>(std::lround(seconds / dt));
+  for (int i = 1; i <= steps; ++i) {
+    w.apply_effectors(l.m, motor, sig);
+    w.step();
+    probe(i * dt, w.joint_position(0, 0), w.joint_rate(0, 0));
+  }
+}
+
+TEST(World, PDMotorIsTheDampedOscillatorsClosedForm) {
+  // I theta'' = -ks (theta - theta_d) - kd theta', from rest at 0 to theta_d
+  // = 0.5 rad: underdamped with the 1 kg bar (I = 0.0834 kg m^2, damping
+  // ratio 0.61), theta = theta_d (1 - e^(-sigma t) (cos wd t + sigma / wd sin
+  // wd t)), sigma = kd / 2I, wd = sqrt(ks / I - sigma^2). The implicit damper
+  // and the spring from the angle at the step's start are first-order: the
+  // largest error over 6 s halves with the step
+  const PDLimb l = pd_limb(1.0);
+  MotorDef motor;
+  motor.model = MotorModel::PD;
+  motor.kp = 0.25;
+  motor.kd = 0.175;
+  const double target = 0.5, sigma = motor.kd / (2 * l.I);
+  const double wd = std::sqrt(motor.kp / l.I - sigma * sigma);
+  auto exact = [&](double t) {
+    return target * (1 - std::exp(-sigma * t) * (std::cos(wd * t) + sigma / wd * std::sin(wd * t)));
+  };
+  std::vector<double> errors;
+  for (double dt : {0.01, 0.005, 0.0025, 0.00125}) {
+    double worst = 0;
+    run_pd(l, motor, dt, target, 6, [&](double t, double x, double) { worst = std::max(worst, std::abs(x - exact(t))); });
+    errors.push_back(worst);
+  }
+  // measured 1.19e-3, 6.0e-4, 3.0e-4, 1.5e-4 rad (the overshoot is 0.045
+  // rad; World's old explicit damper: 3.3e-3 at 0.01 s)
+  EXPECT_LT(errors[0], 2e-3);
+  for (std::size_t k = 1; k < errors.size(); ++k) {
+    EXPECT_GT(errors[k], 0.4 * errors[k - 1]) << k;  // first order, not better
+    EXPECT_LT(errors[k], 0.6 * errors[k - 1]) << k;
+  }
+}
+
+TEST(World, PDMotorOnALimbOfLittleInertiaComesToRestAtTheTarget) {
+  // a bar of 0.21 g (I = 1.75e-5 kg m^2): kd dt / I = 100. Explicit damping
+  // (the torque from the rate at the step's start) multiplies the rate by
+  // 1 - kd dt / I = -99 each step: measured with World's old explicit PD,
+  // 71 rad/s after the first step, -7106 rad/s after the second, the limb
+  // thrown through its stops (-2.4 rad). Implicit, the motor is critically
+  // overdamped: as I -> 0, kd theta' = ks (theta_d - theta), a first-order
+  // lag of kd / ks = 0.7 s, which it follows without overshoot
+  const PDLimb l = pd_limb(2.1e-4);
+  MotorDef motor;
+  motor.model = MotorModel::PD;
+  motor.kp = 0.25;
+  motor.kd = 0.175;
+  ASSERT_NEAR(motor.kd * 0.01 / l.I, 100, 0.1);
+  const double target = 0.5, tau = motor.kd / motor.kp;
+  double worst = 0, highest = 0, fastest = 0, last = 0, last_rate = 0;
+  run_pd(l, motor, 0.01, target, 15, [&](double t, double x, double v) {
+    worst = std::max(worst, std::abs(x - target * (1 - std::exp(-t / tau))));
+    highest = std::max(highest, x);
+    fastest = std::max(fastest, std::abs(v));
+    last = x;
+    last_rate = v;
+  });
+  EXPECT_LT(worst, 3e-3);                   // measured 1.3e-3 rad
+  EXPECT_LE(highest, target + 1e-9);         // never past the target (measured 2e-10 short)
+  EXPECT_LT(fastest, target / tau + 0.01);  // the lag's first speed, 0.714 rad/s (measured 0.707)
+  EXPECT_NEAR(last, target, 1e-5);           // at rest at the target (e^(-15 / 0.7) of the way left)
+  EXPECT_NEAR(last_rate, 0, 1e-5);           // measured 3e-10 rad/s
+}
+
+TEST(World, PDMotorWithoutDamperIsAnUndampedSpring) {
+  // kd = 0: no motor row, the spring alone as an explicit torque; ODE's
+  // semi-implicit Euler keeps the oscillation's amplitude: the bar swings
+  // about the target 0.4 rad from 0 to 0.8 (inside its stops at +-1) at w0 =
+  // sqrt(ks / I)
+  const PDLimb l = pd_limb(1.0);
+  MotorDef motor;
+  motor.model = MotorModel::PD;
+  motor.kp = 0.25;
+  motor.kd = 0;
+  const double target = 0.4, w0 = std::sqrt(motor.kp / l.I);
+  double worst = 0, last_highest = 0;
+  run_pd(l, motor, 0.01, target, 20, [&](double t, double x, double) {
+    worst = std::max(worst, std::abs(x - target * (1 - std::cos(w0 * t))));
+    if (t > 20 - 2 * kPi / w0) last_highest = std::max(last_highest, x);
+  });
+  EXPECT_LT(worst, 0.01);                // measured 3.4e-3 rad (a slow phase drift)
+  EXPECT_NEAR(last_highest, 0.8, 0.005);  // the last period still reaches 0.8 rad (measured 0.7999)
+}
+
+TEST(World, PDMotorFollowsTheLaggedSignal) {
+  // motor.response_time lags the signal before the PD takes it: on the light
+  // limb (a lag of kd / ks = 0.7 s of its own) a step of the signal reaches
+  // the angle through two first-order lags, 1 - (a e^(-t/a) - b e^(-t/b)) /
+  // (a - b) of the way
+  const PDLimb l = pd_limb(2.1e-4);
+  MotorDef motor;
+  motor.model = MotorModel::PD;
+  motor.kp = 0.25;
+  motor.kd = 0.175;
+  motor.response_time = 0.3;
+  const double target = 0.5, a = motor.response_time, b = motor.kd / motor.kp;
+  double worst = 0;
+  run_pd(l, motor, 0.01, target, 5, [&](double t, double x, double) {
+    worst = std::max(worst, std::abs(x - target * (1 - (a * std::exp(-t / a) - b * std::exp(-t / b)) / (a - b))));
+  });
+  EXPECT_LT(worst, 5e-3);  // measured 2.7e-3 rad
 }
 
 TEST(World, SaturationMotorForceScalesWithTheSignal) {

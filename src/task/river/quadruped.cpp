@@ -110,6 +110,8 @@ PhysicsDef river_physics(const QuadrupedDef& def) {
   p.erp = 0.2;
   p.cfm = 5e-5;
   p.friction = 10;
+  // PD motors damp implicitly through each joint's motor of its own
+  p.powered_stops = PoweredStops::Separate;
   // per cell width what the defaults are per metre
   p.max_speed *= def.unit;
   p.max_step_jump *= def.unit;

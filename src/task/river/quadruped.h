@@ -23,21 +23,19 @@ namespace bx {
 
 /// The choices the paper leaves open. Every length of the body is a multiple
 /// of `unit`; every part has `density`. The PD gains are fixed torques (N m
-/// per rad), so these two decide whether the motors hold the body up and
-/// whether they stay stable (docs/rivercrossing.md, "Unit and density"):
-/// - its weight against ks: the torque gravity puts on a hip grows as
-///   density x unit^4. At 0.2 kg m (g = 9.81) mid-range targets still hold
-///   the torso up; at 0.3 kg m the body sinks onto its limbs.
-/// - a limb's inertia against kd dt: the damping is an explicit torque, and a
-///   lower limb's inertia about its knee grows as density x unit^5. At 2 kg m^2
-///   some constant targets already shake the body apart; at 1 kg m^2 most do.
-/// The defaults give 0.1 kg m and 4 kg m^2, a factor 2 or more from either
-/// edge: a 40 m cell and a body of 0.9 g. Only the two products (and gravity)
-/// matter: a 1 m cell of density 4 in a fortieth of Earth's gravity moves the
-/// same in cell widths and seconds.
+/// per rad), so the body's weight decides whether they hold it up
+/// (docs/rivercrossing.md, "Unit and density"): the torque gravity puts on a
+/// hip grows as density x unit^4. At 0.2 kg m (g = 9.81) mid-range targets
+/// still hold the torso up; at 0.3 kg m it sags, at 0.4 kg m it sinks onto its
+/// limbs. The limbs' inertia (density x unit^5) no longer matters for
+/// stability: World's PD damps implicitly, stable for any inertia. The
+/// defaults: a 0.1 m cell of water's density (0.1 kg m; a body of 0.36 kg,
+/// its torso 10 cm square). What the size still changes: under the paper's
+/// CFM its feet creep, 3e-4 cell widths/s standing (ODE's friction rows carry
+/// the world's CFM; the creep in cell widths goes as 1 / unit^2).
 struct QuadrupedDef {
-  double unit = 40;             ///< metres per cell width
-  double density = 3.90625e-8;  ///< kg/m^3 of every part: 0.1 / 40^4
+  double unit = 0.1;       ///< metres per cell width
+  double density = 1000;   ///< kg/m^3 of every part
   friend bool operator==(const QuadrupedDef&, const QuadrupedDef&) = default;
 };
 
@@ -95,15 +93,17 @@ double quadruped_foot_depth(const QuadrupedDef& def);
 
 /// The paper's physics: step 0.01 s, ERP 0.2, CFM 5e-5, friction mu = 10
 /// (ODE's friction pyramid for new contacts, the project's lagged bound for
-/// steady ones: FrictionBound::Lagged). The explosion tests' distances and
-/// speeds (PhysicsDef's defaults, set for bodies about 1 m long) are scaled
-/// to def.unit; everything else is PhysicsDef's default (the exact solver,
-/// gravity 9.81, parts collide with each other).
+/// steady ones: FrictionBound::Lagged). Powered stops "separate": the PD
+/// motors' implicit damper is each joint's motor of its own. The explosion
+/// tests' distances and speeds (PhysicsDef's defaults, set for bodies about
+/// 1 m long) are scaled to def.unit; everything else is PhysicsDef's default
+/// (the exact solver, gravity 9.81, parts collide with each other).
 PhysicsDef river_physics(const QuadrupedDef& def);
 
 /// The paper's motors: PD, T = ks (target - angle) - kd rate with ks = 0.25
 /// N m/rad and kd = 0.175 N m s/rad (eq. 7), the target the signal's place
-/// within the joint's range.
+/// within the joint's range; the rate is the one the step ends with (World's
+/// implicit damper).
 MotorDef river_motor();
 
 }  // namespace bx
