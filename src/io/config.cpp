@@ -440,6 +440,10 @@ Result<RunConfig> read_run_config(std::string_view text, std::string_view source
                  std::string(to_string(cfg.dialect)) + "\""};
   if (cfg.sim.task_kind == TaskKind::Throwing && !cfg.operators.catapult.enabled)
     return Error{std::string(source) + ": task.kind: \"throwing\" needs catapult.enabled = true"};
+  // a PD motor's damper is a motor row of its own (docs/physics.md cause 28):
+  // ODE's joint motor at a stop would turn its unlimited force into a torque
+  if (cfg.sim.motor.model == MotorModel::PD && cfg.sim.physics.powered_stops != PoweredStops::Separate)
+    return Error{std::string(source) + ": motor.model: \"pd\" needs physics.powered_stops = \"separate\", got \"ode\""};
   // a drop jittered lower than the ground would start the creature inside it
   if (cfg.sim.start_drop_jitter > task_drop_height(cfg.sim))
     return Error{std::string(source) + ": task.start_drop_jitter: " + num(cfg.sim.start_drop_jitter) +

@@ -43,6 +43,7 @@ FloatVector random_genes(const SimConfig& cfg, std::uint64_t seed) {
 
 TEST(RiverEval, AConfigPicksTheQuadrupedAndTheRiverTask) {
   auto cfg = read_run_config("[genotype]\nkind = \"river\"\n[task]\nkind = \"river\"\n[river]\nseconds = 30\n"
+                             "[motor]\nmodel = \"pd\"\n[physics]\npowered_stops = \"separate\"\n"
                              "[motif]\ntau = [1, 0.5, 0.25]\n",
                              "run.toml");
   ASSERT_TRUE(cfg.ok()) << cfg.error();
@@ -56,6 +57,10 @@ TEST(RiverEval, AConfigPicksTheQuadrupedAndTheRiverTask) {
   auto again = read_run_config(text, "config.toml");
   ASSERT_TRUE(again.ok()) << again.error();
   EXPECT_EQ(again->sim, cfg->sim);
+  // a PD motor needs its own motor row
+  auto ode_stops = read_run_config("[motor]\nmodel = \"pd\"\n[physics]\npowered_stops = \"ode\"\n", "run.toml");
+  ASSERT_FALSE(ode_stops.ok());
+  EXPECT_EQ(ode_stops.error(), "run.toml: motor.model: \"pd\" needs physics.powered_stops = \"separate\", got \"ode\"");
   // a motif's time constant is checked like any key
   auto bad = read_run_config("[motif]\ntau = [1, 0, 1]\n", "run.toml");
   ASSERT_FALSE(bad.ok());
