@@ -50,7 +50,7 @@ int cmd_check(const CheckArgs& a) {
                  m.n_parts(), m.effectors.size(), static_cast<unsigned long long>(subject->seed));
   if (!a.json && !subject->settings.empty()) std::fprintf(stderr, "%s\n", subject->settings.c_str());
   // a run's elite: its other seeds against the score selection saw (mean or least)
-  CheckReport rep = check_creature(m, sim, subject->seed, subject->cfg.check, subject->repeats());
+  CheckReport rep = check_creature(*creature, sim, subject->seed, subject->cfg.check, subject->repeats());
   const EvalResult& s = rep.scored;
   const EvalDiagnostics& d = s.diagnostics;
 

@@ -1,9 +1,9 @@
 // Every command that takes a creature works for any creature kind: a tiny
 // run of the river crossing (a float vector developing into a fixed
-// quadruped and its controller) through best, simulate, show and plot, from
-// the run and from the genotype file `best --out` writes, each evaluated
-// exactly as it was scored; and a genotype file that says nothing of its
-// creature asks for a config in one line.
+// quadruped and its controller) through best, simulate, check, show and
+// plot, from the run and from the genotype file `best --out` writes, each
+// evaluated exactly as it was scored; and a genotype file that says nothing
+// of its creature asks for a config in one line.
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 #include <sqlite3.h>
@@ -166,6 +166,31 @@ TEST_F(Kinds, SimulateWritesAReplayOfTheBodyAndItsControllersSignals) {
   a.erase("genome");
   b.erase("genome");
   EXPECT_EQ(a, b);
+}
+
+TEST_F(Kinds, CheckReEvaluatesTheCreatureAsScored) {
+  const fs::path file = dir / "check.json";
+  const std::int64_t id = best_file(file);
+  const std::string quick = " --set check.other_seeds=1 --set check.converge_seeds=1";
+  for (const std::string& target : {run().string(), file.string()}) {
+    Outcome c = bestiary("check " + target + quick + " --json");
+    // 0 passed, 1 failed the gates (a tiny run's creature may well), never bad input
+    ASSERT_TRUE(c.code == 0 || c.code == 1) << target << c.out << c.err;
+    const json j = json::parse(c.out);
+    EXPECT_EQ(j["passed"].get<bool>(), c.code == 0);
+    EXPECT_EQ(j["fitness"].get<double>(), stored(run(), id)) << target;
+    std::vector<std::string> names;
+    for (const auto& v : j["variants"]) names.push_back(v["name"]);
+    // one other seed, the steps, the lag, the half rate, clamped and held
+    EXPECT_EQ(names, (std::vector<std::string>{"seed 2", "dt/2", "dt/4", "motor lag +10 ms", "brain at 100 Hz",
+                                               "clamped", "held"}))
+        << c.out;
+    EXPECT_EQ(j["effector_sd"].size(), 12u);
+    // and in text: the verdict
+    Outcome t = bestiary("check " + target + quick);
+    EXPECT_EQ(t.code, c.code) << t.out << t.err;
+    EXPECT_NE(t.out.find("verdict: "), std::string::npos) << t.out;
+  }
 }
 
 TEST_F(Kinds, ShowWritesTheRunsPageAndPlotItsCurves) {
