@@ -14,10 +14,8 @@
 #include "cli/commands.h"
 #include "cli/creature.h"
 #include "core/files.h"
-#include "develop/develop.h"
 #include "eval/check.h"
 #include "run/run.h"
-#include "genome/genome_json.h"
 #include "io/config.h"
 #include "io/run_store.h"
 
@@ -44,15 +42,15 @@ int cmd_check(const CheckArgs& a) {
   auto subject = resolve_creature(a.target, a.flags);
   if (!subject) return fail(subject.error());
   const SimConfig& sim = subject->cfg.sim;
-  Development dev = develop(subject->genome, sim.develop);
-  if (!dev.viable()) return fail(subject->label + ": not viable: " + dev.reason);
-  const CreatureModel& m = *dev.model;
+  auto creature = subject->develop();
+  if (!creature) return fail(subject->label + ": not viable: " + creature.error());
+  const CreatureModel& m = *creature->body;
   if (!a.json)
     std::fprintf(stderr, "checking %s: %d parts, %zu effectors, seed %llu ...\n", subject->label.c_str(),
                  m.n_parts(), m.effectors.size(), static_cast<unsigned long long>(subject->seed));
   if (!a.json && !subject->settings.empty()) std::fprintf(stderr, "%s\n", subject->settings.c_str());
   // a run's elite: its other seeds against the score selection saw (mean or least)
-  CheckReport rep = check_creature(m, sim, subject->seed, subject->cfg.check, subject->repeats());
+  CheckReport rep = check_creature(*creature, sim, subject->seed, subject->cfg.check, subject->repeats());
   const EvalResult& s = rep.scored;
   const EvalDiagnostics& d = s.diagnostics;
 

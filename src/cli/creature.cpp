@@ -13,7 +13,8 @@
 #include "core/files.h"
 #include "run/run.h"
 #include "genome/dialect.h"
-#include "genome/genome_json.h"
+#include "genome/float_vector.h"
+#include "genome/genotype_file.h"
 #include "genome/graph_genotype.h"
 #include "io/run_store.h"
 
@@ -113,12 +114,8 @@ Result<Subject> from_run(const RunTarget& t, const CreatureFlags& f) {
   if (!text) return Error{text.error()};
   auto cfg = read_run_config(*text, run_db_path(t.dir) + " (the run's config)", f.set);
   if (!cfg) return Error{cfg.error()};
-  const Genome* genome = graph_genome(*ind->genotype);
-  if (!genome)
-    return Error{t.dir + ": individual " + std::to_string(ind->id) + " is a genotype of kind " +
-                 std::string(ind->genotype->kind()) + ": it has no body to grow"};
   Subject c;
-  c.genome = *genome;
+  c.genotype = ind->genotype;
   c.cfg = *cfg;
   c.seed = ind->seed;
   c.label = t.dir + " individual " + std::to_string(ind->id) + " (generation " + std::to_string(ind->generation) + ")";
@@ -142,29 +139,42 @@ Result<Subject> from_run(const RunTarget& t, const CreatureFlags& f) {
   return c;
 }
 
-// the run config of a genome file: its dialect's defaults (a catapult
-// throws), then --config, then --set
-Result<RunConfig> genome_config(const Genome& g, const std::string& text, const std::string& source,
-                                const std::vector<std::string>& set) {
+// the run config of a genotype file: a graph genome's dialect's defaults (a
+// catapult throws), then --config, then --set; the config's creature kind must
+// develop the genotype (its kind, and a float vector's length and box)
+Result<RunConfig> genotype_config(const Genotype& g, const std::string& file, const std::string& text,
+                                  const std::string& source, const std::vector<std::string>& set) {
   std::vector<std::string> layers;
-  // the file decides the dialect only if it names one (then it must be the genome's)
-  bool names_dialect = false;
-  try {
-    names_dialect = toml::parse(text, source)["genome"]["dialect"].is_value();
-  } catch (const toml::parse_error&) {
-    // read_run_config reports it with its position
-  }
-  if (!names_dialect) layers.push_back("genome.dialect=" + std::string(to_string(g.dialect)));
-  if (g.catapult) {
-    layers.push_back("catapult.enabled=true");
-    layers.push_back("task.kind=throwing");
+  const Genome* genome = graph_genome(g);
+  if (genome) {
+    // the file decides the dialect only if it names one (then it must be the genome's)
+    bool names_dialect = false;
+    try {
+      names_dialect = toml::parse(text, source)["genome"]["dialect"].is_value();
+    } catch (const toml::parse_error&) {
+      // read_run_config reports it with its position
+    }
+    if (!names_dialect) layers.push_back("genome.dialect=" + std::string(to_string(genome->dialect)));
+    if (genome->catapult) {
+      layers.push_back("catapult.enabled=true");
+      layers.push_back("task.kind=throwing");
+    }
   }
   layers.insert(layers.end(), set.begin(), set.end());
   auto cfg = read_run_config(text, source, layers);
   if (!cfg) return Error{cfg.error()};
-  if (cfg->dialect != g.dialect)
+  if (genome && cfg->dialect != genome->dialect)
     return Error{source + ": genome.dialect is " + std::string(to_string(cfg->dialect)) + ", the genome's is " +
-                 std::string(to_string(g.dialect))};
+                 std::string(to_string(genome->dialect))};
+  const CreatureKindRow& row = creature_kind_row(cfg->sim.creature);
+  if (g.kind() != row.genotype_kind)
+    return Error{source + ": genotype.kind \"" + std::string(row.name) + "\" develops " +
+                 std::string(row.genotype_kind) + " genotypes, but " + file + " holds a " + std::string(g.kind()) +
+                 " genotype"};
+  if (row.float_genes) {
+    auto fits = FloatVectorOps(row.float_genes(cfg->sim)).from_json(g.to_json());
+    if (!fits) return Error{file + ": " + fits.error() + " (genotype.kind \"" + std::string(row.name) + "\")"};
+  }
   return cfg;
 }
 
@@ -172,16 +182,16 @@ Result<Subject> from_genome(const std::string& path, const CreatureFlags& f) {
   if (f.id || f.gen) return Error{"--id/--gen: name an individual of a run; " + path + " is a genome file"};
   auto text = read_file(path);
   if (!text) return Error{text.error()};
-  auto g = genome_from_string(*text, path);
+  auto g = genotype_from_file_text(*text, path);
   if (!g) return Error{g.error()};
   Subject c;
-  c.genome = std::move(*g);
+  c.genotype = std::move(*g);
   c.label = path;
   json prov;
   try {
     prov = json::parse(*text).value("provenance", json::object());
   } catch (const json::exception&) {
-    // the genome reader accepted it, so it parses
+    // the genotype reader accepted it, so it parses
   }
   std::string scored_by;  // "RUN individual N"
   std::optional<std::uint64_t> prov_seed;
@@ -194,16 +204,16 @@ Result<Subject> from_genome(const std::string& path, const CreatureFlags& f) {
     if (!prov_seed || str("config").empty())
       return Error{path + ": provenance: expected the fields \"seed\" (a number as text) and \"config\" (TOML text)"};
     scored_by = str("run") + " individual " + (prov.contains("individual") ? prov["individual"].dump() : "?");
-    bool genome_same = str("genome_hash") == fnv1a64(genome_to_string(c.genome));
+    bool genome_same = str("genome_hash") == fnv1a64(genotype_text(*c.genotype));
     bool config_same = str("config_hash") == fnv1a64(str("config"));
     if (f.config.empty() && !f.seed) {
-      auto cfg = genome_config(c.genome, str("config"), path + " (provenance.config)", f.set);
+      auto cfg = genotype_config(*c.genotype, path, str("config"), path + " (provenance.config)", f.set);
       if (!cfg) return Error{cfg.error()};
       c.cfg = *cfg;
       c.seed = *prov_seed;
       bool same = f.set.empty();
       if (!same) {  // --set keys that change no evaluation (check's gates) keep it as scored
-        auto plain = genome_config(c.genome, str("config"), path + " (provenance.config)", {});
+        auto plain = genotype_config(*c.genotype, path, str("config"), path + " (provenance.config)", {});
         same = plain && evaluates_alike(*plain, *cfg);
       }
       c.scored_settings = genome_same && config_same && same && !f.seconds;
@@ -235,13 +245,18 @@ Result<Subject> from_genome(const std::string& path, const CreatureFlags& f) {
   // other stays the scored one
   std::string cfg_text = scored_by.empty() ? "" : str("config");
   std::string source = scored_by.empty() ? path : path + " (provenance.config)";
+  // a graph genome's dialect gives its defaults; another kind's genotype
+  // says nothing of its creature, so without a provenance it needs a config
+  if (scored_by.empty() && f.config.empty() && !c.graph_genome())
+    return Error{path + ": a " + std::string(c.genotype->kind()) +
+                 " genotype without provenance: give --config, a config whose genotype.kind develops it"};
   if (!f.config.empty()) {
     auto t = read_file(f.config);
     if (!t) return Error{t.error()};
     cfg_text = *t;
     source = f.config;
   }
-  auto cfg = genome_config(c.genome, cfg_text, source, f.set);
+  auto cfg = genotype_config(*c.genotype, path, cfg_text, source, f.set);
   if (!cfg) return Error{cfg.error()};
   c.cfg = *cfg;
   c.seed = f.seed.value_or(prov_seed.value_or(1));
@@ -269,6 +284,10 @@ Status set_seconds(SimConfig& sim, const std::optional<double>& seconds) {
   return Ok{};
 }
 
+const Genome* Subject::graph_genome() const { return genotype ? bx::graph_genome(*genotype) : nullptr; }
+
+Result<Creature> Subject::develop() const { return develop_creature(*genotype, cfg.sim); }
+
 Repeats Subject::repeats() const {
   return elite_repeats(cfg.evolution, scored_settings ? evaluations : 1);
 }
@@ -289,6 +308,16 @@ std::string fitness_line(double fitness, const std::optional<double>& stored) {
   if (!stored) return out;
   if (std::memcmp(&fitness, &*stored, sizeof fitness) == 0) return out + " (the stored fitness, bit for bit)";
   return out + " (NOT the stored fitness " + exact_number(*stored) + ": " + exact_number(fitness) + ")";
+}
+
+std::string metrics_line(const std::vector<Metric>& metrics) {
+  std::string out;
+  for (const Metric& m : metrics) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.6g", m.value);
+    out += (out.empty() ? "" : ", ") + m.name + " " + buf;
+  }
+  return out;
 }
 
 void add_creature_options(CLI::App* cmd, std::string& target, CreatureFlags& f) {
@@ -321,7 +350,7 @@ json provenance_json(const Subject& c, const std::string& config_text) {
     p["evaluations"] = c.individual->evaluations;
   }
   p["seed"] = std::to_string(c.seed);  // text: JSON numbers lose 64-bit integers in many readers
-  p["genome_hash"] = fnv1a64(genome_to_string(c.genome));
+  p["genome_hash"] = fnv1a64(genotype_text(*c.genotype));
   p["config_hash"] = fnv1a64(config_text);
   p["config"] = config_text;
   return p;

@@ -1,8 +1,10 @@
 // One way to name a creature on the command line, for every command that
-// simulates one (simulate, show, render, check, best):
-//   GENOME.json          a genome file: its dialect's defaults and seed 1, or,
-//                        if `best --out` wrote it, the run's config and the
-//                        seed that scored it (its "provenance")
+// simulates one (simulate, show, render, check, best), of any creature kind:
+//   GENOME.json          a genotype file (genome/genotype_file.h): a graph
+//                        genome with its dialect's defaults and seed 1, or
+//                        another kind's genotype with --config; or, if `best
+//                        --out` wrote it, the run's config and the seed that
+//                        scored it (its "provenance")
 //   RUN_DIR              the run's best so far
 //   RUN_DIR:ID           the run's individual ID
 //   RUN_DIR:gen=G        the best of generation G
@@ -13,11 +15,13 @@
 #include <nlohmann/json.hpp>
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "core/result.h"
+#include "eval/creature.h"
 #include "evolve/evolution.h"
 #include "io/config.h"
 
@@ -39,7 +43,8 @@ struct CreatureFlags {
 
 /// A creature to evaluate, with the config and seed to evaluate it with.
 struct Subject {
-  Genome genome;
+  /// What develops into the creature, of the kind cfg.sim.creature develops.
+  std::shared_ptr<const Genotype> genotype;
   RunConfig cfg;
   std::uint64_t seed = 1;
   std::string label;                    ///< "RUN individual 12 (generation 3)", or the file
@@ -54,6 +59,15 @@ struct Subject {
   /// line for the user (empty when there is nothing to say).
   std::string settings;
   bool scored_settings = false;  ///< the config and seed that scored it, unchanged
+
+  /// The graph genome, when the genotype is one (else nullptr: a creature
+  /// of another kind has no genome to print or dialect to read).
+  const Genome* graph_genome() const;
+  /// Develops it, as its run did: its body and controller, or why it is not
+  /// viable (develop_creature).
+  Result<Creature> develop() const;
+  /// What it is, in a word: its genome's dialect, or its creature kind's name.
+  std::string kind_name() const { return evolved_name(cfg); }
 
   /// The stored fitness when one evaluation should reproduce it.
   std::optional<double> scored_fitness() const {
@@ -76,7 +90,7 @@ bool names_run(const std::string& target);
 /// target or the flag.
 Result<Subject> resolve_creature(const std::string& target, const CreatureFlags& flags);
 
-/// A run's individual's provenance, for the genome file `best --out` writes:
+/// A run's individual's provenance, for the genotype file `best --out` writes:
 /// run, individual, generation, fitness (and how many evaluations it is the
 /// mean of), seed, and the run's config (its
 /// text and a hash), so the file alone reproduces the scored evaluation.
@@ -87,6 +101,10 @@ Status set_seconds(SimConfig& sim, const std::optional<double>& seconds);
 
 /// "fitness F", and whether it equals the stored fitness bit for bit.
 std::string fitness_line(double fitness, const std::optional<double>& stored);
+
+/// A task's named measures on one line: "level 2, levels completed 1, food
+/// eaten 3, ..." (EvalResult::metrics, in the task's order).
+std::string metrics_line(const std::vector<Metric>& metrics);
 
 /// The target positional and the flags above, as every command that takes a
 /// creature declares them.

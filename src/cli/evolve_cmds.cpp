@@ -16,7 +16,7 @@
 #include "core/text.h"
 #include "core/files.h"
 #include "run/run.h"
-#include "genome/genome_json.h"
+#include "genome/genotype_file.h"
 #include "io/config.h"
 #include "io/presets.h"
 #include "io/run_store.h"
@@ -135,13 +135,12 @@ int cmd_best(const std::string& target, const CreatureFlags& flags, const std::s
   bool overall = fs::is_directory(target) && !flags.id && !flags.gen;
   std::fprintf(stderr, "%sindividual %lld of generation %d, fitness %.6g (%s)\n", overall ? "best so far: " : "",
                static_cast<long long>(ind.id), ind.generation, ind.fitness, ind.op.c_str());
-  // the genome with where it came from: the run's config and the seed that
-  // scored it travel with it, so `simulate/show/render/check FILE` replay that evaluation
+  // the genotype (a graph genome's file, or another kind's genotype file)
+  // with where it came from: the run's config and the seed that scored it
+  // travel with it, so `simulate/show/render/check FILE` replay that evaluation
   auto store = RunStore::open(run_db_path(c->run_dir));
   if (!store) return fail(store.error());
-  nlohmann::json j = genome_to_json(c->genome);
-  j["provenance"] = provenance_json(*c, (*store)->meta("config"));
-  std::string text = j.dump(2) + "\n";
+  std::string text = genotype_file_string(*c->genotype, provenance_json(*c, (*store)->meta("config")));
   if (out.empty()) {
     std::printf("%s", text.c_str());
     return 0;

@@ -1,4 +1,5 @@
-// `bestiary simulate`: grow one genome, simulate it, report, optionally replay.
+// `bestiary simulate`: develop one creature (of any kind), simulate it,
+// report, optionally replay.
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
@@ -10,10 +11,8 @@
 
 #include "cli/commands.h"
 #include "cli/creature.h"
-#include "develop/develop.h"
 #include "eval/evaluate.h"
 #include "genome/dialect.h"
-#include "genome/genome_json.h"
 #include "io/config.h"
 #include "io/replay_file.h"
 
@@ -35,37 +34,36 @@ int cmd_simulate(const SimulateArgs& a) {
   if (!creature) return fail(creature.error());
   const SimConfig& cfg = creature->cfg.sim;
   const std::uint64_t seed = creature->seed;
-  const Genome* genome = &creature->genome;
   if (!a.replay.empty()) {
     // make the replay's folder now, so a bad path fails before the simulation
     if (Status s = make_parent_dir("--replay", a.replay); !s) return fail(s.error());
   }
 
-  // grow, then simulate
-  Development dev = develop(*genome, cfg.develop);
+  // develop (a graph genome grows), then simulate
+  auto dev = creature->develop();
   nlohmann::json out;
   out["genome"] = a.genome;
   out["seed"] = seed;
   out["settings"] = creature->settings;
   out["as_scored"] = creature->scored_settings;
   out["stored_fitness"] = creature->stored_fitness ? nlohmann::json(*creature->stored_fitness) : nlohmann::json(nullptr);
-  out["viable"] = dev.viable();
-  if (!dev.viable()) {
-    out["reason"] = dev.reason;
+  out["viable"] = static_cast<bool>(dev);
+  if (!dev) {
+    out["reason"] = dev.error();
     out["fitness"] = 0.0;
     out["distance"] = 0.0;
     out["warnings"] = nlohmann::json::array();
     if (a.json)
       std::printf("%s\n", out.dump().c_str());
     else
-      std::printf("%s: not viable: %s\n", creature->label.c_str(), dev.reason.c_str());
+      std::printf("%s: not viable: %s\n", creature->label.c_str(), dev.error().c_str());
     return 0;
   }
-  const CreatureModel& m = *dev.model;
+  const CreatureModel& m = *dev->body;
   Replay replay;
-  EvalResult res = evaluate(m, cfg, seed, a.replay.empty() ? nullptr : &replay);
+  EvalResult res = evaluate(*dev, cfg, seed, a.replay.empty() ? nullptr : &replay);
   if (!a.replay.empty()) {
-    ReplayInfo info{creature->label, seed, cfg.physics.dt, cfg.physics.friction};
+    ReplayInfo info{creature->label, seed, cfg.physics.dt, cfg.physics.friction, replay_creature(cfg)};
     if (Status s = save_replay(a.replay, m, replay, res, info); !s) return fail(s.error());
   }
 
@@ -74,7 +72,7 @@ int cmd_simulate(const SimulateArgs& a) {
   std::vector<double> each;
   double mean = 0;
   if (creature->scored_settings && creature->evaluations > 1)
-    mean = repeated_fitness(m, cfg, seed, creature->repeats(), res, &each);
+    mean = repeated_fitness(*dev, cfg, seed, creature->repeats(), res, &each);
 
   // report
   double bl = m.body_length();
@@ -84,13 +82,21 @@ int cmd_simulate(const SimulateArgs& a) {
     out["body_length"] = bl;
     out["parts"] = m.n_parts();
     out["joints"] = m.joints.size();
-    out["neurons"] = m.brain.n_neurons();
+    if (creature->graph_genome())
+      out["neurons"] = m.brain.n_neurons();
+    else
+      out["creature"] = creature->kind_name();  // its controller is not a graph brain
     out["seconds"] = res.seconds;
     out["steps"] = res.steps;
     out["failed"] = res.failed;
     out["failure"] = res.failure;
     out["note"] = res.note;
     if (!res.trial_fitness.empty()) out["trial_fitness"] = res.trial_fitness;
+    if (!res.metrics.empty()) {
+      nlohmann::json metrics = nlohmann::json::object();
+      for (const Metric& mt : res.metrics) metrics[mt.name] = mt.value;
+      out["metrics"] = metrics;
+    }
     if (!each.empty()) {
       out["evaluation_fitness"] = each;
       out["scored_fitness"] = mean;
@@ -106,9 +112,12 @@ int cmd_simulate(const SimulateArgs& a) {
     std::printf("%s\n", out.dump().c_str());
     return 0;
   }
-  std::printf("%s: %s, %d parts, %zu joints, %d neurons, body length %.3f m\n", creature->label.c_str(),
-              std::string(to_string(m.dialect)).c_str(), m.n_parts(), m.joints.size(),
-              m.brain.n_neurons(), bl);
+  if (creature->graph_genome())
+    std::printf("%s: %s, %d parts, %zu joints, %d neurons, body length %.3f m\n", creature->label.c_str(),
+                std::string(to_string(m.dialect)).c_str(), m.n_parts(), m.joints.size(), m.brain.n_neurons(), bl);
+  else  // a body and a controller of its kind: no graph brain's neurons to count
+    std::printf("%s: %s creature, %d parts, %zu joints, %zu effectors, body length %.3f m\n", creature->label.c_str(),
+                creature->kind_name().c_str(), m.n_parts(), m.joints.size(), m.effectors.size(), bl);
   for (const auto& w : res.warnings) std::printf("warning: %s\n", w.c_str());
   if (!creature->settings.empty()) std::printf("%s\n", creature->settings.c_str());
   std::printf("simulated %.2f s (%ld steps), seed %llu\n", res.seconds, res.steps,
@@ -126,6 +135,9 @@ int cmd_simulate(const SimulateArgs& a) {
     std::printf("projectile thrown %.4f m", res.distance);
     if (res.target_miss >= 0) std::printf(", passing %.4f m from the target", res.target_miss);
     std::printf("\n");
+  } else if (!res.metrics.empty()) {
+    // a task that names its own measures (levels, food, ...) says them in place of a distance
+    std::printf("%s\n", metrics_line(res.metrics).c_str());
   } else {
     std::printf("distance %.4f m (%.2f body lengths)\n", res.distance, bl > 0 ? res.distance / bl : 0.0);
   }

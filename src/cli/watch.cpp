@@ -26,9 +26,7 @@
 #include "cli/commands.h"
 #include "cli/creature.h"
 #include "core/files.h"
-#include "develop/develop.h"
 #include "eval/evaluate.h"
-#include "genome/genome_json.h"
 #include "io/config.h"
 #include "io/fitness_plot.h"
 #include "io/html_view.h"
@@ -61,14 +59,14 @@ struct Watched {
   EvalResult result;
 };
 
-// grow and simulate with a replay, as `simulate --replay` does
+// develop and simulate with a replay, as `simulate --replay` does
 Result<Watched> simulate(const Subject& c) {
-  Development dev = develop(c.genome, c.cfg.sim.develop);
-  if (!dev.viable()) return Error{c.label + ": not viable: " + dev.reason};
-  const CreatureModel& m = *dev.model;
+  auto dev = c.develop();
+  if (!dev) return Error{c.label + ": not viable: " + dev.error()};
+  const CreatureModel& m = *dev->body;
   Replay replay;
-  EvalResult res = evaluate(m, c.cfg.sim, c.seed, &replay);
-  ReplayInfo info{c.label, c.seed, c.cfg.sim.physics.dt, c.cfg.sim.physics.friction};
+  EvalResult res = evaluate(*dev, c.cfg.sim, c.seed, &replay);
+  ReplayInfo info{c.label, c.seed, c.cfg.sim.physics.dt, c.cfg.sim.physics.friction, replay_creature(c.cfg.sim)};
   std::string label = c.individual ? "individual " + std::to_string(c.individual->id) + " (generation " +
                                          std::to_string(c.individual->generation) + ")"
                                    : fs::path(c.label).stem().string();
@@ -80,6 +78,7 @@ void print_result(const Subject& c, const EvalResult& res) {
   std::printf("%s: simulated %.2f s, seed %llu, distance %.4f m, %s\n", c.label.c_str(), res.seconds,
               static_cast<unsigned long long>(c.seed), res.distance, fitness_line(res.fitness, c.scored_fitness()).c_str());
   if (std::string note = c.evaluations_note(); !note.empty()) std::printf("%s\n", note.c_str());
+  if (!res.metrics.empty()) std::printf("%s\n", metrics_line(res.metrics).c_str());
   if (res.failed) std::printf("failed: %s\n", res.failure.c_str());
 }
 

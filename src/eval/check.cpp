@@ -48,21 +48,22 @@ std::uint64_t check_seed(std::uint64_t seed, int k) {
   return stream_seed({seed, kCheckStream, static_cast<std::uint64_t>(k)});
 }
 
-CheckReport check_creature(const CreatureModel& m, const SimConfig& cfg, std::uint64_t seed,
-                           const CheckDef& def, const Repeats& repeats) {
+CheckReport check_creature(const Creature& creature, const SimConfig& cfg, std::uint64_t seed, const CheckDef& def,
+                           const Repeats& repeats) {
+  const CreatureModel& m = *creature.body;
   CheckReport rep;
   {
     SimConfig c = cfg;
     c.effector_spectrum = true;  // each effector's dominant frequency
-    rep.scored = evaluate(m, c, seed);
+    rep.scored = evaluate(creature, c, seed);
   }
   const double scored = rep.scored.fitness;
   // what selection saw: the mean (or least) over the creature's evaluations, folded as the run folded them
   rep.scored_fitness =
-      repeats.evaluations > 1 ? repeated_fitness(m, cfg, seed, repeats, rep.scored, &rep.scored_by_seed) : scored;
+      repeats.evaluations > 1 ? repeated_fitness(creature, cfg, seed, repeats, rep.scored, &rep.scored_by_seed) : scored;
   auto ratio = [](double f, double of) { return of > 0 ? f / of : 0; };
   auto run = [&](std::string name, const SimConfig& c, std::uint64_t s, double of, Replay* frames = nullptr) {
-    CheckVariant v{std::move(name), evaluate(m, c, s, frames), 0, {}};
+    CheckVariant v{std::move(name), evaluate(creature, c, s, frames), 0, {}};
     v.ratio = ratio(v.result.fitness, of);
     rep.variants.push_back(std::move(v));
     return rep.variants.back().ratio;
@@ -81,13 +82,13 @@ CheckReport check_creature(const CreatureModel& m, const SimConfig& cfg, std::ui
   std::vector<double> at_dt{scored};
   for (int k = 1; k < ks; ++k)
     at_dt.push_back(k <= def.other_seeds ? rep.variants[k - 1].result.fitness
-                                         : evaluate(m, cfg, check_seed(seed, k)).fitness);
+                                         : evaluate(creature, cfg, check_seed(seed, k)).fitness);
   const double base = median(at_dt);
   auto compare = [&](const std::string& name, const SimConfig& c) {
     if (ks == 1) return run(name, c, seed, scored);
-    CheckVariant v{name + " (median of " + std::to_string(ks) + " seeds)", evaluate(m, c, seed), 0, {}};
+    CheckVariant v{name + " (median of " + std::to_string(ks) + " seeds)", evaluate(creature, c, seed), 0, {}};
     std::vector<double> f{v.result.fitness};
-    for (int k = 1; k < ks; ++k) f.push_back(evaluate(m, c, check_seed(seed, k)).fitness);
+    for (int k = 1; k < ks; ++k) f.push_back(evaluate(creature, c, check_seed(seed, k)).fitness);
     v.seed_fitness = f;
     v.result.fitness = median(f);
     v.ratio = ratio(v.result.fitness, base);
@@ -163,7 +164,7 @@ CheckReport check_creature(const CreatureModel& m, const SimConfig& cfg, std::ui
     SimConfig c = cfg;
     c.task.seconds *= 2;
     Replay frames;
-    const EvalResult r = evaluate(m, c, seed, &frames);
+    const EvalResult r = evaluate(creature, c, seed, &frames);
     if (r.failed) {
       sustained_failure = "twice as long (" + fixed(c.task.seconds) + " s) it fails: " + r.failure;
     } else if (frames.frames.size() >= 3) {

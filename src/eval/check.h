@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "develop/creature_model.h"
+#include "eval/creature.h"
 #include "eval/evaluate.h"
 
 namespace bx {
@@ -118,8 +118,13 @@ struct CheckReport {
 /// solver, which has none; the motor lag when check.motor_lag is 0, the half
 /// rate when check.min_half_rate is 0, and both for a creature without
 /// effectors.
-CheckReport check_creature(const CreatureModel& m, const SimConfig& cfg, std::uint64_t seed,
-                           const CheckDef& def, const Repeats& repeats = {});
+///
+/// The creature is its body driven by its controller, whatever its kind
+/// (develop_creature); the variants that hold its joints or clamp its
+/// effectors do so through the config (SimConfig::hold_joints,
+/// SimConfig::effector_clamp), below any controller.
+CheckReport check_creature(const Creature& c, const SimConfig& cfg, std::uint64_t seed, const CheckDef& def,
+                           const Repeats& repeats = {});
 
 /// The rest law (docs/physics.md, tests/eval/rest_law_test.cpp): with its
 /// effectors held constant, a settled creature's centre of mass moves less

@@ -178,6 +178,10 @@ std::string finer_step_text(const Repeats& r);
 double repeated_fitness(const CreatureModel& body, const ControllerModel& controller, const SimConfig& cfg,
                         std::uint64_t seed, const Repeats& r, const EvalResult& first,
                         std::vector<double>* each = nullptr);
+inline double repeated_fitness(const Creature& c, const SimConfig& cfg, std::uint64_t seed, const Repeats& r,
+                               const EvalResult& first, std::vector<double>* each = nullptr) {
+  return repeated_fitness(*c.body, *c.controller, cfg, seed, r, first, each);
+}
 /// A graph creature's body, driven by its own brain.
 double repeated_fitness(const CreatureModel& m, const SimConfig& cfg, std::uint64_t seed, const Repeats& r,
                         const EvalResult& first, std::vector<double>* each = nullptr);

@@ -754,7 +754,7 @@ Result<Genome> genome_from_json(const nlohmann::json& j, std::string_view source
   return g;
 }
 
-Result<Genome> genome_from_string(std::string_view text, std::string_view source) {
+Result<nlohmann::json> strict_json_from_string(std::string_view text, std::string_view source) {
   if (text.size() > kMaxGenomeBytes)
     return Error{with_source(source, "too large for a genome: " + std::to_string(text.size()) +
                                          " bytes, above " + std::to_string(kMaxGenomeBytes))};
@@ -777,7 +777,13 @@ Result<Genome> genome_from_string(std::string_view text, std::string_view source
     }
     return Error{with_source(source, where + ": invalid JSON: " + what)};
   }
-  return genome_from_json(b.root, source);
+  return std::move(b.root);
+}
+
+Result<Genome> genome_from_string(std::string_view text, std::string_view source) {
+  auto j = strict_json_from_string(text, source);
+  if (!j) return Error{j.error()};
+  return genome_from_json(*j, source);
 }
 
 Result<Genome> load_genome(const std::string& path) {

@@ -31,6 +31,13 @@ inline constexpr int kMaxGenomeDepth = 64;
 /// "<source>: <path>: <what is wrong>, got <value>".
 Result<Genome> genome_from_json(const nlohmann::json& j, std::string_view source);
 
+/// The JSON value of a genome file's text (or another genotype file's:
+/// genome/genotype_file.h), read strictly: text longer than kMaxGenomeBytes,
+/// nesting deeper than kMaxGenomeDepth and a field given twice are errors, and
+/// a syntax error names `source`, the line, column and byte where the parser
+/// stopped. Linear in the text's length.
+Result<nlohmann::json> strict_json_from_string(std::string_view text, std::string_view source);
+
 /// Genome from JSON text; a syntax error names `source`, the line, column and
 /// byte where the parser stopped. Text longer than kMaxGenomeBytes, nesting
 /// deeper than kMaxGenomeDepth and a field given twice are errors. Linear in

@@ -349,6 +349,11 @@ Result<std::string> override_toml(const std::string& o) {
 
 }  // namespace
 
+std::string evolved_name(const RunConfig& cfg) {
+  if (cfg.sim.creature == CreatureKind::Graph) return std::string(to_string(cfg.dialect));
+  return std::string(creature_kind_row(cfg.sim.creature).name);
+}
+
 RunConfig default_run_config(Dialect d) {
   RunConfig c;
   c.dialect = d;

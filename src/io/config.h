@@ -27,6 +27,10 @@ struct RunConfig {
   friend bool operator==(const RunConfig&, const RunConfig&) = default;
 };
 
+/// What a run of this config evolves, in a word: a graph genome's dialect
+/// (sims1994, ...), or another creature kind's name (its genotype.kind).
+std::string evolved_name(const RunConfig& cfg);
+
 /// The defaults of a dialect (its paper's constants).
 RunConfig default_run_config(Dialect d);
 

@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -50,6 +51,10 @@ json sensor_json(const SensorModel& s) {
 
 }  // namespace
 
+std::string replay_creature(const SimConfig& cfg) {
+  return cfg.creature == CreatureKind::Graph ? std::string() : std::string(creature_kind_row(cfg.creature).name);
+}
+
 std::string replay_to_string(const CreatureModel& m, const Replay& r, const EvalResult& res,
                              const ReplayInfo& info) {
   json j;
@@ -57,7 +62,10 @@ std::string replay_to_string(const CreatureModel& m, const Replay& r, const Eval
   j["version"] = 1;
   j["bestiary"] = std::string(bestiary_version());
   j["genome"] = info.genome_source;
-  j["dialect"] = std::string(to_string(m.dialect));
+  if (info.creature.empty())
+    j["dialect"] = std::string(to_string(m.dialect));
+  else
+    j["creature"] = info.creature;
   // a JSON number above 2^53 loses digits in JavaScript (the viewer): such a
   // seed is written as its decimal string
   if (info.seed > (std::uint64_t{1} << 53))
@@ -107,10 +115,20 @@ std::string replay_to_string(const CreatureModel& m, const Replay& r, const Eval
                       {"limits", limits_json(jm.limits)}});
   }
   j["joints"] = joints;
+  // a graph creature's neurons are its brain's; another kind's controller
+  // (or one whose frames hold another count) has signals of its own
+  // (a controller may hold none before its first step: its frames are
+  // padded with zeros to the most any frame holds, as frame 0 is all zeros)
   json neurons = json::array();
-  for (int i = 0; i < m.brain.n_neurons(); ++i)
-    neurons.push_back({{"part", m.brain.neuron_part[i]},
-                       {"fn", std::string(all_neuron_fns()[m.brain.fn[i]].name)}});
+  std::size_t internals = r.frames.empty() ? static_cast<std::size_t>(m.brain.n_neurons()) : 0;
+  for (const auto& f : r.frames) internals = std::max(internals, f.neurons.size());
+  if (info.creature.empty() && internals == static_cast<std::size_t>(m.brain.n_neurons())) {
+    for (int i = 0; i < m.brain.n_neurons(); ++i)
+      neurons.push_back({{"part", m.brain.neuron_part[i]},
+                         {"fn", std::string(all_neuron_fns()[m.brain.fn[i]].name)}});
+  } else {
+    for (std::size_t i = 0; i < internals; ++i) neurons.push_back({{"part", -1}, {"fn", "controller"}});
+  }
   j["neurons"] = neurons;
   json effectors = json::array();
   const std::vector<double>& hz = res.diagnostics.effector_hz;
@@ -135,6 +153,7 @@ std::string replay_to_string(const CreatureModel& m, const Replay& r, const Eval
                        round_to(f.poses[i + 6], 1e-5)});
     json nv = json::array(), ev = json::array(), sv = json::array(), av = json::array();
     for (double v : f.neurons) nv.push_back(round_to(v, 1e-4));
+    while (nv.size() < internals) nv.push_back(0.0);
     for (double v : f.effectors) ev.push_back(round_to(v, 1e-4));
     for (double v : f.sensors) sv.push_back(round_to(v, 1e-4));
     // joint angles: one list per joint, one value per degree of freedom
@@ -159,6 +178,12 @@ std::string replay_to_string(const CreatureModel& m, const Replay& r, const Eval
                  {"seconds", res.seconds},   {"steps", res.steps},
                  {"warnings", res.warnings}};
   if (!res.trial_fitness.empty()) j["result"]["trial_fitness"] = res.trial_fitness;
+  // the task's own measures by name, when it has any
+  if (!res.metrics.empty()) {
+    json metrics = json::object();
+    for (const Metric& mt : res.metrics) metrics[mt.name] = mt.value;
+    j["result"]["metrics"] = metrics;
+  }
   if (m.projectile >= 0) {
     j["result"]["throw_distance"] = res.distance;
     j["result"]["target_miss"] = res.target_miss >= 0 ? json(res.target_miss) : json(nullptr);

@@ -7,10 +7,9 @@
 #include <string>
 #include <utility>
 
-#include "develop/develop.h"
+#include "eval/creature.h"
 #include "eval/evaluate.h"
-#include "genome/genome_json.h"
-#include "genome/graph_genotype.h"
+#include "genome/genotype_file.h"
 #include "io/replay_file.h"
 
 namespace bx {
@@ -62,7 +61,7 @@ Result<RunPage> gather_run_page(const RunStore& store, const std::string& source
   RunView& run = page.run;
   run.name = store.meta("name");
   run.seed = std::to_string(master);
-  run.dialect = std::string(to_string(cfg.dialect));
+  run.dialect = evolved_name(cfg);
   run.algorithm = cfg.evolution.algorithm == Algorithm::Generational ? "generational" : "steady state";
   run.evaluation_score = score_name(cfg.sim.trial_score);
   run.evaluation_half_step = cfg.evolution.elite_half_step;
@@ -117,21 +116,19 @@ Result<RunPage> gather_run_page(const RunStore& store, const std::string& source
   std::map<std::int64_t, int> replay_of;
   for (std::int64_t id : replay_choice(run.best_id, *best_line, bests, others, cap)) {
     const Individual& ind = members.at(id);
-    const Genome* genome = graph_genome(*ind.genotype);
-    if (!genome) return Error{"individual " + std::to_string(id) + " is a genotype of kind " +
-                              std::string(ind.genotype->kind()) + ": it has no body to show"};
-    Development dev = develop(*genome, sim.develop);
-    if (!dev.viable()) continue;
+    auto creature = develop_creature(*ind.genotype, sim);
+    if (!creature) continue;  // not viable
     Replay replay;
     std::uint64_t seed = ind.seed;  // the seed stored with it
-    EvalResult res = evaluate(*dev.model, sim, seed, &replay);
-    ReplayInfo info{source + " individual " + std::to_string(id), seed, sim.physics.dt, sim.physics.friction};
+    EvalResult res = evaluate(*creature, sim, seed, &replay);
+    ReplayInfo info{source + " individual " + std::to_string(id), seed, sim.physics.dt, sim.physics.friction,
+                    replay_creature(sim)};
     replay_of[id] = static_cast<int>(page.replays.size());
     page.replays.push_back({"individual " + std::to_string(id) + ", generation " + std::to_string(ind.generation),
-                            replay_to_string(*dev.model, replay, res, info), genome_to_string(*genome)});
+                            replay_to_string(*creature->body, replay, res, info), genotype_text(*ind.genotype)});
   }
   if (!replay_of.count(run.best_id))
-    return Error{"the best, individual " + std::to_string(run.best_id) + ", cannot be grown"};
+    return Error{"the best, individual " + std::to_string(run.best_id) + ", cannot be developed"};
   for (const auto& [id, ind] : members) {
     auto r = replay_of.find(id);
     run.members.push_back({id, ind.generation, ind.fitness, ind.parent1, ind.parent2, ind.op,

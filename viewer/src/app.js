@@ -93,6 +93,7 @@ export function createViewer(ui, data) {
     s.entry = entry;
     s.T = duration(entry.replay.frames);
     s.radius = creatureRadius(entry.replay);
+    stage.fit(s.radius);
     s.throw = throwOf(entry.replay);
     bodies = createBodies(entry.replay);
     bodies.showJoints(s.joints);

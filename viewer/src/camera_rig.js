@@ -4,7 +4,7 @@
 // projectile's too). All use three's OrbitControls with z up.
 import { PerspectiveCamera, Vector3 } from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
-import { followTarget, nextMode, partTarget, pathBounds, viewDirection } from './follow.js';
+import { followTarget, nextMode, partTarget, pathBounds, viewDirection, viewScale } from './follow.js';
 
 /** A camera rig on `canvas`, framed for a creature of `radius` travelling `frames`. */
 export function createCameraRig(canvas) {
@@ -38,6 +38,11 @@ export function createCameraRig(canvas) {
       frames = newFrames;
       radius = newRadius;
       projectile = newProjectile;
+      // the depth range grows with a large creature (viewScale)
+      const k = viewScale(radius);
+      camera.near = 0.02 * k;
+      camera.far = 500 * k;
+      camera.updateProjectionMatrix();
       // seen across the way it goes: the creature's, or a catapult's throw
       viewDir.set(...viewDirection(frames, 0.5, 0.42, projectile));
       overDir.set(...viewDirection(frames, 0.3, 0.9, projectile));

@@ -15,10 +15,14 @@ export function infoRows(entry) {
   const res = r.result ?? {};
   const th = throwOf(r);
   const num = (v, f) => (typeof v === 'number' ? f(v) : '?');
+  // a graph genome's dialect, or another creature kind's name (whose
+  // controller has signals of its own rather than a graph brain's neurons)
+  const kind = typeof r.creature === 'string' ? ['creature', r.creature] : ['dialect', r.dialect];
+  const brain = typeof r.creature === 'string' ? 'controller signals' : 'neurons';
   const rows = [
     ['genome', r.genome],
-    ['dialect', r.dialect],
-    ['body', `${r.parts.length} parts, ${r.joints.length} joints, ${r.neurons.length} neurons`],
+    kind,
+    ['body', `${r.parts.length} parts, ${r.joints.length} joints, ${r.neurons.length} ${brain}`],
     ['seed', String(r.seed)],
     ['simulated', num(res.seconds, seconds)],
   ];

@@ -6,6 +6,7 @@ import {
   MeshStandardMaterial, PCFShadowMap, PlaneGeometry, RepeatWrapping, Scene, SRGBColorSpace,
   WebGLRenderer,
 } from 'three';
+import { viewScale } from './follow.js';
 
 const SKY = 0xcad9e6;
 const GROUND_SIZE = 400; // m
@@ -74,6 +75,18 @@ export function createStage(canvas) {
 
   return {
     renderer, scene, sun,
+    /**
+     * Sizes the fog and the ground for a creature of `radius` (m): as built
+     * for one of a metre or two, scaled by viewScale(radius) beyond; the
+     * grid's cells stay 1 m.
+     */
+    fit(radius) {
+      const k = viewScale(radius);
+      scene.fog.near = 30 * k;
+      scene.fog.far = 120 * k;
+      ground.scale.set(k, k, 1);
+      ground.material.map.repeat.set((GROUND_SIZE * k) / TILE, (GROUND_SIZE * k) / TILE);
+    },
     /** Centres the sun's shadow box of half-width `radius` (m) on point p. */
     focus(p, radius) {
       const d = Math.max(radius, 1) * 6;

@@ -1,7 +1,7 @@
 // The follow camera's target and framing.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { creatureRadius, followTarget, nextMode, partTarget, pathBounds, viewDirection } from '../src/follow.js';
+import { creatureRadius, followTarget, nextMode, partTarget, pathBounds, viewDirection, viewScale } from '../src/follow.js';
 import { makeCatapult, makeReplay } from './fixture.mjs';
 
 const near = (a, b, eps = 1e-6) => assert.ok(Math.abs(a - b) < eps, `${a} != ${b}`);
@@ -77,4 +77,10 @@ test("a catapult is seen across its throw's direction", () => {
   r.frames.forEach((f) => (f.poses[2] = [0, f.poses[2][0], f.poses[2][2], 1, 0, 0, 0]));
   const e = viewDirection(r.frames, 0.5, 0.42, 2);
   assert.ok(e[0] > 0.5 && e[1] > 0, JSON.stringify(e));
+});
+
+test('the view keeps its size for creatures of a metre or two and grows with larger ones', () => {
+  assert.equal(viewScale(0.1), 1);
+  assert.equal(viewScale(2), 1);
+  assert.equal(viewScale(45), 22.5);
 });

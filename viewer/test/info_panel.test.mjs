@@ -15,6 +15,17 @@ test('a creature: its body, distance and fitness', () => {
   assert.equal(r.release, undefined);
 });
 
+test('a creature of another kind: its kind, and its controller\'s signals for neurons', () => {
+  const replay = makeReplay();
+  delete replay.dialect;
+  replay.creature = 'river';
+  const r = rows(replay);
+  assert.equal(r.creature, 'river');
+  assert.equal(r.dialect, undefined);
+  assert.equal(r.body, '2 parts, 1 joints, 1 controller signals');
+  assert.equal(rows(makeReplay()).dialect, 'sims1994');
+});
+
 test('a catapult: its projectile, the release, the throw distance', () => {
   const r = rows(makeCatapult());
   assert.equal(r.projectile, 'part 2');
