@@ -32,6 +32,8 @@ kind = "river"
 seconds = 2
 [motor]
 model = "pd"
+[physics]
+powered_stops = "separate"
 [evolution]
 algorithm = "steady_state"
 population = 6
