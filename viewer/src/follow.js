@@ -56,7 +56,7 @@ export function creatureRadius(replay) {
  * How much larger than a creature of metres the view must be for one of
  * `radius` (m): 1 up to 2 m, then radius / 2. The fog, the camera's depth
  * range and the ground are sized for creatures of a metre or two; a larger
- * one (the river crossing's quadruped, 40 m cells) scales them by this so it
+ * one (a creature grown to giant blocks) scales them by this so it
  * is not lost in the fog.
  */
 export function viewScale(radius) {
