@@ -48,6 +48,7 @@ struct World::Impl {
     dJointID id = nullptr;
     dJointID amotor = nullptr;  // spherical joints: Euler angular motor for angles/limits/motors
     dJointID motor = nullptr;   // PoweredStops::Separate: the hinge's or universal's own motor
+    mutable bool pd_softened = false;  // drive_pd gave the motor's rows CFM 1/kd
     JointType type = JointType::Fixed;
     int parent = 0, child = 0;
     bool broken = false;
@@ -155,9 +156,9 @@ struct World::Impl {
       if (j.broken) return;
       dJointSetAMotorParam(j.motor, dParamVel + dParamGroup * dof, speed);
       dJointSetAMotorParam(j.motor, dParamFMax + dParamGroup * dof, force);
-      // the world's CFM, which the row had from its creation, in case a PD
-      // motor softened it (drive_pd)
-      dJointSetAMotorParam(j.motor, dParamCFM + dParamGroup * dof, def.cfm);
+      // the world's CFM, which the row had from its creation, when a PD
+      // motor softened it (drive_pd); other motors never touch it
+      if (j.pd_softened) dJointSetAMotorParam(j.motor, dParamCFM + dParamGroup * dof, def.cfm);
       return;
     }
     set_param(j, dof, dParamVel, speed);
@@ -180,6 +181,7 @@ struct World::Impl {
     dJointSetAMotorParam(j.motor, dParamVel + dParamGroup * dof, kp_err / kd);
     dJointSetAMotorParam(j.motor, dParamFMax + dParamGroup * dof, dInfinity);
     dJointSetAMotorParam(j.motor, dParamCFM + dParamGroup * dof, 1 / kd);
+    j.pd_softened = true;
   }
 
   // joint parameter of one degree of freedom

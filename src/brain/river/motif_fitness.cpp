@@ -8,16 +8,12 @@
 #include <numbers>
 #include <string>
 
+#include "core/text.h"
+
 namespace bx {
 
 namespace {
 
-// a number as %g prints it, for messages
-std::string number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
 
 // How many steps of dt make `seconds`, when check_motif_fitness_def has
 // accepted them.
@@ -160,21 +156,21 @@ MotifScore score(const Motif& m, const MotifFitnessDef& d, bool dominant_frequen
 
 Status check_motif_fitness_def(const MotifFitnessDef& d) {
   const auto bad = [](const std::string& field, double v, const std::string& why) {
-    return Error{"motif fitness: " + field + " is " + number(v) + ", " + why};
+    return Error{"motif fitness: " + field + " is " + g_number(v) + ", " + why};
   };
   if (!(d.seconds > 0) || !std::isfinite(d.seconds)) return bad("seconds", d.seconds, "not a finite time above 0");
   if (!(d.dt > 0) || !std::isfinite(d.dt)) return bad("dt", d.dt, "not a finite step above 0");
   const double steps = d.seconds / d.dt;
   if (std::abs(steps - std::round(steps)) > 1e-9 * steps)
-    return bad("seconds", d.seconds, "not a whole number of steps of dt " + number(d.dt));
-  if (std::round(steps) < 4) return bad("seconds", d.seconds, "fewer than 4 steps of dt " + number(d.dt));
+    return bad("seconds", d.seconds, "not a whole number of steps of dt " + g_number(d.dt));
+  if (std::round(steps) < 4) return bad("seconds", d.seconds, "fewer than 4 steps of dt " + g_number(d.dt));
   const double bin = d.target_hz * d.seconds;
   if (!std::isfinite(bin) || std::abs(bin - std::round(bin)) > 1e-9 * std::max(1.0, bin))
     return bad("target_hz", d.target_hz,
-               "not a whole number of cycles in " + number(d.seconds) + " s (a bin of the transform)");
+               "not a whole number of cycles in " + g_number(d.seconds) + " s (a bin of the transform)");
   if (std::round(bin) < 1 || 2 * std::round(bin) >= std::round(steps))
     return bad("target_hz", d.target_hz,
-               "not between 0 and the Nyquist frequency " + number(0.5 / d.dt) + " Hz (exclusive)");
+               "not between 0 and the Nyquist frequency " + g_number(0.5 / d.dt) + " Hz (exclusive)");
   if (!std::isfinite(d.high_input)) return bad("high_input", d.high_input, "not a finite number");
   if (!(d.amplitude > 0) || !std::isfinite(d.amplitude))
     return bad("amplitude", d.amplitude, "not a finite amplitude above 0");
@@ -216,9 +212,9 @@ Status check_motif_gene_def(const MotifGeneDef& d) {
       {"weight_max", d.weight_max}, {"bias_max", d.bias_max}, {"tau_min", d.tau_min}, {"tau_max", d.tau_max}};
   for (const auto& [name, v] : bounds)
     if (!(v > 0) || !std::isfinite(v))
-      return Error{"motif genes: " + std::string(name) + " is " + number(v) + ", not a finite number above 0"};
+      return Error{"motif genes: " + std::string(name) + " is " + g_number(v) + ", not a finite number above 0"};
   if (d.tau_min > d.tau_max)
-    return Error{"motif genes: tau_min " + number(d.tau_min) + " is above tau_max " + number(d.tau_max)};
+    return Error{"motif genes: tau_min " + g_number(d.tau_min) + " is above tau_max " + g_number(d.tau_max)};
   if (d.input < 0 || d.input >= kMotifNeurons)
     return Error{"motif genes: input is " + std::to_string(d.input) + ", not a neuron 0..2"};
   if (d.output < 0 || d.output >= kMotifNeurons)
@@ -233,7 +229,7 @@ Result<Motif> motif_from_genes(std::span<const double> genes, const MotifGeneDef
                  " expected"};
   for (std::size_t g = 0; g < genes.size(); ++g)
     if (!(genes[g] >= -1 && genes[g] <= 1))
-      return Error{"motif genes: gene " + std::to_string(g) + " is " + number(genes[g]) +
+      return Error{"motif genes: gene " + std::to_string(g) + " is " + g_number(genes[g]) +
                    ", not a finite number in [-1, 1]"};
 
   constexpr std::size_t n = kMotifNeurons;

@@ -6,16 +6,12 @@
 #include <string>
 #include <utility>
 
+#include "core/text.h"
+
 namespace bx {
 
 namespace {
 
-// a number as %g prints it, for messages
-std::string number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
 
 std::string index_name(const char* field, int i) { return std::string(field) + "[" + std::to_string(i) + "]"; }
 
@@ -27,12 +23,12 @@ Status check_motif(const Motif& m) {
     for (int j = 0; j < kMotifNeurons; ++j)
       if (!std::isfinite(m.w[ui][static_cast<std::size_t>(j)]))
         return Error{"motif: w[" + std::to_string(i) + "][" + std::to_string(j) + "] is " +
-                     number(m.w[ui][static_cast<std::size_t>(j)]) + ", not a finite number"};
+                     g_number(m.w[ui][static_cast<std::size_t>(j)]) + ", not a finite number"};
     if (!(m.tau[ui] > 0) || !std::isfinite(m.tau[ui]))
-      return Error{"motif: " + index_name("tau", i) + " is " + number(m.tau[ui]) +
+      return Error{"motif: " + index_name("tau", i) + " is " + g_number(m.tau[ui]) +
                    ", not a finite time constant above 0"};
     if (!std::isfinite(m.alpha[ui]))
-      return Error{"motif: " + index_name("alpha", i) + " is " + number(m.alpha[ui]) +
+      return Error{"motif: " + index_name("alpha", i) + " is " + g_number(m.alpha[ui]) +
                    ", not a finite number"};
   }
   if (m.input < 0 || m.input >= kMotifNeurons)

@@ -8,6 +8,8 @@
 #include <string>
 #include <utility>
 
+#include "core/text.h"
+
 namespace bx {
 
 namespace {
@@ -18,15 +20,9 @@ double point(std::span<const double> f, int width, int height, int i, int j) {
   return f[static_cast<std::size_t>(j) * static_cast<std::size_t>(width) + static_cast<std::size_t>(i)];
 }
 
-// a number as %g prints it, for messages
-std::string number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
 
 Error bad(const char* field, double value, const char* must) {
-  return Error{"shunting model: " + std::string(field) + " is " + number(value) + ", must be " + must};
+  return Error{"shunting model: " + std::string(field) + " is " + g_number(value) + ", must be " + must};
 }
 
 }  // namespace

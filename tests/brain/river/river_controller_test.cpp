@@ -7,20 +7,11 @@
 
 #include <vector>
 
+#include "brain/river/found_motif.h"
 #include "core/rng.h"
 
 namespace bx {
 namespace {
-
-Motif some_motif() {
-  Motif m;
-  m.w = {{{0.5, -1, 0.2}, {1.5, 0.1, -0.7}, {0, 2, -0.3}}};
-  m.tau = {0.2, 0.3, 0.5};
-  m.alpha = {0.1, -0.4, 0.6};
-  m.input = 0;
-  m.output = 2;
-  return m;
-}
 
 // Genes whose DN, on a stone, asks to put down (action -1) and sets the
 // resource's iota to 1; every other weight random.
@@ -32,7 +23,7 @@ RiverBrainModel stone_model() {
   g[0 * 6 + river_cell::kStone] = 2;          // stone -> hidden 0
   g[24 + river_cell::kResource * 4 + 0] = 3;  // hidden 0 -> resource's iota
   g[24 + 0 * 4 + 0] = -3;                     // hidden 0 -> action
-  auto m = make_river_brain_model(RiverBrainDef{}, some_motif(), g);
+  auto m = make_river_brain_model(RiverBrainDef{}, found_motif(), g);
   EXPECT_TRUE(m.ok()) << m.error();
   return *m;
 }
