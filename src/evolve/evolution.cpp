@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <numeric>
+#include <map>
 #include <set>
 
 #include <cassert>
@@ -17,10 +18,21 @@ namespace {
 // purposes of the random streams, so no two uses share one
 enum Stream : std::uint64_t { kInitial = 1, kBreed = 2, kTournament = 3, kEvaluation = 4 };
 
-// better first; equal fitness: older first (deterministic)
+// better first; equal fitness: older first (deterministic); one not yet
+// evaluated (tournament_evaluates = all) after every evaluated one
 bool better(const Individual& a, const Individual& b) {
+  if ((a.evaluations == 0) != (b.evaluations == 0)) return b.evaluations == 0;
   if (a.fitness != b.fitness) return a.fitness > b.fitness;
   return a.id < b.id;
+}
+
+// the fitness an evaluation gives, failures at `failed_fitness` and counted
+double outcome_fitness(const EvalOutcome& o, double failed_fitness, long& failed) {
+  if (!o.viable || o.result.failed) {
+    ++failed;
+    return failed_fitness;
+  }
+  return o.result.fitness;
 }
 
 }  // namespace
@@ -97,25 +109,34 @@ Evolution::Child Evolution::random_child(Rng& rng, long& rejected) const {
   }
 }
 
+// a child given its id, generation and seed, not yet evaluated
+Individual Evolution::unevaluated(Child c, EvolutionState& s) const {
+  Individual ind;
+  ind.id = s.next_id++;
+  ind.genotype = std::move(c.genotype);
+  ind.parent1 = c.parent1;
+  ind.parent2 = c.parent2;
+  ind.op = c.op;
+  ind.generation = s.generation + 1;
+  ind.seed = eval_seed(ind.id);
+  ind.evaluations = 0;
+  return ind;
+}
+
 std::vector<Individual> Evolution::evaluate(std::vector<Child> children, EvolutionState& s,
-                                            Evaluator& eval, long& failed) const {
+                                            Evaluator& eval, long& failed, MetricTally& tally) const {
   std::vector<Individual> born(children.size());
   std::vector<EvalJob> jobs(children.size());
   for (std::size_t k = 0; k < children.size(); ++k) {
-    Individual& ind = born[k];
-    ind.id = s.next_id++;
-    ind.genotype = std::move(children[k].genotype);
-    ind.parent1 = children[k].parent1;
-    ind.parent2 = children[k].parent2;
-    ind.op = children[k].op;
-    ind.generation = s.generation + 1;
-    ind.seed = eval_seed(ind.id);
-    jobs[k] = {ind.genotype.get(), ind.seed};
+    born[k] = unevaluated(std::move(children[k]), s);
+    born[k].evaluations = 1;
+    jobs[k] = {born[k].genotype.get(), born[k].seed};
   }
   std::vector<EvalOutcome> out = eval.evaluate(jobs);
   for (std::size_t k = 0; k < born.size(); ++k) {
     Individual& ind = born[k];
     const EvalResult& r = out[k].result;
+    tally.add(out[k].viable && !r.failed ? r.metrics : std::vector<Metric>{});
     if (!out[k].viable) {
       ind.failure = "not viable: " + out[k].reason;
       ind.fitness = evo_.failed_fitness;
@@ -182,11 +203,7 @@ std::vector<Individual> Evolution::reevaluate_elite(EvolutionState& s, Evaluator
     for (auto [i, count] : due) {
       Individual& ind = s.population[i];
       for (int c = 0; c < count; ++c, ++at) {
-        double f = out[at].result.fitness;
-        if (!out[at].viable || out[at].result.failed) {
-          f = evo_.failed_fitness;
-          ++failed;
-        }
+        const double f = outcome_fitness(out[at], evo_.failed_fitness, failed);
         ind.fitness = fold_score(fold_, ind.fitness, ind.evaluations, f);
         ++ind.evaluations;
       }
@@ -210,7 +227,8 @@ GenerationStats Evolution::stats(const EvolutionState& s) const {
   st.generation = s.generation;
   st.evaluations = s.evaluations;
   std::vector<double> f;
-  for (const auto& ind : s.population) f.push_back(ind.fitness);
+  for (const auto& ind : s.population)
+    if (ind.evaluations > 0) f.push_back(ind.fitness);
   if (f.empty()) return st;
   auto best = std::min_element(s.population.begin(), s.population.end(), better);
   st.best = best->fitness;
@@ -235,11 +253,13 @@ GenerationResult Evolution::initial(EvolutionState& s, Evaluator& eval) const {
     children.push_back(random_child(rng, rejected));
   }
   GenerationResult res;
-  res.born = evaluate(std::move(children), s, eval, failed);
+  MetricTally tally;
+  res.born = evaluate(std::move(children), s, eval, failed, tally);
   s.population = res.born;
   res.reevaluated = reevaluate_elite(s, eval, failed, res.born);
   s.generation = 0;
   res.stats = stats(s);
+  res.stats.metrics = tally.stats();
   res.stats.rejected = rejected;
   res.stats.failed = failed;
   return res;
@@ -274,15 +294,47 @@ GenerationResult Evolution::generational(EvolutionState& s, Evaluator& eval) con
   }
 
   GenerationResult res;
-  res.born = evaluate(std::move(children), s, eval, failed);
+  MetricTally tally;
+  res.born = evaluate(std::move(children), s, eval, failed, tally);
   s.population = std::move(survivors);
   s.population.insert(s.population.end(), res.born.begin(), res.born.end());
   res.reevaluated = reevaluate_elite(s, eval, failed, res.born);
   s.generation = g;
   res.stats = stats(s);
+  res.stats.metrics = tally.stats();
   res.stats.rejected = rejected;
   res.stats.failed = failed;
   return res;
+}
+
+// Evaluates the population members `members` (tournament_evaluates = all),
+// each afresh under the seed of its next evaluation: `fresh` gets each one's
+// fitness in this evaluation, its own fitness folds it in, and `evaluated`
+// gets it as it then stands.
+void Evolution::tournaments(EvolutionState& s, Evaluator& eval, std::vector<int> members, std::vector<double>& fresh,
+                            long& failed, MetricTally& tally, std::vector<Individual>& evaluated) const {
+  std::vector<EvalJob> jobs;
+  for (int i : members) {
+    const Individual& ind = s.population[i];
+    jobs.push_back({ind.genotype.get(), repeat_seed(ind.seed, ind.evaluations)});
+  }
+  std::vector<EvalOutcome> out = eval.evaluate(jobs);
+  fresh.assign(s.population.size(), 0.0);
+  for (std::size_t k = 0; k < members.size(); ++k) {
+    Individual& ind = s.population[members[k]];
+    const double f = outcome_fitness(out[k], evo_.failed_fitness, failed);
+    tally.add(out[k].viable && !out[k].result.failed ? out[k].result.metrics : std::vector<Metric>{});
+    if (ind.evaluations == 0) {  // its first: the one a replay shows
+      ind.distance = out[k].viable ? out[k].result.distance : 0;
+      ind.failure = !out[k].viable ? "not viable: " + out[k].reason
+                    : out[k].result.failed ? out[k].result.failure : out[k].result.note;
+    }
+    ind.fitness = fold_score(fold_, ind.fitness, ind.evaluations, f);
+    ++ind.evaluations;
+    fresh[members[k]] = f;
+    evaluated.push_back(ind);
+  }
+  s.evaluations += static_cast<long>(jobs.size());
 }
 
 GenerationResult Evolution::steady_state(EvolutionState& s, Evaluator& eval) const {
@@ -292,8 +344,11 @@ GenerationResult Evolution::steady_state(EvolutionState& s, Evaluator& eval) con
   // that elites evaluated again (elite_evaluations) do not shift them
   const long until = std::min(total, static_cast<long>(s.next_id) + every);
   const int pop = static_cast<int>(s.population.size());
+  const bool all = evo_.tournament_evaluates == TournamentEvaluates::All;
   long rejected = 0, failed = 0;
+  MetricTally tally;
   GenerationResult res;
+  std::vector<Individual> evaluated;  // members the tournaments evaluated, as they stood after each
 
   while (s.next_id < until) {
     // one batch of tournaments over disjoint triples of the current population
@@ -304,12 +359,20 @@ GenerationResult Evolution::steady_state(EvolutionState& s, Evaluator& eval) con
     std::iota(idx.begin(), idx.end(), 0);
     for (int i = 0; i < 3 * n; ++i) std::swap(idx[i], idx[i + rng.below(pop - i)]);
 
+    // tournament_evaluates = all: the three compete on evaluations in fresh worlds
+    std::vector<double> fresh;
+    if (all) tournaments(s, eval, std::vector<int>(idx.begin(), idx.begin() + 3 * n), fresh, failed, tally, evaluated);
+    auto wins = [&](int x, int y) {
+      if (!all) return better(s.population[x], s.population[y]);
+      if (fresh[x] != fresh[y]) return fresh[x] > fresh[y];
+      return s.population[x].id < s.population[y].id;
+    };
+
     std::vector<Child> children;
     std::vector<int> replaced;
     for (int t = 0; t < n; ++t) {
       std::array<int, 3> tri = {idx[3 * t], idx[3 * t + 1], idx[3 * t + 2]};
-      std::sort(tri.begin(), tri.end(),
-                [&](int x, int y) { return better(s.population[x], s.population[y]); });
+      std::sort(tri.begin(), tri.end(), wins);
       const Individual &a = s.population[tri[0]], &b = s.population[tri[1]];
       // four mutations of the best, crossover + mutation or grafting +
       // mutation (5.2: a third each), in the shares p_asexual, p_crossover, p_graft
@@ -329,13 +392,28 @@ GenerationResult Evolution::steady_state(EvolutionState& s, Evaluator& eval) con
       children.push_back(viable(make(rng), rng, rejected, make));
       replaced.push_back(tri[2]);
     }
-    std::vector<Individual> born = evaluate(std::move(children), s, eval, failed);
+    std::vector<Individual> born;
+    if (all) {
+      for (Child& c : children) born.push_back(unevaluated(std::move(c), s));
+    } else {
+      born = evaluate(std::move(children), s, eval, failed, tally);
+    }
     for (std::size_t k = 0; k < born.size(); ++k) s.population[replaced[k]] = born[k];
     res.born.insert(res.born.end(), born.begin(), born.end());
   }
-  res.reevaluated = reevaluate_elite(s, eval, failed, res.born);
+  // members the tournaments evaluated: those born in this interval as they
+  // now stand, the earlier ones evaluated again (the last state of each)
+  std::map<std::int64_t, Individual> again;
+  for (Individual& ind : evaluated) {
+    auto b = std::find_if(res.born.begin(), res.born.end(), [&](const Individual& x) { return x.id == ind.id; });
+    if (b != res.born.end()) *b = ind;
+    else again[ind.id] = std::move(ind);
+  }
+  for (Individual& ind : reevaluate_elite(s, eval, failed, res.born)) again[ind.id] = std::move(ind);
+  for (auto& [id, ind] : again) res.reevaluated.push_back(std::move(ind));
   s.generation += 1;
   res.stats = stats(s);
+  res.stats.metrics = tally.stats();
   res.stats.rejected = rejected;
   res.stats.failed = failed;
   return res;

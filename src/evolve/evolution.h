@@ -18,6 +18,7 @@
 #include "core/rng.h"
 #include "eval/evaluator.h"
 #include "evolve/evolution_def.h"
+#include "evolve/metric_tally.h"
 #include "genome/genotype.h"
 
 namespace bx {
@@ -28,7 +29,8 @@ struct Individual {
   std::shared_ptr<const Genotype> genotype;  ///< immutable, so copies of an individual share it
   /// The mean (or least: Evolution's fold) over its evaluations: the first,
   /// when it was born, and those under fresh seeds while it was among the
-  /// elite (evolution.elite_evaluations).
+  /// elite (evolution.elite_evaluations) or, with tournament_evaluates = all,
+  /// in each tournament it was drawn into. 0 while it has none.
   double fitness = 0;
   double distance = 0;  ///< the first evaluation's, the one a replay shows
   std::string failure;  ///< why it failed (crash, timeout, explosion) or scored 0 by rule
@@ -36,17 +38,23 @@ struct Individual {
   std::string op;       ///< random, mutation, crossover, graft
   int generation = 0;   ///< the generation (steady state: the report interval) it was born in
   std::uint64_t seed = 0;  ///< the seed of its first evaluation (the k-th's: repeat_seed(seed, k))
-  int evaluations = 1;     ///< how many evaluations `fitness` folds (their mean, or least: Evolution's fold)
+  /// How many evaluations `fitness` folds (their mean, or least: Evolution's
+  /// fold); 0 for a child of tournament_evaluates = all not yet drawn into a tournament.
+  int evaluations = 1;
 };
 
 /// Statistics of one generation (steady state: one report interval).
 struct GenerationStats {
   int generation = 0;
   long evaluations = 0;   ///< cumulative evaluations at its end
-  double best = 0, mean = 0, median = 0;  ///< over the population
+  double best = 0, mean = 0, median = 0;  ///< over the population's evaluated members
   std::int64_t best_id = -1;
   long rejected = 0;      ///< non-viable children redrawn during it
   long failed = 0;        ///< evaluations that crashed, timed out or blew up
+  /// The task's metrics over the evaluations that selected in it (those of
+  /// the children born; with tournament_evaluates = all, the tournaments'),
+  /// not the elite's evaluations again.
+  std::vector<MetricStat> metrics;
 };
 
 /// Where a run stands; what a checkpoint holds.
@@ -116,7 +124,10 @@ class Evolution {
   Child random_child(Rng& rng, long& rejected) const;
   Child viable(Child c, Rng& rng, long& rejected, const std::function<Child(Rng&)>& remake) const;
   std::vector<Individual> evaluate(std::vector<Child> children, EvolutionState& s, Evaluator& eval,
-                                   long& failed) const;
+                                   long& failed, MetricTally& tally) const;
+  Individual unevaluated(Child c, EvolutionState& s) const;
+  void tournaments(EvolutionState& s, Evaluator& eval, std::vector<int> members, std::vector<double>& fresh,
+                   long& failed, MetricTally& tally, std::vector<Individual>& evaluated) const;
   GenerationResult initial(EvolutionState& s, Evaluator& eval) const;
   GenerationResult generational(EvolutionState& s, Evaluator& eval) const;
   GenerationResult steady_state(EvolutionState& s, Evaluator& eval) const;

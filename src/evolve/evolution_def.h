@@ -14,6 +14,13 @@ enum class Algorithm {
   SteadyState,   ///< miconi2006 5.2: triple tournaments, the worst replaced by a child
 };
 
+/// Which members of a steady-state tournament it evaluates.
+enum class TournamentEvaluates {
+  Child,  ///< miconi2006 5.2: the child once, when born; the three compete on the fitness they keep
+  All,    ///< stanton2015: the three, each in a fresh world, compete on these evaluations; a child
+          ///< is first evaluated in its first tournament
+};
+
 /// How parents are drawn from the survivors of a generational GA.
 enum class Selection { Rank, Proportionate, Uniform };
 
@@ -39,6 +46,12 @@ struct EvolutionDef {
   /// the same population, so workers can evaluate them at once; 1 is the
   /// paper's strictly sequential loop. Results never depend on the workers.
   int batch = 8;
+  /// Child: a creature's fitness is measured once, at birth (miconi2006).
+  /// All: each tournament evaluates its three members afresh (a new layout,
+  /// a new physics seed) and ranks them by these evaluations; a creature's
+  /// fitness is the mean of every evaluation it had (Stanton & Channon 2015,
+  /// whose population of 150 "are evaluated in groups of three").
+  TournamentEvaluates tournament_evaluates = TournamentEvaluates::Child;
   // both
   /// Evaluations an elite's fitness is the mean (task.trial_score = min: the
   /// least) of: after each generation

@@ -146,6 +146,7 @@ const std::vector<Field>& fields() {
       {"evolution", "mutation_rate", Field::Real, 0, 1, {}, [](RunConfig& c) -> void* { return &c.evolution.mutation_rate; }, "steady state: P_mut of the mutation operator"},
       {"evolution", "asexual_mutations", Field::Int, 1, 1000, {}, [](RunConfig& c) -> void* { return &c.evolution.asexual_mutations; }, "steady state: mutations applied to make an asexual child"},
       {"evolution", "batch", Field::Int, 1, 100000, {}, [](RunConfig& c) -> void* { return &c.evolution.batch; }, "steady state: tournaments evaluated together (disjoint triples); 1 = strictly sequential"},
+      {"evolution", "tournament_evaluates", Field::Choice, 0, 0, {"child", "all"}, [](RunConfig& c) -> void* { return &c.evolution.tournament_evaluates; }, "steady state: child (miconi2006: each child evaluated once, at birth; the three compete on the fitness they keep) or all (stanton2015: each tournament evaluates its three in fresh worlds and ranks them by these evaluations; fitness is the mean of all a creature had)"},
       {"evolution", "elite_evaluations", Field::Int, 1, 1000, {}, [](RunConfig& c) -> void* { return &c.evolution.elite_evaluations; }, "the elite (elite_fraction) is evaluated again under fresh seeds after each generation (steady state: report interval) until each fitness is the mean of this many (task.trial_score = min: the least) (1: once)"},
       {"evolution", "best_evaluations", Field::Int, 0, 1000, {}, [](RunConfig& c) -> void* { return &c.evolution.best_evaluations; }, "the elite's best is evaluated again until its fitness is the mean (task.trial_score = min: the least) of this many, and so is each that takes its place, so the best is not the luckiest of near-equal creatures (0: as elite_evaluations)"},
       {"evolution", "elite_half_step", Field::Bool, 0, 0, {}, [](RunConfig& c) -> void* { return &c.evolution.elite_half_step; }, "the elite's 2nd, 4th, ... evaluations step at half physics.dt, so that (with task.trial_score = min) a gait only the step makes loses its score"},
@@ -449,6 +450,10 @@ Result<RunConfig> read_run_config(std::string_view text, std::string_view source
   // ODE's joint motor at a stop would turn its unlimited force into a torque
   if (cfg.sim.motor.model == MotorModel::PD && cfg.sim.physics.powered_stops != PoweredStops::Separate)
     return Error{std::string(source) + ": motor.model: \"pd\" needs physics.powered_stops = \"separate\", got \"ode\""};
+  // a generational GA has no tournaments
+  if (cfg.evolution.tournament_evaluates == TournamentEvaluates::All && cfg.evolution.algorithm != Algorithm::SteadyState)
+    return Error{std::string(source) + ": evolution.tournament_evaluates: \"all\" needs evolution.algorithm = "
+                 "\"steady_state\", got \"generational\""};
   // a drop jittered lower than the ground would start the creature inside it
   if (cfg.sim.start_drop_jitter > task_drop_height(cfg.sim))
     return Error{std::string(source) + ": task.start_drop_jitter: " + num(cfg.sim.start_drop_jitter) +

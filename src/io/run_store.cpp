@@ -29,6 +29,9 @@ CREATE TABLE individual (
   operator TEXT NOT NULL, failure TEXT NOT NULL, seed TEXT, kind TEXT NOT NULL DEFAULT 'graph',
   evaluations INTEGER NOT NULL DEFAULT 1);
 CREATE INDEX individual_gen ON individual (gen);
+CREATE TABLE generation_metric (
+  gen INTEGER NOT NULL, name TEXT NOT NULL, mean REAL NOT NULL, nonzero REAL NOT NULL,
+  PRIMARY KEY (gen, name));
 CREATE TABLE checkpoint (id INTEGER PRIMARY KEY CHECK (id = 1), gen INTEGER NOT NULL, state TEXT NOT NULL);
 )";
 
@@ -150,6 +153,12 @@ Result<std::unique_ptr<RunStore>> RunStore::open(const std::string& path) {
   if (has_evaluations.ok() && has_evaluations.step() == SQLITE_ROW && has_evaluations.i64(0) == 0)
     store->evaluations_column_ =
         writable && exec(*db, "ALTER TABLE individual ADD COLUMN evaluations INTEGER NOT NULL DEFAULT 1").ok();
+  // and before a generation kept its task's metrics
+  Stmt has_metrics(*db, "SELECT count(*) FROM sqlite_schema WHERE type = 'table' AND name = 'generation_metric'");
+  if (has_metrics.ok() && has_metrics.step() == SQLITE_ROW && has_metrics.i64(0) == 0)
+    store->metric_table_ = writable && exec(*db, "CREATE TABLE generation_metric (gen INTEGER NOT NULL, "
+                                                 "name TEXT NOT NULL, mean REAL NOT NULL, nonzero REAL NOT NULL, "
+                                                 "PRIMARY KEY (gen, name))").ok();
   return store;
 }
 
@@ -252,6 +261,15 @@ Status RunStore::write_generation(const GenerationStats& st, const std::vector<I
         .bind(7, static_cast<std::int64_t>(st.rejected)).bind(8, static_cast<std::int64_t>(st.failed));
     if (g.step() != SQLITE_DONE) return rollback("storing generation " + std::to_string(st.generation));
   }
+  // and its task's metrics
+  {
+    Stmt m(db_, "INSERT INTO generation_metric (gen, name, mean, nonzero) VALUES (?, ?, ?, ?)");
+    for (const MetricStat& ms : st.metrics) {
+      m.bind(1, static_cast<std::int64_t>(st.generation)).bind(2, ms.name).bind(3, ms.mean).bind(4, ms.nonzero);
+      if (m.step() != SQLITE_DONE) return rollback("storing generation " + std::to_string(st.generation) + "'s metric " + ms.name);
+      m.reset();
+    }
+  }
   // and the checkpoint that resumes after it
   {
     json state = {{"evaluations", cp.evaluations}, {"next_id", cp.next_id}, {"population", cp.population}};
@@ -311,6 +329,15 @@ std::vector<GenerationStats> RunStore::generations() const {
     g.failed = s.i64(7);
     out.push_back(g);
   }
+  if (!metric_table_) return out;
+  Stmt m(db_, "SELECT gen, name, mean, nonzero FROM generation_metric ORDER BY gen, rowid");
+  std::size_t at = 0;
+  while (m.step() == SQLITE_ROW) {
+    const std::int64_t gen = m.i64(0);
+    while (at < out.size() && out[at].generation < gen) ++at;
+    if (at == out.size()) break;
+    if (out[at].generation == gen) out[at].metrics.push_back({m.text(1), m.real(2), m.real(3)});
+  }
   return out;
 }
 
@@ -324,8 +351,9 @@ Result<Individual> RunStore::individual(std::int64_t id) const {
   if (s.step() != SQLITE_ROW) return Error{"no " + who};
   for (auto [c, field] : {std::pair{1, "generation"}, {3, "fitness"}, {4, "distance"}, {11, "evaluations"}})
     if (Status t = number_column(s.raw(), c, who + "'s " + field); !t) return Error{t.error()};
-  if (s.i64(11) < 1)
-    return Error{who + "'s evaluations is " + std::to_string(s.i64(11)) + ", not a count (at least 1)"};
+  // 0: a child not yet drawn into a tournament (evolution.tournament_evaluates = all)
+  if (s.i64(11) < 0)
+    return Error{who + "'s evaluations is " + std::to_string(s.i64(11)) + ", not a count"};
   for (auto [c, field] : {std::pair{5, "parent1"}, {6, "parent2"}})
     if (!s.null(c))
       if (Status t = number_column(s.raw(), c, who + "'s " + field); !t) return Error{t.error()};

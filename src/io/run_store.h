@@ -78,6 +78,7 @@ class RunStore {
   bool read_only_ = false;
   bool seed_column_ = true;  ///< false: an older database opened read-only, without individual.seed
   bool kind_column_ = true;  ///< false: one without individual.kind (its genotypes are graph genomes)
+  bool metric_table_ = true;  ///< false: an older database opened read-only, without generation_metric
   bool evaluations_column_ = true;  ///< false: one without individual.evaluations (each was evaluated once)
 };
 

@@ -426,6 +426,123 @@ INSTANTIATE_TEST_SUITE_P(Both, EliteEvaluations,
                            return info.param == Algorithm::Generational ? "Generational" : "SteadyState";
                          });
 
+// evolution.tournament_evaluates = all (Stanton & Channon 2015): each
+// tournament evaluates its three members afresh, each under the seed of its
+// next evaluation, and ranks them by these; a child waits unevaluated for its
+// first tournament; an individual's fitness is the mean of all it had; the
+// tasks' metrics are tallied over the tournaments' evaluations.
+class Tally : public Evaluator {
+ public:
+  std::vector<EvalOutcome> evaluate(const std::vector<EvalJob>& jobs) override {
+    std::vector<EvalOutcome> out = noisy_.evaluate(jobs);
+    for (std::size_t i = 0; i < jobs.size(); ++i) {
+      seeds.push_back({jobs[i].genotype, jobs[i].seed});
+      // a task's 0/1 and counted metrics, from the seed
+      out[i].result.metrics = {{"odd seed", static_cast<double>(jobs[i].seed & 1)}, {"twice", 2}};
+    }
+    return out;
+  }
+  int workers() const override { return 1; }
+  NoisyTarget noisy_{0.3, 0.2};
+  std::vector<std::pair<const Genotype*, std::uint64_t>> seeds;
+};
+
+TEST(TournamentEvaluatesAll, EachTournamentEvaluatesItsThreeAfreshAndAChildWaitsForItsFirst) {
+  auto ops = std::make_shared<FloatVectorOps>(FloatVectorDef{10, -1, 1, 0.1});
+  EvolutionDef e = float_evolution(Algorithm::SteadyState);
+  e.tournament_evaluates = TournamentEvaluates::All;
+  e.evaluations = 1500;
+  e.batch = 5;
+  e.report_every = 150;
+  Evolution evo(ops, e, 11);
+  Tally problem;
+  EvolutionState s;
+  std::map<std::int64_t, Individual> latest;  // every individual as the run last reported it
+  std::vector<GenerationStats> stats;
+  while (!evo.finished(s)) {
+    const long before = s.evaluations;
+    const std::int64_t born_before = s.next_id;
+    problem.seeds.clear();
+    GenerationResult r = evo.step(s, problem);
+    stats.push_back(r.stats);
+    for (const auto& ind : r.born) latest[ind.id] = ind;
+    for (const auto& ind : r.reevaluated) {
+      ASSERT_TRUE(latest.count(ind.id)) << ind.id;
+      EXPECT_GT(ind.evaluations, latest[ind.id].evaluations) << ind.id;
+      latest[ind.id] = ind;
+    }
+    if (s.generation == 0) continue;
+    // three evaluations a tournament, none at birth
+    const long tournaments = s.next_id - born_before;
+    EXPECT_EQ(s.evaluations - before, 3 * tournaments);
+    EXPECT_EQ(static_cast<long>(problem.seeds.size()), 3 * tournaments);
+    // the metrics over those evaluations
+    long odd = 0;
+    for (auto [g, seed] : problem.seeds) odd += seed & 1;
+    ASSERT_EQ(r.stats.metrics.size(), 2u);
+    EXPECT_EQ(r.stats.metrics[0].name, "odd seed");
+    EXPECT_DOUBLE_EQ(r.stats.metrics[0].mean, static_cast<double>(odd) / (3.0 * tournaments));
+    EXPECT_DOUBLE_EQ(r.stats.metrics[0].nonzero, r.stats.metrics[0].mean);
+    EXPECT_EQ(r.stats.metrics[1], (MetricStat{"twice", 2, 1}));
+  }
+  // each individual's fitness is the mean of its evaluations, each under its next seed
+  long waiting = 0, many = 0;
+  for (const auto& [id, ind] : latest) {
+    if (ind.evaluations == 0) {
+      ++waiting;
+      EXPECT_EQ(ind.op == "random", false) << id;  // the random ones were evaluated at the start
+      continue;
+    }
+    many += ind.evaluations > 2;
+    double mean = 0;
+    for (int k = 0; k < ind.evaluations; ++k)
+      mean = fold_score(TrialScore::Mean, mean, k,
+                        problem.noisy_.exact(*ind.genotype) + problem.noisy_.noise(repeat_seed(ind.seed, k)));
+    EXPECT_DOUBLE_EQ(ind.fitness, mean) << id;
+  }
+  EXPECT_GT(waiting, 0);  // children never drawn yet
+  EXPECT_GT(many, 10);    // survivors of several tournaments
+  // the stats are over evaluated members only, and it still learns
+  EXPECT_LT(stats.front().best, 0.7);
+  EXPECT_GT(stats.back().best, 0.85) << "from " << stats.front().best;
+}
+
+TEST(TournamentEvaluatesAll, TheThreeCompeteOnTheirFreshEvaluationsNotTheirMeans) {
+  // two genomes, one better on average: noise bigger than the gap makes the
+  // worse one win some tournaments, which a comparison of stored means would not
+  auto ops = std::make_shared<FloatVectorOps>(FloatVectorDef{10, -1, 1, 0.1});
+  EvolutionDef e = float_evolution(Algorithm::SteadyState);
+  e.tournament_evaluates = TournamentEvaluates::All;
+  e.population = 3;
+  e.batch = 1;
+  e.evaluations = 40;
+  e.report_every = 1;
+  e.p_asexual = 1;
+  e.p_crossover = 0;
+  Evolution evo(ops, e, 5);
+  Tally problem;
+  problem.noisy_ = NoisyTarget(0.3, 5.0);  // noise far above any fitness gap
+  EvolutionState s;
+  int by_fresh = 0, steps = 0;
+  while (!evo.finished(s)) {
+    std::vector<Individual> before = s.population;
+    problem.seeds.clear();
+    GenerationResult r = evo.step(s, problem);
+    if (before.size() != 3 || r.born.size() != 1 || problem.seeds.size() != 3) continue;
+    ++steps;
+    // the replaced one is the worst of its fresh evaluation
+    std::vector<double> fresh;
+    for (auto [g, seed] : problem.seeds) fresh.push_back(problem.noisy_.exact(*g) + problem.noisy_.noise(seed));
+    const int worst = static_cast<int>(std::min_element(fresh.begin(), fresh.end()) - fresh.begin());
+    const Genotype* loser = problem.seeds[worst].first;
+    bool gone = true;
+    for (const auto& ind : s.population) gone = gone && ind.genotype.get() != loser;
+    by_fresh += gone;
+  }
+  EXPECT_GT(steps, 30);
+  EXPECT_EQ(by_fresh, steps);
+}
+
 TEST(Breeding, GraftingNeedsAKindThatHasIt) {
   EvolutionDef e = float_evolution(Algorithm::Generational);
   FloatVectorOps floats(FloatVectorDef{4, -1, 1, 0.1});

@@ -42,11 +42,36 @@ generations = 3
 seconds = 3
 )";
 
+// a tiny river crossing run whose tournaments evaluate all three
+// (evolution.tournament_evaluates = "all", Stanton & Channon 2015)
+const char* kRiverConfig = R"(
+[genotype]
+kind = "river"
+[task]
+kind = "river"
+[river]
+seconds = 1
+[motor]
+model = "pd"
+[physics]
+powered_stops = "separate"
+[evolution]
+algorithm = "steady_state"
+tournament_evaluates = "all"
+population = 9
+evaluations = 12
+batch = 3
+report_every = 3
+p_asexual = 0
+p_crossover = 1
+p_graft = 0
+)";
+
 // every row of the generation and individual tables, as text
 std::string dump(const std::string& dir) {
   std::string out;
   for (const char* q : {"SELECT * FROM generation ORDER BY gen", "SELECT * FROM individual ORDER BY id",
-                        "SELECT gen, state FROM checkpoint"})
+                        "SELECT * FROM generation_metric ORDER BY gen, name", "SELECT gen, state FROM checkpoint"})
     out += bxtest::query(run_db_path(dir), q);
   return out;
 }
@@ -143,6 +168,41 @@ TEST_F(Runs, ElitesEvaluatedAgainResumeExactly) {
   auto best = (*store)->best_individual();
   ASSERT_TRUE(best.ok());
   EXPECT_EQ(best->evaluations, 3);
+}
+
+// tournaments that evaluate their three: children wait unevaluated (0
+// evaluations) in the database, survivors gather evaluations, each
+// generation keeps the task's metrics over its tournaments' evaluations, and
+// the run is the same for any workers and resumes exactly
+TEST_F(Runs, TournamentsThatEvaluateAllAreTheSameForAnyWorkersAndResumeExactly) {
+  std::string one = make("one", 4, kRiverConfig), two = make("two", 4, kRiverConfig);
+  ASSERT_TRUE(drive_run(one, {1, true, 0}).ok());
+  ASSERT_TRUE(drive_run(two, {2, true, 0}).ok());
+  std::string expected = dump(one);
+  EXPECT_EQ(expected, dump(two));
+  const auto db = run_db_path(one);
+  // 9 evaluated at the start, then 4 intervals of 3 tournaments: 9 + 4 x 9 evaluations
+  EXPECT_EQ(bxtest::query(db, "SELECT evaluations FROM generation ORDER BY gen DESC LIMIT 1"), "45|\n");
+  EXPECT_EQ(bxtest::query(db, "SELECT count(*) FROM individual"), "21|\n");
+  EXPECT_EQ(bxtest::query(db, "SELECT sum(evaluations) FROM individual"), "45|\n");
+  EXPECT_NE(bxtest::query(db, "SELECT count(*) FROM individual WHERE evaluations = 0"), "0|\n");
+  EXPECT_NE(bxtest::query(db, "SELECT count(*) FROM individual WHERE evaluations > 1"), "0|\n");
+  // every generation has the river's metrics: the share completing level 1, ...
+  EXPECT_EQ(bxtest::query(db, "SELECT count(DISTINCT gen) FROM generation_metric WHERE name = 'level 1 completed'"),
+            "5|\n");
+  auto store = RunStore::open(db);
+  ASSERT_TRUE(store.ok());
+  auto gens = (*store)->generations();
+  ASSERT_EQ(gens.size(), 5u);
+  ASSERT_FALSE(gens.back().metrics.empty());
+  EXPECT_EQ(gens.back().metrics.front().name, "level");
+  EXPECT_EQ(gens.back().metrics.front().mean, 1);  // nobody completes level 1 in a second
+  for (int stop : {1, 3}) {
+    std::string dir = make("stop" + std::to_string(stop), 4, kRiverConfig);
+    ASSERT_TRUE(drive_run(dir, {2, true, stop}).ok());
+    ASSERT_TRUE(drive_run(dir, {1, true, 0}).ok());
+    EXPECT_EQ(dump(dir), expected) << "stopped after " << stop;
+  }
 }
 
 TEST_F(Runs, CreateRefusesAnExistingDirectory) {
