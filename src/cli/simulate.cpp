@@ -11,6 +11,7 @@
 
 #include "cli/commands.h"
 #include "cli/creature.h"
+#include "core/files.h"
 #include "eval/evaluate.h"
 #include "genome/dialect.h"
 #include "io/config.h"
@@ -161,17 +162,26 @@ int cmd_simulate(const SimulateArgs& a) {
   return 0;
 }
 
-int cmd_config(const std::string& dialect, const std::string& config_file, bool reference) {
+int cmd_config(const std::string& dialect, bool dialect_given, const std::string& config_file, bool reference) {
   if (reference) {
     std::printf("%s", config_reference_markdown().c_str());
     return 0;
   }
   auto d = parse_dialect(dialect);
   if (!d) return fail("dialect: expected sims1994, miconi2006 or chaumont2007, got \"" + dialect + "\"");
-  SimConfig cfg = default_sim_config(*d);
-  if (!config_file.empty())
-    if (Status s = apply_config_file(cfg, config_file); !s) return fail(s.error());
-  std::printf("%s", config_to_toml(cfg).c_str());
+  if (config_file.empty()) {
+    std::printf("%s", config_to_toml(default_sim_config(*d)).c_str());
+    return 0;
+  }
+  // a config file's own dialect and creature kind give the defaults, as a run
+  // reads it, unless a dialect is named here
+  auto text = read_file(config_file);
+  if (!text) return fail(text.error());
+  std::vector<std::string> sets;
+  if (dialect_given) sets.push_back("genome.dialect=\"" + dialect + "\"");
+  auto cfg = read_run_config(*text, config_file, sets);
+  if (!cfg) return fail(cfg.error());
+  std::printf("%s", config_to_toml(cfg->sim).c_str());
   return 0;
 }
 
@@ -189,10 +199,11 @@ void add_simulate_commands(CLI::App& app) {
   static std::string dialect = "sims1994", cfg_file;
   static bool reference = false;
   auto* c = app.add_subcommand("config", "Print the effective config (TOML) of a dialect");
-  c->add_option("dialect", dialect, "sims1994, miconi2006 or chaumont2007");
-  c->add_option("--config", cfg_file, "TOML config overlaid on the dialect's defaults");
+  static CLI::Option* dialect_opt =
+      c->add_option("dialect", dialect, "sims1994, miconi2006 or chaumont2007 (with --config: that file's own)");
+  c->add_option("--config", cfg_file, "TOML config overlaid on its dialect's (and creature kind's) defaults");
   c->add_flag("--reference", reference, "Print every key of every dialect as a Markdown table");
-  c->callback([] { std::exit(cmd_config(dialect, cfg_file, reference)); });
+  c->callback([] { std::exit(cmd_config(dialect, dialect_opt->count() > 0, cfg_file, reference)); });
 }
 
 }  // namespace bx

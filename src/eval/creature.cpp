@@ -3,6 +3,7 @@
 #include <string>
 
 #include "brain/river/river_controller.h"
+#include "task/river/quadruped.h"
 #include "develop/develop.h"
 #include "genome/graph_genotype.h"
 
@@ -57,10 +58,17 @@ std::vector<SimField> river_fields() {
   };
 }
 
+// the paper's body physics and PD motors, and its task
+void river_defaults(SimConfig& c) {
+  c.physics = river_physics(c.river.body);
+  c.motor = river_motor();
+  c.task_kind = TaskKind::River;
+}
+
 // one row per CreatureKind, in its order
 const CreatureKindRow kKinds[] = {
-    {CreatureKind::Graph, "graph", GraphGenotype::kKind, develop_graph, nullptr, nullptr},
-    {CreatureKind::River, "river", "floats", develop_river, river_genes, river_fields},
+    {CreatureKind::Graph, "graph", GraphGenotype::kKind, develop_graph, nullptr, nullptr, nullptr},
+    {CreatureKind::River, "river", "floats", develop_river, river_genes, river_fields, river_defaults},
 };
 
 }  // namespace

@@ -40,6 +40,9 @@ struct CreatureKindRow {
   FloatVectorDef (*float_genes)(const SimConfig&);
   /// The config keys it brings (none: its keys are the reader's own).
   std::vector<SimField> (*fields)();
+  /// The settings it brings, as a dialect does, before a config's own keys
+  /// apply: its body's physics and motors, its task (null: none).
+  void (*defaults)(SimConfig&);
 };
 
 /// The row of a kind.

@@ -415,8 +415,9 @@ Status apply_config_toml(RunConfig& cfg, std::string_view text, std::string_view
 
 Result<RunConfig> read_run_config(std::string_view text, std::string_view source,
                                   const std::vector<std::string>& overrides) {
-  // the dialect decides the defaults, so it is read first
+  // the dialect and the creature kind decide the defaults, so they are read first
   Dialect d = Dialect::Sims1994;
+  std::optional<CreatureKind> kind;
   std::vector<std::pair<std::string, std::string>> layers = {{std::string(text), std::string(source)}};
   for (const auto& o : overrides) {
     auto line = override_toml(o);
@@ -433,11 +434,21 @@ Result<RunConfig> read_run_config(std::string_view text, std::string_view source
                        *name + "\""};
         d = *parsed;
       }
+      if (auto name = root["genotype"]["kind"].value<std::string>()) {
+        const auto names = creature_kind_names();
+        for (std::size_t i = 0; i < names.size(); ++i)
+          if (*name == names[i]) kind = static_cast<CreatureKind>(i);
+        // an unknown name is reported by apply_config_toml below
+      }
     } catch (const toml::parse_error&) {
       // reported with its position by apply_config_toml below
     }
   }
   RunConfig cfg = default_run_config(d);
+  if (kind) {
+    cfg.sim.creature = *kind;
+    if (auto defaults = creature_kind_row(*kind).defaults) defaults(cfg.sim);
+  }
   for (const auto& [t, src] : layers)
     if (Status s = apply_config_toml(cfg, t, src); !s) return Error{s.error()};
   // catapults are chaumont2007's, and a throwing run needs them

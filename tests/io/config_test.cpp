@@ -251,5 +251,44 @@ TEST(Config, ADropJitteredBelowTheGroundIsRefused) {
                   .ok());
 }
 
+// A creature kind brings its defaults as a dialect does: the river crossing's
+// kind alone gives the paper's body physics, PD motors and its task; the
+// config's own keys and overrides still win
+TEST(Config, ACreatureKindBringsItsDefaultsBeforeTheConfigsKeys) {
+  auto c = read_run_config("[genotype]\nkind = \"river\"\n", "r.toml");
+  ASSERT_TRUE(c.ok()) << c.error();
+  EXPECT_EQ(c->sim.creature, CreatureKind::River);
+  EXPECT_EQ(c->sim.task_kind, TaskKind::River);
+  EXPECT_EQ(c->sim.motor.model, MotorModel::PD);
+  EXPECT_EQ(c->sim.motor.kp, 0.25);
+  EXPECT_EQ(c->sim.motor.kd, 0.175);
+  EXPECT_EQ(c->sim.physics.friction, 10);
+  EXPECT_EQ(c->sim.physics.cfm, 5e-5);
+  EXPECT_EQ(c->sim.physics.powered_stops, PoweredStops::Separate);
+  EXPECT_DOUBLE_EQ(c->sim.physics.max_joint_gap, 0.005);  // per 0.1 m cell
+  auto mine = read_run_config("[genotype]\nkind = \"river\"\n[physics]\nfriction = 2\n", "r.toml",
+                              {"motor.kd=0.2"});
+  ASSERT_TRUE(mine.ok()) << mine.error();
+  EXPECT_EQ(mine->sim.physics.friction, 2);
+  EXPECT_EQ(mine->sim.motor.kd, 0.2);
+  EXPECT_EQ(mine->sim.motor.model, MotorModel::PD);
+  // an override may name the kind too
+  auto set = read_run_config("", "r.toml", {"genotype.kind=\"river\""});
+  ASSERT_TRUE(set.ok()) << set.error();
+  EXPECT_EQ(set->sim.physics.friction, 10);
+  // a graph creature keeps its dialect's
+  EXPECT_EQ(read_run_config("[genotype]\nkind = \"graph\"\n", "r.toml")->sim.physics.friction, 1);
+}
+
+// tournament_evaluates = "all" has tournaments to evaluate only in a steady state
+TEST(Config, TournamentsThatEvaluateAllNeedASteadyState) {
+  EXPECT_EQ(read_run_config("[evolution]\nalgorithm = \"generational\"\ntournament_evaluates = \"all\"\n", "r.toml")
+                .error(),
+            "r.toml: evolution.tournament_evaluates: \"all\" needs evolution.algorithm = \"steady_state\", got "
+            "\"generational\"");
+  EXPECT_TRUE(read_run_config("[evolution]\nalgorithm = \"steady_state\"\ntournament_evaluates = \"all\"\n", "r.toml")
+                  .ok());
+}
+
 }  // namespace
 }  // namespace bx

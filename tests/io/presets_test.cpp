@@ -74,6 +74,26 @@ TEST(Presets, PaperPresetsCarryThePapersConstants) {
       EXPECT_EQ(k.evolution.generations, 100) << name;
     }
   }
+  // the river crossing (Stanton & Channon 2015): its body's physics and PD
+  // gains, 10 minutes, population 150, tournaments of three evaluated afresh,
+  // a mutated single-point crossover, 10^6 tournaments, statistics per 1000
+  RunConfig r = find("rivercrossing");
+  EXPECT_EQ(r.sim.creature, CreatureKind::River);
+  EXPECT_EQ(r.sim.task_kind, TaskKind::River);
+  EXPECT_EQ(r.sim.physics.dt, 0.01);
+  EXPECT_EQ(r.sim.physics.erp, 0.2);
+  EXPECT_EQ(r.sim.physics.cfm, 5e-5);
+  EXPECT_EQ(r.sim.physics.friction, 10);
+  EXPECT_EQ(r.sim.motor.model, MotorModel::PD);
+  EXPECT_EQ(r.sim.motor.kp, 0.25);
+  EXPECT_EQ(r.sim.motor.kd, 0.175);
+  EXPECT_EQ(r.sim.river.task.seconds, 600);
+  EXPECT_EQ(r.evolution.algorithm, Algorithm::SteadyState);
+  EXPECT_EQ(r.evolution.tournament_evaluates, TournamentEvaluates::All);
+  EXPECT_EQ(r.evolution.population, 150);
+  EXPECT_EQ(r.evolution.evaluations, 1000000);
+  EXPECT_EQ(r.evolution.report_every, 1000);
+  EXPECT_EQ(r.evolution.p_crossover, 1);
 }
 
 }  // namespace
