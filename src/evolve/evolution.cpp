@@ -362,17 +362,20 @@ GenerationResult Evolution::steady_state(EvolutionState& s, Evaluator& eval) con
     // tournament_evaluates = all: the three compete on evaluations in fresh worlds
     std::vector<double> fresh;
     if (all) tournaments(s, eval, std::vector<int>(idx.begin(), idx.begin() + 3 * n), fresh, failed, tally, evaluated);
-    auto wins = [&](int x, int y) {
-      if (!all) return better(s.population[x], s.population[y]);
-      if (fresh[x] != fresh[y]) return fresh[x] > fresh[y];
-      return s.population[x].id < s.population[y].id;
-    };
 
     std::vector<Child> children;
     std::vector<int> replaced;
     for (int t = 0; t < n; ++t) {
       std::array<int, 3> tri = {idx[3 * t], idx[3 * t + 1], idx[3 * t + 2]};
-      std::sort(tri.begin(), tri.end(), wins);
+      if (!all) {
+        std::sort(tri.begin(), tri.end(),
+                  [&](int x, int y) { return better(s.population[x], s.population[y]); });
+      } else {
+        // equal evaluations (a sparse task's zeros) tie at random, not by
+        // age, so a child that scores as its elders survives as often (drift)
+        for (int k = 2; k > 0; --k) std::swap(tri[k], tri[rng.below(k + 1)]);
+        std::stable_sort(tri.begin(), tri.end(), [&](int x, int y) { return fresh[x] > fresh[y]; });
+      }
       const Individual &a = s.population[tri[0]], &b = s.population[tri[1]];
       // four mutations of the best, crossover + mutation or grafting +
       // mutation (5.2: a third each), in the shares p_asexual, p_crossover, p_graft

@@ -543,6 +543,31 @@ TEST(TournamentEvaluatesAll, TheThreeCompeteOnTheirFreshEvaluationsNotTheirMeans
   EXPECT_EQ(by_fresh, steps);
 }
 
+// a task whose every evaluation scores 0 (the river crossing's first
+// random walkers): ties go at random, so the first population drifts away
+// instead of replacing every child at once (ties by age would keep it whole)
+class Flat : public Evaluator {
+ public:
+  std::vector<EvalOutcome> evaluate(const std::vector<EvalJob>& jobs) override {
+    return std::vector<EvalOutcome>(jobs.size());
+  }
+  int workers() const override { return 1; }
+};
+
+TEST(TournamentEvaluatesAll, EqualEvaluationsTieAtRandom) {
+  auto ops = std::make_shared<FloatVectorOps>(FloatVectorDef{4, -1, 1, 0.1});
+  EvolutionDef e = float_evolution(Algorithm::SteadyState);
+  e.tournament_evaluates = TournamentEvaluates::All;
+  e.evaluations = 300;
+  Evolution evo(ops, e, 3);
+  Flat flat;
+  EvolutionState s;
+  while (!evo.finished(s)) evo.step(s, flat);
+  int first = 0;
+  for (const auto& ind : s.population) first += ind.op == "random";
+  EXPECT_LT(first, 10) << "of 30";  // 300 tournaments, each losing one of three at random
+}
+
 TEST(Breeding, GraftingNeedsAKindThatHasIt) {
   EvolutionDef e = float_evolution(Algorithm::Generational);
   FloatVectorOps floats(FloatVectorDef{4, -1, 1, 0.1});
