@@ -51,6 +51,7 @@ struct WatchArgs {
   int width = 1280, height = 720;
   std::optional<int> fps;  ///< render: default 30 for mp4, 15 for gif
   bool quiet = false;      ///< render: no progress output
+  std::vector<std::string> metrics;  ///< plot: the task's metrics whose names contain these, not fitness
 };
 
 /// What simulating gave: the page's entry and the result.
@@ -382,7 +383,37 @@ int cmd_plot(const WatchArgs& a) {
   auto gens = (*store)->generations();
   if (gens.empty()) return fail(dir + ": no generation finished yet");
   std::string title = (*store)->meta("name") + " (seed " + (*store)->meta("seed") + ")";
-  std::string svg = fitness_svg(gens, title, a.width, a.height);
+  std::string svg;
+  if (a.metrics.empty()) {
+    svg = fitness_svg(gens, title, a.width, a.height);
+  } else {
+    // every recorded metric whose name contains one of --metric's, in the task's order
+    std::vector<std::string> names, known;
+    for (const auto& g : gens)
+      for (const MetricStat& m : g.metrics)
+        if (std::find(known.begin(), known.end(), m.name) == known.end()) known.push_back(m.name);
+    for (const std::string& k : known)
+      for (const std::string& want : a.metrics)
+        if (k.find(want) != std::string::npos) {
+          names.push_back(k);
+          break;
+        }
+    if (names.empty()) {
+      std::string list;
+      for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
+      return fail("--metric: no metric of " + dir + " matches \"" + a.metrics.front() + "\" (it has: " +
+                  (list.empty() ? std::string("none") : list) + ")");
+    }
+    // a steady state's report intervals count tournaments
+    auto text = (*store)->config_text();
+    if (!text) return fail(text.error());
+    auto cfg = read_run_config(*text, run_db_path(dir) + " (its config)");
+    if (!cfg) return fail(cfg.error());
+    const EvolutionDef& e = cfg->evolution;
+    const bool steady = e.algorithm == Algorithm::SteadyState;
+    const double per = steady ? static_cast<double>(e.report_every > 0 ? e.report_every : e.population) : 1.0;
+    svg = metric_svg(gens, names, per, steady ? "tournaments" : "generation", title, a.width, a.height);
+  }
   if (Status s = make_parent_dir("--out", a.out); !s) return fail(s.error());
   if (ext == ".svg") {
     if (Status s = write_file_atomic(a.out, svg); !s) return fail(s.error());
@@ -432,11 +463,14 @@ void add_watch_commands(CLI::App& app) {
   r->callback([] { std::exit(cmd_render(render)); });
 
   static WatchArgs plot;
-  auto* p = app.add_subcommand("plot", "Plot a run's best, mean and median fitness per generation");
+  auto* p = app.add_subcommand("plot", "Plot a run's best, mean and median fitness (or its task's metrics) per generation");
   p->add_option("run_dir", plot.genome, "Run directory")->required();
   p->add_option("--out", plot.out, "Image to write: .svg or .png")->required();
   p->add_option("--width", plot.width, "Width in pixels")->default_val(800);
   p->add_option("--height", plot.height, "Height in pixels")->default_val(500);
+  p->add_option("--metric", plot.metrics,
+                "Instead of fitness, the share of each generation's evaluations in which each task metric whose name "
+                "contains this was not 0 (repeatable; e.g. \"completed\": the river crossing's levels)");
   p->callback([] { std::exit(cmd_plot(plot)); });
 }
 

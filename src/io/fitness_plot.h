@@ -1,4 +1,5 @@
-// Fitness over generations as a standalone SVG image.
+// A run's curves as standalone SVG images: fitness over generations, and a
+// task's metrics over them (line_chart.h draws both).
 #pragma once
 
 #include <string>
@@ -12,5 +13,13 @@ namespace bx {
 /// pixels, titled `title`.
 std::string fitness_svg(const std::vector<GenerationStats>& gens, const std::string& title,
                         int width = 800, int height = 500);
+
+/// An SVG of the share (%) of each generation's evaluations in which each
+/// named metric was not 0 (GenerationStats::metrics), e.g. the river
+/// crossing's "level k completed" (Stanton & Channon 2015, Fig. 5); x is the
+/// generation times `per_generation` (a steady state's tournaments per report).
+std::string metric_svg(const std::vector<GenerationStats>& gens, const std::vector<std::string>& names,
+                       double per_generation, const std::string& x_label, const std::string& title,
+                       int width = 800, int height = 500);
 
 }  // namespace bx

@@ -218,6 +218,22 @@ TEST_F(Kinds, ShowWritesTheRunsPageAndPlotItsCurves) {
   Outcome p = bestiary("plot " + run().string() + " --out " + (dir / "plot.svg").string());
   ASSERT_EQ(p.code, 0) << p.err;
   EXPECT_NE(slurp(dir / "plot.svg").find("<svg"), std::string::npos);
+  // its task's metrics instead: one curve per level, over tournaments
+  Outcome m = bestiary("plot " + run().string() + " --metric \"level 2 completed\" --metric \"level 5\" --out " +
+                       (dir / "levels.svg").string());
+  ASSERT_EQ(m.code, 0) << m.err;
+  const std::string levels = slurp(dir / "levels.svg");
+  EXPECT_NE(levels.find(">level 2 completed</text>"), std::string::npos);
+  EXPECT_NE(levels.find(">level 5 completed</text>"), std::string::npos);
+  EXPECT_EQ(levels.find(">level 1 completed</text>"), std::string::npos);
+  EXPECT_NE(levels.find(">tournaments</text>"), std::string::npos);
+  EXPECT_NE(levels.find(">share of evaluations (%)</text>"), std::string::npos);
+  Outcome none = bestiary("plot " + run().string() + " --metric speed --out " + (dir / "none.svg").string());
+  EXPECT_EQ(none.code, 2);
+  EXPECT_NE(none.err.find("--metric: no metric of "), std::string::npos) << none.err;
+  EXPECT_NE(none.err.find("matches \"speed\" (it has: level, levels completed, food eaten"), std::string::npos)
+      << none.err;
+  EXPECT_FALSE(fs::exists(dir / "none.svg"));
 }
 
 TEST_F(Kinds, AFloatGenotypeFileWithoutProvenanceNeedsAConfig) {
