@@ -37,6 +37,14 @@ flight to the first touch of the ground, its roll from there to rest, and the
 kick (above 1: something struck it on the ground, as in a drop-kick); and
 the share of the first and last generation's new individuals whose body fires
 the release before the mechanism's delay (each simulated once, seed 1).
+
+For a river crossing run (Stanton & Channon 2015) instead of distances: its
+tournaments, best fitness, and per level the share of its final 1000
+tournaments' evaluations that completed the level (the generation_metric
+table), its Fig. 5 curve (`bestiary plot RUN --metric completed`, written as
+RUN/levels.svg); then over all its seeds the paper's Table 1: per level, the
+share of runs with more than 0% and at least 20/40/60/80% of those
+evaluations completing it, beside the paper's.
 """
 import argparse, json, math, os, re, sqlite3, subprocess, sys, tempfile
 
@@ -61,11 +69,14 @@ def finished(run_dir):
     con = sqlite3.connect(db)
     cfg = dict(con.execute("select key, value from run"))["config"]
     n = con.execute("select count(*), max(evaluations) from generation").fetchone()
-    alg = re.search(r'algorithm = "(\w+)"', cfg).group(1)
-    pop = int(re.search(r"population = (\d+)", cfg).group(1))
+    alg = re.search(r'^algorithm = "(\w+)"', cfg, re.M).group(1)
+    pop = int(re.search(r"^population = (\d+)", cfg, re.M).group(1))
     if alg == "generational":
-        return n[0] >= int(re.search(r"generations = (\d+)", cfg).group(1))
-    return (n[1] or 0) >= pop + int(re.search(r"evaluations = (\d+)", cfg).group(1))
+        return n[0] >= int(re.search(r"^generations = (\d+)", cfg, re.M).group(1))
+    # a steady state's budget counts creatures born (tournaments): the checkpoint's next id
+    state = con.execute("select state from checkpoint").fetchone()
+    born = json.loads(state[0])["next_id"] if state else 0
+    return born >= pop + int(re.search(r"^evaluations = (\d+)", cfg, re.M).group(1))
 
 
 def row(preset, seed, run_dir):
@@ -113,6 +124,75 @@ def check_row(preset, seed, run_dir, check_set=()):
             f"{cell('dt/4')} | {cell('lag')} | {cell('half rate')} | {cell('clamped')} | {cell('held')} | "
             f"{sustained} | {len(active)}/{len(c['effector_sd'])} | {hz or '-'} | {100 * c['max_joint_gap']:.1f} | "
             f"{verdict} |")
+
+
+def is_river(run_dir):
+    cfg = open(os.path.join(run_dir, "config.toml")).read()
+    return re.search(r'^kind = "river"', cfg, re.M) is not None
+
+
+RIVER_LEVELS = 6
+# Table 1 of the paper: share of 20 runs with >0/20/40/60/80% of their final
+# 1000 tournaments completing each level
+PAPER_TABLE1 = {1: (100, 100, 100, 100, 100), 2: (100, 100, 100, 100, 100), 3: (100, 100, 100, 100, 95),
+                4: (85, 85, 85, 30, 10), 5: (85, 65, 50, 20, 0), 6: (65, 20, 0, 0, 0)}
+COVERS = (0, 20, 40, 60, 80)
+
+
+def final_shares(run_dir, tournaments=1000):
+    """Per level, the share of the final `tournaments` tournaments' evaluations
+    that completed it: the last report intervals covering them, weighted by
+    their evaluations."""
+    con = sqlite3.connect(os.path.join(run_dir, "run.sqlite"))
+    cfg = open(os.path.join(run_dir, "config.toml")).read()
+    every = int(re.search(r"^report_every = (\d+)", cfg, re.M).group(1)) or \
+        int(re.search(r"^population = (\d+)", cfg, re.M).group(1))
+    gens = [g for (g,) in con.execute("select gen from generation where gen > 0 order by gen desc")]
+    take = gens[:max(1, math.ceil(tournaments / every))]
+    evals = dict(con.execute("select gen, evaluations - lag(evaluations) over (order by gen) from generation"))
+    shares = {}
+    for level in range(1, RIVER_LEVELS + 1):
+        num = den = 0.0
+        for g in take:
+            v = con.execute("select nonzero from generation_metric where gen = ? and name = ?",
+                            (g, f"level {level} completed")).fetchone()
+            w = evals.get(g) or 0
+            num += (v[0] if v else 0) * w
+            den += w
+        shares[level] = 100 * num / den if den else 0
+    return shares, len(take) * every
+
+
+def river_row(preset, seed, run_dir):
+    con = sqlite3.connect(os.path.join(run_dir, "run.sqlite"))
+    best, evals = con.execute("select best, evaluations from generation order by gen desc limit 1").fetchone()
+    state = json.loads(con.execute("select state from checkpoint").fetchone()[0])
+    pop = int(re.search(r"^population = (\d+)", open(os.path.join(run_dir, "config.toml")).read(), re.M).group(1))
+    shares, span = final_shares(run_dir)
+    svg = os.path.join(run_dir, "levels.svg")
+    sh(["plot", run_dir, "--metric", "completed", "--out", svg])
+    cells = " | ".join(f"{shares[k]:.1f}" for k in range(1, RIVER_LEVELS + 1))
+    return (f"| {preset} | {seed} | {state['next_id'] - pop} | {evals} | {best:.4g} | {cells} | {svg} |", shares, span)
+
+
+def river_tables(rows):
+    out = [f"\nLevel k: the share (%) of the final {rows[0][2]} tournaments' evaluations that completed level k.",
+           "\n| preset | seed | tournaments | evaluations | best fitness | "
+           + " | ".join(f"level {k}" for k in range(1, RIVER_LEVELS + 1)) + " | Fig. 5 curve |",
+           "|" + "---|" * (6 + RIVER_LEVELS)]
+    out += [r[0] for r in rows]
+    span = rows[0][2]
+    out.append(f"\nTable 1 over these {len(rows)} runs (share of runs whose final {span} tournaments' evaluations "
+               "complete the level in more than 0% / at least 20, 40, 60, 80% of them), ours / the paper's (20 runs):")
+    out.append("\n| level | " + " | ".join(("> 0%" if c == 0 else f"{c}%") for c in COVERS) + " |")
+    out.append("|" + "---|" * (1 + len(COVERS)))
+    for level in range(1, RIVER_LEVELS + 1):
+        cells = []
+        for i, c in enumerate(COVERS):
+            n = sum(1 for r in rows if (r[1][level] > 0 if c == 0 else r[1][level] >= c))
+            cells.append(f"{100 * n / len(rows):.0f}% / {PAPER_TABLE1[level][i]}%")
+        out.append(f"| {level} | " + " | ".join(cells) + " |")
+    return "\n".join(out)
 
 
 def is_throwing(run_dir):
@@ -237,7 +317,7 @@ def main():
                     help="a [check] key for `bestiary check` (repeatable), e.g. check.converge_seeds=5 "
                          "for runs made before their preset set it")
     a = ap.parse_args()
-    rows, throws, checks = [], [], []
+    rows, throws, checks, rivers = [], [], [], []
     for spec in a.runs:
         preset, _, s = spec.partition(":")
         for seed in seeds(s or "1"):
@@ -251,6 +331,10 @@ def main():
                     sys.exit(r.stderr)
             checks.append(check_row(preset, seed, run_dir, a.check_set))
             print(checks[-1], flush=True)
+            if is_river(run_dir):
+                rivers.append(river_row(preset, seed, run_dir))
+                print(rivers[-1][0], flush=True)
+                continue
             if is_throwing(run_dir):
                 throws.append(throw_row(preset, seed, run_dir))
                 print("\n".join(throws[-1]), flush=True)
@@ -273,6 +357,8 @@ def main():
               "| their frequencies (Hz) | largest joint gap (cm) | check |")
         print("|" + "---|" * 15)
         print("\n".join(checks))
+    if rivers:
+        print(river_tables(rivers))
     if not rows:
         return
     print("\n| preset | seed | evaluations | best, first generation | best, last | parts | distance (m) "
