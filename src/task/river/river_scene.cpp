@@ -6,7 +6,7 @@ std::vector<SceneCellKind> river_scene_kinds() {
   // in Cell's order, then the bridge
   return {
       {"grass", "#a3c98a", false},    {"resource", "#f08c00", false}, {"food", "#e64980", false},
-      {"stone", "#7c838b", true},     {"water", "#3b82c4", false},    {"trap", "#5f3dc4", false},
+      {"stone", "#7c838b", true},     {"water", "#3b82c4", false},    {"trap", "#343a40", false},
       {"bridge", "#b49a7a", false},
   };
 }
