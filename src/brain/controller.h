@@ -12,6 +12,7 @@
 #include <span>
 
 #include "brain/brain_model.h"
+#include "core/scene_record.h"
 
 namespace bx {
 
@@ -34,6 +35,11 @@ class ControllerState {
   virtual std::span<const double> sensors() const = 0;
   /// Its internal signals (a graph brain's neuron outputs), for replays.
   virtual std::span<const double> internals() const = 0;
+  /// What a replay shows of it in the scene (core/scene_record.h: the river
+  /// crossing's landscape, a field over the task's grid): appends to `out`
+  /// what changed since the last call, stamped `t` (s). The loop calls it
+  /// while it records a replay, before the first step and after every step.
+  virtual void record(double t, SceneRecord& out) {}
 };
 
 /// A compiled controller: its shape and the state it starts from.

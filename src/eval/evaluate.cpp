@@ -24,7 +24,9 @@ class ReplayRecorder {
  public:
   ReplayRecorder(const SimConfig& cfg, Replay& r) : fps_(cfg.replay_fps), r_(r) {}
 
-  void observe(const CreatureModel& m, const EvalState& s) {
+  void observe(const CreatureModel& m, EvalState& s) {
+    // the scene's changes, at every step; the frames at the replay's rate
+    record_scene(m, s, r_.scene);
     if (frames_ > 0 && s.world.time() < frames_ / fps_ - 1e-9) return;
     ++frames_;
     const World& w = s.world;
@@ -47,13 +49,11 @@ class ReplayRecorder {
     r_.frames.push_back(std::move(f));
   }
 
-  /// What the task adds to the scene, at the end.
-  void finish(const CreatureModel& m, const EvalState& s) {
-    TaskScene scene = s.task->scene(m);
-    r_.projectile = scene.projectile;
-    r_.release_time = scene.release_time;
-    r_.target = scene.target;
-  }
+  /// What the scene still holds at the end (the step that blew up, a
+  /// moment the task names once it is over).
+  void finish(const CreatureModel& m, EvalState& s) { record_scene(m, s, r_.scene); }
+
+  const SceneRecord& scene() const { return r_.scene; }
 
  private:
   double fps_;
@@ -61,17 +61,23 @@ class ReplayRecorder {
   long frames_ = 0;
 };
 
-// What an evaluation reports of its state once its loop has ended.
-void report(const CreatureModel& m, const EvalState& s, EvalResult& res) {
+// What an evaluation reports of its state once its loop has ended; `scene`
+// is the replay's scene record, or null when none was recorded.
+void report(const CreatureModel& m, EvalState& s, EvalResult& res, const SceneRecord* scene) {
   res.steps = s.physics_steps;
   res.brain_steps = s.brain_steps - s.brain_waits;
   res.seconds = s.world.time();
   res.note = s.task->note();
   res.diagnostics = diagnostics(s);
-  const TaskScene scene = s.task->scene(m);
-  res.release_time = scene.release_time;
-  res.touch_end_time = scene.touch_end_time;
-  res.throw_begin_time = scene.begin_time;
+  // the throw's moments, as the task's scene names them
+  SceneRecord own;
+  if (!scene) {
+    s.task->record(WorldObservation(m, s.world), own);
+    scene = &own;
+  }
+  res.release_time = scene->marker("release").value_or(-1);
+  res.touch_end_time = scene->marker("touch end").value_or(-1);
+  res.throw_begin_time = scene->marker("begin").value_or(-1);
   if (s.failed) {
     res.failed = true;
     res.failure = s.failure;
@@ -125,7 +131,7 @@ EvalResult evaluate_once(const CreatureModel& m, const ControllerModel& controll
     s->failure = e.what();
   }
   if (recorder) recorder->finish(m, *s);
-  report(m, *s, res);
+  report(m, *s, res, recorder ? &recorder->scene() : nullptr);
   return res;
 }
 

@@ -2,10 +2,10 @@
 #pragma once
 
 #include <cstdint>
-#include <optional>
 #include <string>
 #include <vector>
 
+#include "core/scene_record.h"
 #include "develop/creature_model.h"
 #include "eval/creature.h"
 #include "eval/sim_config.h"
@@ -25,14 +25,12 @@ struct ReplayFrame {
 };
 
 /// Frames of an evaluation, sampled at SimConfig::replay_fps, and what the
-/// task adds to the scene.
+/// task and the controller show beside the creature.
 struct Replay {
   std::vector<ReplayFrame> frames;
-  // throwing: the projectile part, the release moment (-1: none) and the
-  // aim task's target
-  int projectile = -1;
-  double release_time = -1;
-  std::optional<Vec3> target;
+  /// Their scene record (Task::record, ControllerState::record), its
+  /// events at every physics step's end where something changed.
+  SceneRecord scene;
 };
 
 /// How physically sound an evaluation was, and how its controller drove
@@ -58,13 +56,16 @@ struct EvalResult {
   std::string note;         ///< why the task scored 0 by rule (e.g. never settled), or empty
   double fitness = 0;
   double distance = 0;      ///< m, by the task's metric (throwing: D_p)
-  double release_time = -1; ///< throwing: when the projectile was released (s), or -1
+  // the throw's moments: the task's scene record's markers
+  /// throwing: when the projectile was released (s; the marker "release"), or -1
+  double release_time = -1;
   /// throwing: when a touch later than throwing.touch_seconds after the
-  /// release ended the throw (s), or -1 (not kept in a run's records)
+  /// release ended the throw (s; "touch end"), or -1 (not kept in a run's records)
   double touch_end_time = -1;
   /// throwing: when the throw began (0: at the drop; throwing.start =
-  /// settled: once the creature rested), or -1: never (not kept in records)
-  double throw_begin_time = 0;
+  /// settled: once the creature rested; "begin"), or -1: never, or a task
+  /// without a throw (not kept in records)
+  double throw_begin_time = -1;
   double target_miss = -1;  ///< throwing, aim: D_t (m), or -1
   /// The task's own measures by name (TaskScore::metrics); the first trial's.
   std::vector<Metric> metrics;

@@ -8,25 +8,6 @@
 
 namespace bx {
 
-namespace {
-
-// What the task reads of the world: a view, each quantity read when asked.
-class WorldObservation : public Observation {
- public:
-  WorldObservation(const CreatureModel& m, const World& w) : m_(m), w_(w) {}
-  double time() const override { return w_.time(); }
-  Vec3 centre_of_mass() const override { return w_.centre_of_mass(); }
-  int n_parts() const override { return m_.n_parts(); }
-  Pose part_pose(int i) const override { return w_.part_pose(i); }
-  bool touches_part(int i) const override { return w_.touches_part(i); }
-
- private:
-  const CreatureModel& m_;
-  const World& w_;
-};
-
-}  // namespace
-
 EvalState::EvalState(const CreatureModel& m, const ControllerModel& c, const SimConfig& cfg,
                      std::unique_ptr<Task> t, StartPose start)
     : world(cfg.physics),
@@ -107,6 +88,11 @@ bool step(const CreatureModel& m, const SimConfig& cfg, EvalState& s) {
   }
   s.task->observe(obs);
   return true;
+}
+
+void record_scene(const CreatureModel& m, EvalState& s, SceneRecord& out) {
+  s.task->record(WorldObservation(m, s.world), out);
+  s.controller->record(s.world.time(), out);
 }
 
 EvalDiagnostics diagnostics(const EvalState& s) {

@@ -18,6 +18,22 @@
 
 namespace bx {
 
+/// What a task reads of the world (Observation): a view of it, each
+/// quantity read when asked.
+class WorldObservation : public Observation {
+ public:
+  WorldObservation(const CreatureModel& m, const World& w) : m_(m), w_(w) {}
+  double time() const override { return w_.time(); }
+  Vec3 centre_of_mass() const override { return w_.centre_of_mass(); }
+  int n_parts() const override { return m_.n_parts(); }
+  Pose part_pose(int i) const override { return w_.part_pose(i); }
+  bool touches_part(int i) const override { return w_.touches_part(i); }
+
+ private:
+  const CreatureModel& m_;
+  const World& w_;
+};
+
 /// How one evaluation's start differs from the task's scenario: what a
 /// physics seed draws (evaluate.cpp: task.start_yaw_jitter,
 /// task.start_drop_jitter).
@@ -71,6 +87,11 @@ struct EvalState {
 /// physics step, the explosion test, the task's observation. False (and
 /// nothing observed) once the world blew up: s.failed and s.failure say why.
 bool step(const CreatureModel& m, const SimConfig& cfg, EvalState& s);
+
+/// The scene's changes since the last call (Task::record, then
+/// ControllerState::record), stamped with the world's time: what a replay
+/// records before the first step and after each.
+void record_scene(const CreatureModel& m, EvalState& s, SceneRecord& out);
 
 /// What the world measured of its accuracy, and the effectors' activity
 /// (their frequencies too, when recorded).

@@ -4,12 +4,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 
 #include "brain/neuron_set.h"
 #include "core/files.h"
 #include "core/version.h"
+#include "io/rounding.h"
+#include "io/scene_record_json.h"
 
 namespace bx {
 
@@ -17,17 +17,8 @@ namespace {
 
 using nlohmann::json;
 
-// Rounding keeps files small: 10 micrometres, 1e-5 of a quaternion or a joint
-// angle (rad), 1e-4 of a signal. Going through decimal text gives the double nearest the rounded
-// decimal, which prints short.
-double round_to(double v, double q) {
-  int digits = static_cast<int>(std::lround(-std::log10(q)));
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
-  double r = std::strtod(buf, nullptr);
-  return r == 0 ? 0.0 : r;  // no "-0.0"
-}
-
+// Rounding keeps files small (io/rounding.h): 10 micrometres, 1e-5 of a
+// quaternion or a joint angle (rad), 1e-4 of a signal.
 json vec_json(Vec3 v, double q) { return json::array({round_to(v.x, q), round_to(v.y, q), round_to(v.z, q)}); }
 
 // a joint's stops per degree of freedom, [lo, hi] each; [] when unlimited
@@ -73,23 +64,11 @@ std::string replay_to_string(const CreatureModel& m, const Replay& r, const Eval
   else
     j["seed"] = info.seed;
   j["dt"] = info.dt;
-  // the scene: ground and props, each drawn from its description
-  json props = json::array();
-  if (r.target)
-    props.push_back({{"name", "target"},
-                     {"shape", "sphere"},
-                     {"size", {0.12, 0.12, 0.12}},
-                     {"color", "#d6336c"},
-                     {"opacity", 0.8},
-                     {"pose", {round_to(r.target->x, 1e-6), round_to(r.target->y, 1e-6),
-                               round_to(r.target->z, 1e-6), 1, 0, 0, 0}}});
+  // the scene: the ground, props drawn from their descriptions (no task
+  // writes any now), and what the task and the controller recorded
   j["scene"] = {{"ground", {{"type", "plane"}, {"z", 0.0}, {"friction", info.friction}}},
-                {"props", props}};
-  // a catapult's throw: the projectile part, the release moment, the target
-  if (m.projectile >= 0)
-    j["throw"] = {{"projectile", m.projectile},
-                  {"release_t", r.release_time >= 0 ? json(round_to(r.release_time, 1e-6)) : json(nullptr)},
-                  {"target", r.target ? vec_json(*r.target, 1e-6) : json(nullptr)}};
+                {"props", json::array()}};
+  if (!r.scene.empty()) j["scene"]["record"] = scene_record_to_json(r.scene);
   // parts and joints at the initial pose
   json parts = json::array();
   for (const auto& p : m.parts)

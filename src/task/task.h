@@ -6,12 +6,12 @@
 // throwing (task/throwing.h) are its implementations.
 #pragma once
 
-#include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "core/math.h"
+#include "core/scene_record.h"
 
 namespace bx {
 
@@ -94,15 +94,6 @@ struct TaskScore {
   std::vector<Metric> metrics;  ///< the task's own measures, in the task's order
 };
 
-/// What a replay shows beside the creature.
-struct TaskScene {
-  int projectile = -1;        ///< the thrown part, or -1
-  double release_time = -1;   ///< s, or -1: not released
-  double touch_end_time = -1; ///< s: a late touch of the projectile ended the throw, or -1
-  double begin_time = 0;      ///< s: when the task began (the throw once the creature rested), or -1: never
-  std::optional<Vec3> target; ///< the aim task's target
-};
-
 /// One evaluation's task. The loop calls begin() once with the creature in
 /// place, then for each physics step: inputs() when the controller is due
 /// to think, act() after it thought, the step, observe(); it stops when
@@ -145,8 +136,14 @@ class Task {
   virtual TaskScore score(const CreatureModel& m) const = 0;
   /// Why the score is 0 by rule (e.g. never settled), or empty.
   virtual std::string note() const { return {}; }
-  /// What a replay shows beside the creature.
-  virtual TaskScene scene(const CreatureModel&) const { return {}; }
+  /// What a replay shows beside the creature (core/scene_record.h): appends
+  /// to `out` what is new since the last call, stamped with the
+  /// observation's time (or a moment's own). The loop calls it while it
+  /// records a replay, with the creature in place before the first step and
+  /// after every step, and once after the last; without a replay,
+  /// evaluation calls it once at the end on a fresh record, for the task's
+  /// named moments (SceneRecord::markers: a catapult's release).
+  virtual void record(const Observation&, SceneRecord& out) {}
 };
 
 }  // namespace bx

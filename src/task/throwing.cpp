@@ -58,14 +58,26 @@ TaskScore ThrowingTask::score(const CreatureModel&) const {
   return {fitness(), distance(), def_.fitness == ThrowFitness::Aim ? target_miss() : -1};
 }
 
-TaskScene ThrowingTask::scene(const CreatureModel&) const {
-  TaskScene s;
-  s.projectile = projectile_;
-  s.release_time = release_time();
-  s.touch_end_time = t_touch_end_;
-  s.begin_time = settling_ ? -1 : t_begin_;
-  if (def_.fitness == ThrowFitness::Aim) s.target = def_.target;
-  return s;
+void ThrowingTask::record(const Observation&, SceneRecord& out) {
+  // what holds throughout: the projectile, the aim task's target
+  if (!recorded_items_) {
+    if (projectile_ >= 0) out.parts.push_back({"projectile", projectile_, kProjectileColor});
+    if (def_.fitness == ThrowFitness::Aim) out.points.push_back({"target", def_.target, kTargetSize, kTargetColor});
+    recorded_items_ = true;
+  }
+  // each moment once, when it has happened
+  if (!settling_ && !recorded_begin_) {
+    out.markers.push_back({"begin", t_begin_});
+    recorded_begin_ = true;
+  }
+  if (released_ && !recorded_release_) {
+    out.markers.push_back({"release", t_release_});
+    recorded_release_ = true;
+  }
+  if (t_touch_end_ >= 0 && !recorded_touch_) {
+    out.markers.push_back({"touch end", t_touch_end_});
+    recorded_touch_ = true;
+  }
 }
 
 void ThrowingTask::release(double t, Vec3 projectile) {

@@ -83,7 +83,17 @@ class ThrowingTask : public Task {
   bool done() const override { return done_; }
   TaskScore score(const CreatureModel&) const override;
   std::string note() const override;
-  TaskScene scene(const CreatureModel&) const override;
+  /// The scene (core/scene_record.h): the part "projectile" and, for the
+  /// aim task, the point "target" on the first call; then each moment once
+  /// it has happened, at its own time: "begin" (the throw began: 0 at the
+  /// drop, or once the creature rested), "release", "touch end" (a late
+  /// touch ended the throw).
+  void record(const Observation&, SceneRecord& out) override;
+  /// The colours a replay draws them in ("#rrggbb").
+  static constexpr const char* kProjectileColor = "#ffc61a";
+  static constexpr const char* kTargetColor = "#d6336c";
+  /// The target's diameter as drawn (m).
+  static constexpr double kTargetSize = 0.12;
 
   /// Call at the step the release fires, with the time and the projectile's centre.
   void release(double t, Vec3 projectile);
@@ -122,6 +132,8 @@ class ThrowingTask : public Task {
   Vec3 start_, last_;
   double miss_ = 0;
   long still_steps_ = 0;  ///< consecutive still steps of dt
+  // what record() has appended
+  bool recorded_items_ = false, recorded_begin_ = false, recorded_release_ = false, recorded_touch_ = false;
 };
 
 /// Least distance from point p to the segment [a, b].

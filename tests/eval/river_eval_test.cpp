@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <variant>
 #include <cctype>
 #include <filesystem>
 #include <fstream>
@@ -19,6 +21,7 @@
 #include "eval/task_table.h"
 #include "genome/float_vector.h"
 #include "io/config.h"
+#include "task/river/grid.h"
 
 namespace bx {
 namespace {
@@ -113,6 +116,52 @@ TEST(RiverEval, ARandomControllerWalksTheGridOnRealPhysicsAndReportsItsMetrics) 
   EXPECT_EQ(again.result.fitness, r.fitness);
   EXPECT_EQ(again.result.metrics, r.metrics);
   EXPECT_EQ(again.result.steps, r.steps);
+}
+
+// A replay's scene: the task lays its grid under the torso at the start with
+// the counters, the controller adds its landscape each time it changes and
+// only then; recording it changes nothing of the evaluation.
+TEST(RiverEval, AReplayRecordsTheGridTheCountersAndTheLandscapeOnlyWhenItChanges) {
+  const SimConfig cfg = river_config(10);
+  auto c = develop_creature(random_genes(cfg, 3), cfg);
+  ASSERT_TRUE(c.ok()) << c.error();
+  Replay replay;
+  const EvalResult r = evaluate(*c, cfg, 42, &replay);
+  ASSERT_FALSE(r.failed) << r.failure;
+  const SceneRecord& scene = replay.scene;
+  ASSERT_EQ(scene.cell_kinds.size(), 7u);
+  ASSERT_FALSE(scene.events.empty());
+  // at t = 0: the grid, its start cell under the torso's centre, and the counters
+  ASSERT_TRUE(std::holds_alternative<SceneGrid>(scene.events[0].what));
+  EXPECT_EQ(scene.events[0].t, 0);
+  const SceneGrid& grid = std::get<SceneGrid>(scene.events[0].what);
+  EXPECT_EQ(grid.cell, cfg.river.body.unit);
+  const double torso_x = replay.frames[0].poses[0], torso_y = replay.frames[0].poses[1];
+  const int sx = static_cast<int>(std::floor((torso_x - grid.origin.x) / grid.cell));
+  const int sy = static_cast<int>(std::floor((torso_y - grid.origin.y) / grid.cell));
+  EXPECT_EQ(sx, 0);  // a level's start is on column 0
+  EXPECT_EQ(grid.cells[static_cast<std::size_t>(sy * 20 + sx)], static_cast<int>(Cell::Grass));
+  std::set<std::string> counted;
+  for (const SceneEvent& e : scene.events)
+    if (const auto* n = std::get_if<SceneCounter>(&e.what); n && e.t == 0) counted.insert(n->name);
+  EXPECT_EQ(counted, (std::set<std::string>{"level", "score", "deaths"}));
+  // the landscape: first at t = 0, then only when it changed, at most once a step
+  std::vector<const SceneEvent*> fields;
+  for (const SceneEvent& e : scene.events)
+    if (std::holds_alternative<SceneField>(e.what)) fields.push_back(&e);
+  ASSERT_GE(fields.size(), 2u);  // the controller's first step sets its iotas
+  EXPECT_EQ(fields[0]->t, 0);
+  for (std::size_t k = 1; k < fields.size(); ++k) {
+    EXPECT_NE(std::get<SceneField>(fields[k]->what).values, std::get<SceneField>(fields[k - 1]->what).values) << k;
+    EXPECT_GT(fields[k]->t, fields[k - 1]->t) << k;
+  }
+  EXPECT_LT(fields.size(), static_cast<std::size_t>(r.steps / 10));
+  for (std::size_t k = 1; k < scene.events.size(); ++k) EXPECT_GE(scene.events[k].t, scene.events[k - 1].t);
+  // recording it changes nothing
+  const EvalResult plain = evaluate(*c, cfg, 42);
+  EXPECT_EQ(plain.fitness, r.fitness);
+  EXPECT_EQ(plain.steps, r.steps);
+  EXPECT_EQ(plain.metrics, r.metrics);
 }
 
 // Issue 32: the river crossing comes in through the interfaces, so its words

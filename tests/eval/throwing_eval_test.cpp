@@ -53,8 +53,12 @@ TEST(ThrowingEval, HandMadeCatapultThrowsItsProjectileAtTheDelay) {
   EXPECT_DOUBLE_EQ(r.fitness, r.distance);
   // the evaluation ends once the projectile rests, well before the cap
   EXPECT_LT(r.seconds, 5.0);
-  EXPECT_EQ(replay.projectile, 2);
-  EXPECT_DOUBLE_EQ(replay.release_time, r.release_time);
+  // the replay's scene names the projectile and marks the release
+  ASSERT_EQ(replay.scene.parts.size(), 1u);
+  EXPECT_EQ(replay.scene.parts[0].name, "projectile");
+  EXPECT_EQ(replay.scene.parts[0].part, 2);
+  EXPECT_EQ(replay.scene.marker("release"), r.release_time);
+  EXPECT_EQ(replay.scene.marker("begin"), 0.0);
   // until the release the projectile rides the arm: their distance holds (to
   // the few millimetres an ODE fixed joint gives under the swing)
   auto gap = [&](const ReplayFrame& f) {
@@ -259,8 +263,9 @@ TEST(ThrowingEval, AimScoresDistanceMinusTheMiss) {
     EXPECT_DOUBLE_EQ(r.distance, thrown.distance);
     EXPECT_GE(r.target_miss, 0.0);
     EXPECT_DOUBLE_EQ(r.fitness, r.distance - r.target_miss);
-    ASSERT_TRUE(replay.target.has_value());
-    EXPECT_EQ(*replay.target, target);
+    ASSERT_EQ(replay.scene.points.size(), 1u);
+    EXPECT_EQ(replay.scene.points[0].name, "target");
+    EXPECT_EQ(replay.scene.points[0].p, target);
   }
   // the catapult throws towards -x: a target there is missed by less
   cfg.throwing.target = {-2, 0, 0.075};
@@ -362,7 +367,7 @@ TEST(ThrowingEval, TrialsAverageTheThrowsOfSeveralSeeds) {
   EvalResult first = evaluate(m, one, 7);
   EXPECT_EQ(r.distance, first.distance);
   EXPECT_EQ(r.release_time, first.release_time);
-  EXPECT_EQ(replay.release_time, first.release_time);
+  EXPECT_EQ(replay.scene.marker("release"), first.release_time);
   // the seeds differ, and so (QuickStep is randomised) do the throws
   EXPECT_NE(trial_seed(7, 1), trial_seed(7, 2));
   EXPECT_NE(r.trial_fitness[0], r.trial_fitness[1]);

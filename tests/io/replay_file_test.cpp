@@ -10,7 +10,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/rng.h"
 #include "develop/develop.h"
+#include "eval/creature.h"
+#include "genome/float_vector.h"
+#include "io/scene_record_json.h"
 #include "genome/genome_json.h"
 
 namespace bx {
@@ -164,6 +168,67 @@ TEST(ReplayFile, RecordingAReplayChangesNothingOfTheEvaluation) {
     EXPECT_EQ(with.distance, without.distance) << name;
     EXPECT_EQ(with.steps, without.steps) << name;
   }
+}
+
+TEST(ReplayFile, ACatapultsSceneNamesItsProjectileAndMarksItsRelease) {
+  Written w = simulate("catapult.json", 3);
+  const json& rec = w.j["scene"]["record"];
+  EXPECT_FALSE(w.j.contains("throw"));  // its fields are the record's now
+  EXPECT_EQ(rec["parts"], json::parse(R"([{"name": "projectile", "part": 2, "color": "#ffc61a"}])"));
+  ASSERT_GE(w.res.release_time, 0);
+  bool release = false;
+  for (const json& m : rec["markers"])
+    if (m["name"] == "release") {
+      release = true;
+      EXPECT_NEAR(m["t"].get<double>(), w.res.release_time, 1e-6);
+    }
+  EXPECT_TRUE(release) << rec;
+  EXPECT_FALSE(rec.contains("events"));
+  EXPECT_TRUE(w.j["result"].contains("throw_distance"));
+  // a walker's task shows nothing beside it: no record
+  EXPECT_FALSE(simulate("walker.json", 1).j["scene"].contains("record"));
+}
+
+// a river crossing's replay: the record its task and controller made comes
+// back from the file, its field values to the file's 1e-3
+TEST(ReplayFile, ARiverSceneRoundTripsThroughTheFile) {
+  SimConfig cfg;
+  cfg.creature = CreatureKind::River;
+  cfg.task_kind = TaskKind::River;
+  cfg.physics = river_physics(cfg.river.body);
+  cfg.motor = river_motor();
+  cfg.river.task.seconds = 3;
+  const FloatVectorDef def = creature_kind_row(cfg.creature).float_genes(cfg);
+  Rng rng(3);
+  std::vector<double> genes(static_cast<std::size_t>(def.length));
+  for (double& x : genes) x = rng.uniform(def.lo, def.hi);
+  auto c = develop_creature(FloatVector(genes), cfg);
+  ASSERT_TRUE(c.ok()) << c.error();
+  Replay r;
+  const EvalResult res = evaluate(*c, cfg, 42, &r);
+  const json j = json::parse(replay_to_string(*c->body, r, res, {"river.json", 42, cfg.physics.dt, 10, "river"}));
+  auto back = scene_record_from_json(j["scene"]["record"]);
+  ASSERT_TRUE(back.ok()) << back.error();
+  ASSERT_EQ(back->events.size(), r.scene.events.size());
+  EXPECT_EQ(back->cell_kinds, r.scene.cell_kinds);
+  int fields = 0;
+  for (std::size_t k = 0; k < r.scene.events.size(); ++k) {
+    const SceneEvent &a = r.scene.events[k], &b = back->events[k];
+    EXPECT_NEAR(a.t, b.t, 1e-6);
+    ASSERT_EQ(a.what.index(), b.what.index()) << k;
+    if (const auto* f = std::get_if<SceneField>(&a.what)) {
+      ++fields;
+      const SceneField& g = std::get<SceneField>(b.what);
+      ASSERT_EQ(f->values.size(), g.values.size());
+      for (std::size_t i = 0; i < f->values.size(); ++i) ASSERT_NEAR(f->values[i], g.values[i], 5e-4 + 1e-12);
+    } else if (const auto* g = std::get_if<SceneGrid>(&a.what)) {
+      EXPECT_EQ(g->cells, std::get<SceneGrid>(b.what).cells);
+      EXPECT_NEAR(g->origin.x, std::get<SceneGrid>(b.what).origin.x, 1e-6);
+    } else {
+      EXPECT_EQ(a.what, b.what) << k;
+    }
+  }
+  EXPECT_GE(fields, 1);
 }
 
 }  // namespace

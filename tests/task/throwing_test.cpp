@@ -14,6 +14,15 @@ namespace {
 
 constexpr double g = 9.81;
 
+// an observation the value methods' tests do not read
+struct Nowhere : Observation {
+  double time() const override { return 0; }
+  Vec3 centre_of_mass() const override { return {}; }
+  int n_parts() const override { return 0; }
+  Pose part_pose(int) const override { return {}; }
+  bool touches_part(int) const override { return false; }
+};
+
 // a projectile released at p0 with velocity v flies until it lands, then lies still
 void fly(ThrowingTask& t, const ThrowingDef& def, Vec3 p0, Vec3 v, double dt) {
   t.release(0, p0);
@@ -83,7 +92,9 @@ TEST(Throwing, ATouchLaterThanTouchSecondsAfterTheReleaseEndsTheThrowWhereThePro
   EXPECT_TRUE(t.done());
   EXPECT_NEAR(t.distance(), 1.4, 1e-12);
   EXPECT_DOUBLE_EQ(t.late_touch_time(), 1.7);
-  EXPECT_DOUBLE_EQ(t.scene(CreatureModel{}).touch_end_time, 1.7);
+  SceneRecord scene;
+  t.record(Nowhere{}, scene);
+  EXPECT_EQ(scene.marker("touch end"), 1.7);
   t.observe(1.8, {x + 5, 0, 0}, false);  // nothing counts after
   EXPECT_NEAR(t.distance(), 1.4, 1e-12);
 
@@ -95,6 +106,38 @@ TEST(Throwing, ATouchLaterThanTouchSecondsAfterTheReleaseEndsTheThrowWhereThePro
   EXPECT_FALSE(u.done());
   EXPECT_NEAR(u.distance(), 10, 1e-9);
   EXPECT_EQ(u.late_touch_time(), -1);
+}
+
+// the replay's scene: the projectile and the aim task's target once, then
+// each moment once, at its own time, however often it is asked
+TEST(Throwing, ItsSceneNamesTheProjectileTheTargetAndEachMomentOnce) {
+  ThrowingDef def;
+  def.fitness = ThrowFitness::Aim;
+  def.target = {3, 1, 0.075};
+  ThrowingTask t(def, 0.01, 2, 1);
+  SceneRecord scene;
+  t.record(Nowhere{}, scene);
+  ASSERT_EQ(scene.parts.size(), 1u);
+  EXPECT_EQ(scene.parts[0], (ScenePart{"projectile", 2, "#ffc61a"}));
+  ASSERT_EQ(scene.points.size(), 1u);
+  EXPECT_EQ(scene.points[0], (ScenePoint{"target", {3, 1, 0.075}, 0.12, "#d6336c"}));
+  // at the drop the throw begins at 0; nothing is released yet
+  ASSERT_EQ(scene.markers.size(), 1u);
+  EXPECT_EQ(scene.markers[0], (SceneMarker{"begin", 0}));
+  t.release(0.5, {0, 0, 1});
+  t.observe(0.51, {0.1, 0, 1});
+  t.record(Nowhere{}, scene);
+  t.record(Nowhere{}, scene);
+  EXPECT_EQ(scene.markers, (std::vector<SceneMarker>{{"begin", 0}, {"release", 0.5}}));
+  EXPECT_EQ(scene.parts.size(), 1u);
+  EXPECT_EQ(scene.points.size(), 1u);
+  EXPECT_TRUE(scene.events.empty());
+  // the distance task has no target
+  ThrowingTask d(ThrowingDef{}, 0.01, 2, 1);
+  SceneRecord plain;
+  d.record(Nowhere{}, plain);
+  EXPECT_TRUE(plain.points.empty());
+  EXPECT_EQ(plain.marker("release"), std::nullopt);
 }
 
 TEST(Throwing, ComesToRestAfterRestSecondsOfStillness) {

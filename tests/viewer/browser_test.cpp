@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <fstream>
 #include <regex>
 #include <set>
 #include <string>
@@ -171,6 +172,37 @@ TEST_F(ViewerInBrowser, ACatapultsProjectileFliesAwayWithItsTrajectoryDrawn) {
   };
   EXPECT_LT(gap(before) + 0.5, gap(after)) << before << after;
   EXPECT_GT(gap(after), 0.8) << after;
+}
+
+TEST_F(ViewerInBrowser, ARiverCrossingsGridStonesHeatMapAndCountersAreDrawn) {
+  // a river creature of fixed genes on level 4: a river, 8 traps, 20 stones
+  fs::path genes = dir / "river.json", cfg = dir / "river.toml", page = dir / "river.html";
+  json g = {{"format", "bestiary-genotype"}, {"version", 1}, {"kind", "floats"}, {"genes", json::array()}};
+  for (int k = 0; k < 181; ++k) g["genes"].push_back(std::round(3000 * std::sin(k * 1.7)) / 1000);
+  std::ofstream(genes) << g.dump();
+  std::ofstream(cfg) << "[genotype]\nkind = \"river\"\n[task]\nkind = \"river\"\n[river]\nseconds = 3\nfirst_level = 4\n"
+                        "[motor]\nmodel = \"pd\"\n[physics]\npowered_stops = \"separate\"\n";
+  Outcome shown = bestiary("show " + genes.string() + " --config " + cfg.string() + " --out " + page.string());
+  ASSERT_EQ(shown.code, 0) << shown.err;
+  json seen = inspect(page, "river", "--times 0.5,2.5 --width 800 --height 600");
+  ASSERT_FALSE(seen.is_null());
+  EXPECT_TRUE(seen["errors"].empty()) << seen["errors"];
+  for (const auto& m : seen["moments"]) {
+    const json& scene = m["state"]["scene"];
+    ASSERT_TRUE(scene.is_object()) << m;
+    EXPECT_EQ(scene["grid"], json::array({20, 20}));
+    EXPECT_GE(scene["items"].get<int>(), 19) << scene;  // the stones, one perhaps carried
+    EXPECT_TRUE(scene["field"].is_number()) << scene;   // the landscape's heat map
+    EXPECT_TRUE(scene["heat"].get<bool>());
+    EXPECT_EQ(m["state"]["counters"][0], json::array({"level", 4})) << m["state"]["counters"];
+    EXPECT_EQ(m["state"]["counters"][2][0], "deaths");
+  }
+  // the legend names the kinds and the heat map's scale, and fits its box
+  ASSERT_TRUE(seen["cells"].is_array()) << seen["cells"];
+  EXPECT_EQ(seen["cells"][0], "grass");
+  EXPECT_EQ(seen["cells"][3], "stone");
+  EXPECT_EQ(seen["cells"].back().get<std::string>().rfind("landscape -15", 0), 0u) << seen["cells"];
+  EXPECT_TRUE(seen["overflow"].empty()) << seen["overflow"];
 }
 
 TEST_F(ViewerInBrowser, DevelopmentRemarksAreMutedNotesNotErrors) {

@@ -1,4 +1,5 @@
-// The viewer: one replay at a time on the stage (with a catapult's flight),
+// The viewer: one replay at a time on the stage (with a catapult's flight
+// and what its scene record draws: a grid's cells, items, a heat map),
 // its time, and every panel kept in step with it. `renderFrame(t)` draws one
 // moment deterministically (the follow camera's standard view), for videos
 // and tests.
@@ -7,6 +8,9 @@ import { createStage } from './stage.js';
 import { createBodies } from './bodies.js';
 import { createTrail } from './trail_view.js';
 import { createFlight } from './flight_view.js';
+import { createRecordView } from './record_view.js';
+import { showCellsLegend } from './cells_legend.js';
+import { countersText, hasWorld, recordOf, sceneAt } from './scene_record.js';
 import { centreAt, throwOf, throwStatus } from './flight.js';
 import { createCameraRig } from './camera_rig.js';
 import { createSparklines } from './sparklines.js';
@@ -22,13 +26,13 @@ import { fitness, metres, seconds } from './format.js';
 
 /**
  * A viewer of the checked page data `data` ({replays, run}) in the page's
- * elements `ui` ({canvas, stage, hud, info, picker, run, signals, neurons, player}).
+ * elements `ui` ({canvas, stage, hud, cells, info, picker, run, signals, neurons, player}).
  */
 export function createViewer(ui, data) {
   const stage = createStage(ui.canvas);
   const rig = createCameraRig(ui.canvas);
-  const s = { index: -1, entry: null, t: 0, T: 0, playing: false, speed: 1, joints: false, trail: true, flight: true, radius: 1, throw: null };
-  let bodies = null, trail = null, flight = null, sparks = null, signals = null, renderMode = false;
+  const s = { index: -1, entry: null, t: 0, T: 0, playing: false, speed: 1, joints: false, trail: true, flight: true, field: true, radius: 1, throw: null, record: null };
+  let bodies = null, trail = null, flight = null, world = null, sparks = null, signals = null, renderMode = false;
   // the scene is drawn only when something changed: software GL is slow, and
   // a paused page should cost nothing
   let dirty = true;
@@ -67,6 +71,7 @@ export function createViewer(ui, data) {
     joints: (on) => { s.joints = on; bodies.showJoints(on); dirty = true; },
     trail: (on) => { s.trail = on; trail.object.visible = on; dirty = true; },
     flight: (on) => showFlight(on),
+    field: (on) => showField(on),
   });
 
   function showFlight(on) {
@@ -76,9 +81,22 @@ export function createViewer(ui, data) {
     dirty = true;
   }
 
+  function showField(on) {
+    s.field = on;
+    world?.showField(on);
+    player.setFieldOn(on);
+    dirty = true;
+  }
+
   /** Shows replay i from its start. */
   function load(i) {
     const entry = data.replays[i];
+    // the record's view first: its carried item rides on a part
+    if (world) {
+      stage.scene.remove(world.group);
+      world.dispose();
+      world = null;
+    }
     if (bodies) {
       stage.scene.remove(bodies.group, trail.object);
       bodies.dispose();
@@ -107,6 +125,15 @@ export function createViewer(ui, data) {
       stage.scene.add(flight.object);
     }
     player.setThrow(s.throw !== null, s.throw?.release ?? null, s.T);
+    // what the scene record draws on the ground and on the parts, its legend
+    s.record = recordOf(entry.replay);
+    if (s.record.points.length || hasWorld(s.record)) {
+      world = createRecordView(s.record, entry.replay, bodies);
+      world.showField(s.field);
+      stage.scene.add(world.group);
+    }
+    player.setField(world?.fieldName ?? null);
+    showCellsLegend(ui.cells, s.record);
     rig.reset(entry.replay.frames, s.radius, s.throw ? s.throw.projectile : -1);
     sparks?.dispose();
     signals?.dispose();
@@ -140,6 +167,7 @@ export function createViewer(ui, data) {
     bodies.setTime(s.t);
     trail.setTime(s.t);
     flight?.setTime(s.t);
+    world?.setTime(s.t);
     rig.track(s.t);
     stage.focus(rig.targetAt(s.t), s.radius);
     sparks.setTime(s.t);
@@ -147,8 +175,10 @@ export function createViewer(ui, data) {
     const res = s.entry.replay.result ?? {};
     // how far: the centre of mass's, or a catapult's projectile's since its release
     const far = s.throw ? throwStatus(frames, s.throw, s.t) : `distance ${metres(distanceAt(frames, s.t))}`;
+    // and the record's counters at this moment (a river crossing's level, score, deaths)
+    const counters = countersText(sceneAt(s.record, s.t).counters);
     ui.hud.textContent = `${s.entry.label}   t ${seconds(s.t)}   ${far}` +
-      (typeof res.fitness === 'number' ? `   fitness ${fitness(res.fitness)}` : '');
+      (typeof res.fitness === 'number' ? `   fitness ${fitness(res.fitness)}` : '') + (counters ? `   ${counters}` : '');
     player.show({ t: s.t, duration: s.T, playing: s.playing, speed: s.speed, mode: rig.mode });
     dirty = true;
   }
@@ -194,7 +224,8 @@ export function createViewer(ui, data) {
     requestAnimationFrame(tick);
   }
 
-  // keys: space plays, arrows step a frame, c camera, j joints, t trail, f a catapult's flight
+  // keys: space plays, arrows step a frame, c camera, j joints, t trail, f a
+  // catapult's flight, h a recorded field's heat map
   window.addEventListener('keydown', (ev) => {
     // not while the user types or picks from a list
     const t = ev.target;
@@ -207,6 +238,7 @@ export function createViewer(ui, data) {
     else if (ev.key === 'j') { s.joints = !s.joints; bodies.showJoints(s.joints); player.setJoints(s.joints); dirty = true; }
     else if (ev.key === 't') { s.trail = !s.trail; trail.object.visible = s.trail; player.setTrail(s.trail); dirty = true; }
     else if (ev.key === 'f' && flight) showFlight(!s.flight);
+    else if (ev.key === 'h' && world?.fieldName) showField(!s.field);
     else return;
     ev.preventDefault();
   });
@@ -222,7 +254,9 @@ export function createViewer(ui, data) {
    * generation it is shown as the best of (null for none), whose lineage is
    * listed, the fitness the run stored for it and how many evaluations that
    * is the mean of (the replay is the first); for a catapult, the
-   * projectile's centre and whether its flight is drawn.
+   * projectile's centre and whether its flight is drawn; what the scene
+   * record draws (record_view.js's state(), or null) and its counters
+   * ([name, value]) at this moment.
    */
   function state() {
     const p = bodies.parts[0].position;
@@ -235,6 +269,8 @@ export function createViewer(ui, data) {
       root: [p.x, p.y, p.z], com: comAt(frames, s.t), sparklines: sparks.rows, signals: signals.rows,
       projectile: s.throw ? centreAt(frames, s.throw.projectile, s.t) : null,
       flight: flight ? flight.drawn && s.flight : false,
+      scene: world ? world.state() : null,
+      counters: sceneAt(s.record, s.t).counters,
     };
   }
 

@@ -1,13 +1,14 @@
 // Meshes for the creature's parts and the scene's props, posed per moment.
-// Each part is its true shape, coloured by its gene (a catapult's projectile
-// in its own colour, whatever its gene); joint axes hang on the child part (the replay gives anchor and axes in the child's frame), so they
-// move with it.
+// Each part is its true shape, coloured by its gene (a part its scene record
+// names, a catapult's projectile, in the record's colour, whatever its
+// gene); joint axes hang on the child part (the replay gives anchor and axes
+// in the child's frame), so they move with it.
 import {
   ArrowHelper, EdgesGeometry, Group, LineBasicMaterial, LineSegments, Mesh, MeshBasicMaterial,
   MeshStandardMaterial, SphereGeometry, Vector3,
 } from 'three';
-import { geneColor, PROJECTILE_COLOR } from './palette.js';
-import { throwOf } from './flight.js';
+import { geneColor } from './palette.js';
+import { recordOf } from './scene_record.js';
 import { shapeGeometry } from './shapes.js';
 import { partPoseAt } from './timeline.js';
 import { propPoseAt, sceneProps } from './props.js';
@@ -74,9 +75,10 @@ function jointMarker(joint, partSize) {
 export function createBodies(replay) {
   const group = new Group();
   // parts, each with the markers of the joints that attach it to its parent
-  const projectile = throwOf(replay)?.projectile ?? -1;
+  // a part the scene record names (a catapult's projectile) in its colour
+  const named = new Map(recordOf(replay).parts.map((p) => [p.part, p.color]));
   const parts = replay.parts.map((p, k) => {
-    const color = k === projectile ? PROJECTILE_COLOR : geneColor(p.gene, p.mirrored);
+    const color = named.get(k) ?? geneColor(p.gene, p.mirrored);
     const mesh = solid(p.shape, p.size, color);
     group.add(mesh);
     return mesh;

@@ -1,17 +1,21 @@
-// A catapult's throw (the replay's optional `throw`): which part is the
+// A catapult's throw (its scene record's projectile, release and target): which part is the
 // projectile, when it was released, and the path of its centre in 3D from
 // the release to the present moment, as points and as a tube around them.
 import { bracket, partPoseAt } from './timeline.js';
 import { metres } from './format.js';
+import { markerTime, partNamed, pointNamed, recordOf } from './scene_record.js';
 
 /**
- * The throw of a replay, or null for a creature that throws nothing:
- * { projectile: part index, release: time (s) or null, target: xyz or null }.
+ * The throw of a replay, or null for a creature that throws nothing: from
+ * its scene record (scene_record.js), the part "projectile", the marker
+ * "release" and the point "target": { projectile: part index, release: time
+ * (s) or null, target: xyz or null, color: the projectile's }.
  */
 export function throwOf(replay) {
-  const th = replay.throw;
-  if (!th) return null;
-  return { projectile: th.projectile, release: th.release_t ?? null, target: th.target ?? null };
+  const rec = recordOf(replay);
+  const part = partNamed(rec, 'projectile');
+  if (!part) return null;
+  return { projectile: part.part, release: markerTime(rec, 'release'), target: pointNamed(rec, 'target')?.p ?? null, color: part.color };
 }
 
 /** Centre of part `k` at time t, interpolated between frames. */

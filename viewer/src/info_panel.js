@@ -113,8 +113,9 @@ function download(name, text) {
 export function showInfo(container, entry, run = null) {
   const res = entry.replay.result ?? {};
   // the projectile's row carries a swatch of its colour in the scene
+  const projectile = throwOf(entry.replay)?.color ?? PROJECTILE_COLOR;
   const value = (k, v) => (k === 'projectile'
-    ? el('dd', {}, el('span', { class: 'swatch', style: `background:${cssColor(PROJECTILE_COLOR)}` }), v)
+    ? el('dd', {}, el('span', { class: 'swatch', style: `background:${cssColor(projectile)}` }), v)
     : el('dd', {}, v ?? '?'));
   const rows = [...(run ? memberRows(run.member, run.best, run.bestOf, run.score, run.halfStep, run.quarterStep) : []), ...infoRows(entry)];
   container.replaceChildren(

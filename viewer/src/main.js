@@ -3,16 +3,21 @@
 // is shown on the page and kept in `window.bestiary.error`.
 import { parsePageData } from './data.js';
 import { sceneProps } from './props.js';
+import { recordOf } from './scene_record.js';
 import { createViewer } from './app.js';
 
 function start() {
   const $ = (id) => document.getElementById(id);
   try {
     const data = parsePageData(JSON.parse($('bestiary-data').textContent));
-    data.replays.forEach((e) => sceneProps(e.replay)); // props too, before anything is drawn
+    // props and scene records too, before anything is drawn
+    data.replays.forEach((e) => {
+      sceneProps(e.replay);
+      recordOf(e.replay);
+    });
     document.title = data.run ? `${data.run.name}, seed ${data.run.seed} · Bestiary` : `${data.replays[0].label} · Bestiary`;
     const viewer = createViewer({
-      canvas: $('view'), stage: $('stage'), hud: $('hud'), info: $('info'), picker: $('picker'),
+      canvas: $('view'), stage: $('stage'), hud: $('hud'), cells: $('cells'), info: $('info'), picker: $('picker'),
       run: $('run'), signals: $('signals'), neurons: $('neurons'), player: $('player'),
     }, data);
     window.bestiary = Object.assign(viewer, { ready: true, error: null });

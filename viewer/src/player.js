@@ -21,7 +21,7 @@ export function scrubFraction(t, duration) {
 
 /**
  * The bar in `container`. `on` has callbacks: togglePlay(), seek(t),
- * speed(x), camera(), joints(on), trail(on), flight(on).
+ * speed(x), camera(), joints(on), trail(on), flight(on), field(on).
  */
 export function createPlayer(container, on) {
   const play = el('button', { id: 'play', title: 'play / pause (space)', onclick: () => on.togglePlay() });
@@ -44,7 +44,9 @@ export function createPlayer(container, on) {
   const trail = check('trail', 'trail', 'path of the centre of mass (t)', true, on.trail);
   const flight = check('flight', 'flight', 'path of the projectile since its release (f)', true, on.flight);
   flight.label.hidden = true;
-  container.replaceChildren(play, scrubBox, time, speed, camera, joints.label, trail.label, flight.label);
+  const field = check('field', 'heat map', 'the recorded field over the grid as a heat map (h)', true, on.field);
+  field.label.hidden = true;
+  container.replaceChildren(play, scrubBox, time, speed, camera, joints.label, trail.label, flight.label, field.label);
 
   return {
     /** Shows the present state: {t, duration, playing, speed, mode}. */
@@ -58,6 +60,15 @@ export function createPlayer(container, on) {
     setJoints(v) { joints.box.checked = v; },
     setTrail(v) { trail.box.checked = v; },
     setFlight(v) { flight.box.checked = v; },
+    /**
+     * A recorded field (`name`, e.g. "landscape", or null for none): the heat
+     * map's toggle, named for it, shown only then.
+     */
+    setField(name) {
+      field.label.hidden = name === null;
+      if (name !== null) field.label.lastChild.textContent = `heat map (${name})`;
+    },
+    setFieldOn(v) { field.box.checked = v; },
     /**
      * A catapult's bar (`throwing`): the flight toggle, and the release at
      * time `release` (s, or null when it never happened) marked on the scrub

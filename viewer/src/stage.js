@@ -11,6 +11,11 @@ import { viewScale } from './follow.js';
 const SKY = 0xcad9e6;
 const GROUND_SIZE = 400; // m
 const TILE = 5; // m: one tile of the grid texture, 5 x 5 cells of 1 m
+/**
+ * The ground's render order: before anything else, so what lies on it (a
+ * recorded grid's cells, record_view.js) can be drawn right after it.
+ */
+export const GROUND_ORDER = -2;
 
 // The grid is painted into the ground's texture rather than drawn as lines
 // above it: lines a millimetre above the plane flicker with software GL's
@@ -61,6 +66,7 @@ export function createStage(canvas) {
     new MeshStandardMaterial({ map: gridTexture(renderer), roughness: 0.95, metalness: 0 }),
   );
   ground.receiveShadow = true;
+  ground.renderOrder = GROUND_ORDER;
   scene.add(ground);
 
   // light: sky and ground bounce, a little ambient, and a shadow-casting sun

@@ -94,6 +94,7 @@ test('a catapult replay passes, with or without a target or a release', () => {
   for (const opts of [{}, { target: [2, 0, 0.075] }, { release: null }, { release: 0 }]) {
     const r = makeCatapult(opts);
     assert.equal(parseReplay(r), r);
+    assert.equal(parseReplay(makeCatapult({ ...opts, legacy: true })).throw.projectile, 2);  // written before records
   }
   // other replays have no throw
   const r = makeReplay();
@@ -101,7 +102,7 @@ test('a catapult replay passes, with or without a target or a release', () => {
   assert.equal(parseReplay(r), r);
 });
 
-test('a bad throw names its field', () => {
+test("an old file's bad throw names its field", () => {
   const cases = [
     [(r) => (r.throw = 3), /^replay\.throw: expected an object, got 3$/],
     [(r) => (r.throw.projectile = 3), /^replay\.throw\.projectile: no such part \(the creature has 3\), got 3$/],
@@ -116,14 +117,14 @@ test('a bad throw names its field', () => {
     [(r) => (r.result.target_miss = 'far'), /^replay\.result\.target_miss: expected a number, got "far"$/],
   ];
   for (const [spoil, message] of cases) {
-    const r = makeCatapult();
+    const r = makeCatapult({ legacy: true });
     spoil(r);
     assert.throws(() => parseReplay(r), { message });
   }
   // on its own, with its own path
   assert.throws(() => parseThrow({ projectile: 0, release_t: Infinity, target: null }, 1), { message: /^throw\.release_t: / });
   // a run page names the replay
-  const bad = makeCatapult();
+  const bad = makeCatapult({ legacy: true });
   bad.throw.projectile = 9;
   assert.throws(() => parsePageData({ replays: [{ label: 'a', replay: makeCatapult() }, { label: 'b', replay: bad }] }),
     { message: /^replays\[1\]\.replay\.throw\.projectile: no such part/ });

@@ -2,9 +2,9 @@
 // along +x at 1 m/s for 2 s at 10 frames per second, the second part turning
 // about z at 45 degrees per second (its hinge's angle, stops at +-2 rad), one
 // neuron and the effector following sin(t), a joint-angle sensor reading the
-// angle over 2 and a contact sensor always touching; and a catapult throwing
+// angle over 2 and a contact sensor always touching; a catapult throwing
 // its projectile (makeCatapult), written as before replays held sensors and
-// joint angles.
+// joint angles; and a river crossing's scene record (makeRiver).
 
 /** Quaternion [w, x, y, z] for `angle` radians about z. */
 export function aboutZ(angle) {
@@ -89,9 +89,12 @@ export function projectileAt(t) {
 /**
  * A fresh catapult replay: an arm (the root) on a base, holding the
  * projectile (part 2), 1 s at 10 frames per second, released at 0.5 s;
- * `target` adds a target point (and its prop), `release` changes release_t.
+ * `target` adds a target point, `release` changes the release (null: never).
+ * Its scene record names the projectile and target and marks the release;
+ * `legacy` writes it as version-1 files did before records: a `throw`, the
+ * target a scene prop.
  */
-export function makeCatapult({ target = null, release = 0.5 } = {}) {
+export function makeCatapult({ target = null, release = 0.5, legacy = false } = {}) {
   const frames = [];
   for (let k = 0; k <= 10; ++k) {
     const t = k * 0.1;
@@ -107,9 +110,14 @@ export function makeCatapult({ target = null, release = 0.5 } = {}) {
       effectors: [],
     });
   }
-  const props = target
+  const props = target && legacy
     ? [{ name: 'target', shape: 'sphere', size: [0.12, 0.12, 0.12], color: '#d6336c', opacity: 0.8, pose: [...target, 1, 0, 0, 0] }]
     : [];
+  const record = {
+    markers: [{ name: 'begin', t: 0 }, ...(release === null ? [] : [{ name: 'release', t: release }])],
+    parts: [{ name: 'projectile', part: 2, color: '#ffc61a' }],
+    ...(target ? { points: [{ name: 'target', p: target, size: 0.12, color: '#d6336c' }] } : {}),
+  };
   const thrown = Math.abs(projectileAt(1)[0] - projectileAt(0.5)[0]);
   return {
     format: 'bestiary-replay',
@@ -119,8 +127,8 @@ export function makeCatapult({ target = null, release = 0.5 } = {}) {
     dialect: 'chaumont2007',
     seed: 1,
     dt: 0.01,
-    scene: { ground: { type: 'plane', z: 0, friction: 1 }, props },
-    throw: { projectile: 2, release_t: release, target },
+    scene: { ground: { type: 'plane', z: 0, friction: 1 }, props, ...(legacy ? {} : { record }) },
+    ...(legacy ? { throw: { projectile: 2, release_t: release, target } } : {}),
     parts: [
       { shape: 'box', size: [0.8, 0.1, 0.05], mass: 4, gene: 0, parent: -1, mirrored: false },
       { shape: 'box', size: [0.8, 0.6, 0.12], mass: 57.6, gene: 1, parent: 0, mirrored: false },
@@ -138,4 +146,46 @@ export function makeCatapult({ target = null, release = 0.5 } = {}) {
       throw_distance: thrown, target_miss: target ? 0.4 : null,
     },
   };
+}
+
+/**
+ * The fixture replay (makeReplay, 2 s) with a river crossing's scene record
+ * on a 4 x 3 grid of 0.5 m cells from (-1, -0.5): kinds grass, stone (an
+ * item), water, bridge; stones at (1, 0) and (2, 2), water down column 3.
+ * At 0.5 s part 0 picks up the stone at (1, 0); at 1.5 s it puts it down on
+ * (3, 1), a bridge. The field "landscape" on [-15, 15] at 0, then again at
+ * 0.5 s; the counters level 1, score 0 then 1 at 1 s, deaths 0.
+ */
+export function makeRiver() {
+  const r = makeReplay();
+  delete r.dialect;
+  r.creature = 'river';
+  const grid = [
+    0, 1, 0, 2,
+    0, 0, 0, 2,
+    0, 0, 1, 2,
+  ];
+  const field = (v) => ({ name: 'landscape', width: 4, height: 3, range: [-15, 15], values: Array.from({ length: 12 }, (_, k) => v[k] ?? 0) });
+  r.scene.record = {
+    cell_kinds: [
+      { name: 'grass', color: '#a3c98a', item: false },
+      { name: 'stone', color: '#7c838b', item: true },
+      { name: 'water', color: '#3b82c4', item: false },
+      { name: 'bridge', color: '#b49a7a', item: false },
+    ],
+    events: [
+      { t: 0, grid: { origin: [-1, -0.5, 0], cell: 0.5, width: 4, height: 3, cells: grid } },
+      { t: 0, counter: { name: 'level', value: 1 } },
+      { t: 0, counter: { name: 'score', value: 0 } },
+      { t: 0, counter: { name: 'deaths', value: 0 } },
+      { t: 0, field: field([]) },
+      { t: 0.5, cell: { x: 1, y: 0, kind: 0 } },
+      { t: 0.5, carry: { part: 0, kind: 1 } },
+      { t: 0.5, field: field({ 3: -15, 7: -15, 11: -15, 0: 15, 1: 6 }) },
+      { t: 1, counter: { name: 'score', value: 1 } },
+      { t: 1.5, cell: { x: 3, y: 1, kind: 3 } },
+      { t: 1.5, carry: { part: 0, kind: -1 } },
+    ],
+  };
+  return r;
 }

@@ -12,8 +12,11 @@ const close = (a, b, eps = 1e-6) =>
   a.forEach((v, i) => assert.ok(Math.abs(v - b[i]) < eps, `${JSON.stringify(Array.from(a))} != ${JSON.stringify(b)}`));
 
 test('the throw of a catapult; none for other creatures', () => {
-  assert.deepEqual(throwOf(makeCatapult({ target: [2, 0, 0.075] })), { projectile: 2, release: 0.5, target: [2, 0, 0.075] });
+  assert.deepEqual(throwOf(makeCatapult({ target: [2, 0, 0.075] })), { projectile: 2, release: 0.5, target: [2, 0, 0.075], color: 0xffc61a });
   assert.deepEqual(throwOf(makeCatapult({ release: null })).release, null);
+  // a file written before scene records: the same throw from its `throw` (its target a prop)
+  assert.deepEqual(throwOf(makeCatapult({ release: 0.5, legacy: true })), { projectile: 2, release: 0.5, target: null, color: 0xffc61a });
+  assert.equal(throwOf(makeCatapult({ release: null, legacy: true })).release, null);
   assert.equal(throwOf(makeReplay()), null);
 });
 

@@ -10,7 +10,8 @@
 // of pixels that change between the first and last moment under a still
 // (orbit) camera, what the signals panel shows (each group's traces with
 // their range text and badges, whether a group closes and opens, whether the
-// plots follow a resize), the elements that stick out of their panel, the
+// plots follow a resize), the elements that stick out of their panel, a
+// recorded grid's legend, the
 // creature's development notes and warnings, and
 // with --run what the run page shows and what choosing a creature (from the
 // lineage, the generation list or the chart) does.
@@ -80,6 +81,11 @@ async function main() {
     out.sparklines = await page.locator('#neurons .spark').count();
     out.player = await page.locator('#player button, #player input, #player select').count();
     out.overflow = await page.evaluate(overflowing);
+    // a recorded grid's legend, when shown
+    out.cells = await page.evaluate(() => {
+      const c = document.getElementById('cells');
+      return c && !c.hidden ? [...c.querySelectorAll('.cell-key')].map((k) => k.textContent) : null;
+    });
     // the creature's facts: development's notes (muted) and warnings (red)
     out.info = await page.evaluate(() => ({
       notes: [...document.querySelectorAll('#info .note')].map((p) => ({ text: p.textContent, color: getComputedStyle(p).color })),
@@ -97,12 +103,12 @@ async function main() {
 }
 
 // Elements drawn (partly) outside their panel (side panel, player bar, the
-// scene's line of text and its scale): side-ways for the side panel, which
+// scene's line of text, its scale and a grid's legend): side-ways for the side panel, which
 // scrolls, either way for the others; and a panel outside the window. Each
 // as "panel: tag.class 'text'".
 function overflowing() {
   const out = [];
-  for (const id of ['side', 'player', 'hud', 'scale']) {
+  for (const id of ['side', 'player', 'hud', 'scale', 'cells']) {
     const panel = document.getElementById(id);
     if (!panel || panel.offsetParent === null) continue;
     const p = panel.getBoundingClientRect();

@@ -1,5 +1,6 @@
 #include "brain/river/river_controller.h"
 
+#include <algorithm>
 #include <cassert>
 #include <cmath>
 #include <vector>
@@ -36,6 +37,17 @@ class RiverControllerState : public ControllerState {
   std::span<const double> task_outputs() const override { return action_; }
   std::span<const double> sensors() const override { return {}; }
   std::span<const double> internals() const override { return internals_; }
+  // the landscape, each time its values differ from the last recorded (it
+  // is recomputed only when the grid or the iotas change, and then may come
+  // out the same), on the scale of its extremes: a held negative input and maxI
+  void record(double t, SceneRecord& out) override {
+    const std::span<const double> v = brain_.landscape().values();
+    if (recorded_ && std::equal(v.begin(), v.end(), last_.begin())) return;
+    last_.assign(v.begin(), v.end());
+    recorded_ = true;
+    const ShuntingDef& d = brain_.landscape().def();
+    out.add(t, SceneField{"landscape", d.width, d.height, -d.iota_scale, d.max_activity, last_});
+  }
 
  private:
   RiverBrain brain_;
@@ -43,6 +55,9 @@ class RiverControllerState : public ControllerState {
   std::vector<int> grid_;
   std::vector<double> effectors_, internals_;
   double action_[1] = {0};
+  // the landscape last recorded
+  bool recorded_ = false;
+  std::vector<double> last_;
 };
 
 }  // namespace

@@ -33,7 +33,10 @@ struct RiverInputs {
 /// Effector j's signal is 2 m_j - 1 for motor neuron j's value m_j in
 /// (0, 1), so a PD motor (MotorModel::PD) takes m_j as the share of its
 /// joint's range (0: the low stop, 1: the high one). Task output 0 is the
-/// decision network's action: 1 pick up, -1 put down, 0 neither.
+/// decision network's action: 1 pick up, -1 put down, 0 neither. For a
+/// replay its state records the landscape (ControllerState::record) as the
+/// field "landscape" over the task's grid, on the scale [-iota_scale, maxI],
+/// whenever its values change.
 class RiverController : public ControllerModel {
  public:
   explicit RiverController(RiverBrainModel m)

@@ -26,7 +26,8 @@ RiverTask::RiverTask(const RiverTaskDef& def, double dt, std::uint64_t seed, int
       dt_(dt),
       torso_(torso),
       sensors_(sensors),
-      world_(Rng(stream_seed({seed, kLayoutStream})), def.first_level) {
+      world_(Rng(stream_seed({seed, kLayoutStream})), def.first_level),
+      scene_(torso) {
   in_.width = world_.grid().width();
   in_.height = world_.grid().height();
 }
@@ -64,6 +65,10 @@ void RiverTask::observe(const Observation& o) {
   world_.enter(cell_under(g.x, g.y));
   // a resource reached: the next level's grid is laid with its start under the walker
   if (world_.levels_completed() != levels_seen_) place_grid(torso);
+}
+
+void RiverTask::record(const Observation& o, SceneRecord& out) {
+  scene_.record(o.time(), world_, origin_, def_.cell, out);
 }
 
 TaskScore RiverTask::score(const CreatureModel&) const {

@@ -12,6 +12,7 @@
 
 #include "brain/river/river_controller.h"
 #include "task/river/grid_world.h"
+#include "task/river/river_scene.h"
 #include "task/task.h"
 
 namespace bx {
@@ -56,6 +57,10 @@ class RiverTask : public Task {
   /// metrics: the level reached, levels completed, food eaten, whether it
   /// died (1) and of what (cell codes: 3 water, 4 trap).
   TaskScore score(const CreatureModel&) const override;
+  /// The world as a replay shows it (RiverScene): its grid as each level
+  /// lays it, the cells that change, the stone carried (on the torso), and
+  /// the level, score and deaths.
+  void record(const Observation& o, SceneRecord& out) override;
 
   const GridWorld& world() const { return world_; }
   /// Where a world point (m) is in the grid, in cell widths.
@@ -73,6 +78,7 @@ class RiverTask : public Task {
   GridWorld world_;
   Vec3 origin_;  ///< the world point (m) of the grid's corner (0, 0)
   int levels_seen_ = 0;
+  RiverScene scene_;
 };
 
 /// The river_cell code the controller sees for a cell (food as the resource).

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <variant>
 #include <vector>
 
 #include "brain/river/found_motif.h"
@@ -73,6 +74,49 @@ TEST(RiverController, DrivesItsBrainWithTheInputsInTheirOrder) {
   EXPECT_EQ(hand.decision().iota[river_cell::kResource], 1);
   // the landscape saw the resource: the sensor nearest it reads the most
   EXPECT_GT(hand.pn().inputs()[0], 0);
+}
+
+// for a replay, the landscape is recorded as a field over the grid each
+// time its values change, and only then
+TEST(RiverController, RecordsItsLandscapeOnlyWhenItChanges) {
+  const RiverBrainModel m = stone_model();
+  RiverController c(m);
+  auto s = c.make_state();
+  SceneRecord r;
+  // before the first step: the all-zero landscape, once
+  s->record(0, r);
+  s->record(0.01, r);
+  ASSERT_EQ(r.events.size(), 1u);
+  const SceneField zero = std::get<SceneField>(r.events[0].what);  // a copy: events grow
+  EXPECT_EQ(zero.name, "landscape");
+  EXPECT_EQ(zero.width, 20);
+  EXPECT_EQ(zero.height, 20);
+  EXPECT_EQ(zero.lo, -15);
+  EXPECT_EQ(zero.hi, 15);
+  EXPECT_EQ(zero.values, std::vector<double>(400, 0.0));
+  // on a stone the resource's iota turns 1: a new landscape
+  std::vector<double> in(static_cast<std::size_t>(c.n_task_inputs()), river_cell::kGrass);
+  in[7 * 20 + 5] = river_cell::kResource;
+  in[400] = river_cell::kStone;
+  for (int k = 0; k < 4; ++k) in[static_cast<std::size_t>(402 + 2 * k)] = in[static_cast<std::size_t>(403 + 2 * k)] = 5;
+  s->step({}, in, 0.01);
+  s->record(0.02, r);
+  ASSERT_EQ(r.events.size(), 2u);
+  EXPECT_EQ(r.events[1].t, 0.02);
+  const SceneField& source = std::get<SceneField>(r.events[1].what);
+  EXPECT_EQ(source.values[7 * 20 + 5], 15);  // the source, at maxI
+  // the same inputs again: the same landscape, nothing recorded
+  for (int k = 0; k < 5; ++k) {
+    s->step({}, in, 0.01);
+    s->record(0.03 + 0.01 * k, r);
+  }
+  EXPECT_EQ(r.events.size(), 2u);
+  // the resource gone: a flat landscape again
+  in[7 * 20 + 5] = river_cell::kGrass;
+  s->step({}, in, 0.01);
+  s->record(0.1, r);
+  ASSERT_EQ(r.events.size(), 3u);
+  EXPECT_EQ(std::get<SceneField>(r.events[2].what).values, zero.values);
 }
 
 }  // namespace

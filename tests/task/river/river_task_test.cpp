@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <variant>
 #include <vector>
 
 #include "develop/creature_model.h"
@@ -144,6 +145,43 @@ TEST(RiverTask, WaterKillsAtTheNextActionAndEndsTheTask) {
   EXPECT_EQ(score.metrics[3].name, "died");
   EXPECT_EQ(score.metrics[3].value, 1);
   EXPECT_EQ(score.metrics[4].value, river_cell::kWater);
+}
+
+// the replay's scene: the grid laid where the task placed it (under the
+// torso), again on the next level where the walker stands, and the carried
+// stone on the torso part
+TEST(RiverTask, ItsSceneLaysEachGridWhereTheTaskPlacedIt) {
+  RiverTask task(def(0.1, 1), 0.01, 5, 0, kSensors);
+  Torso torso;
+  torso.pose.p = {0.3, -0.2, 0.05};
+  task.begin(torso);
+  SceneRecord r;
+  task.record(torso, r);
+  ASSERT_FALSE(r.events.empty());
+  const SceneGrid first = std::get<SceneGrid>(r.events[0].what);  // a copy: events grow
+  EXPECT_EQ(first.cell, 0.1);
+  // the grid's corner is where to_grid reads 0
+  const GridPoint corner = task.to_grid(first.origin);
+  EXPECT_NEAR(corner.x, 0, 1e-12);
+  EXPECT_NEAR(corner.y, 0, 1e-12);
+  EXPECT_EQ(first.origin.z, 0);
+  // level 1 to its resource, then the next level's grid under the walker
+  const Layout& level1 = task.world().layout();
+  const CellIndex start = level1.start, goal = level1.resource;
+  for (int x = start.x + 1; x <= goal.x; ++x) walk_to(task, torso, {x, start.y}, 0.1);
+  const int dy = goal.y > start.y ? 1 : -1;
+  for (int y = start.y + dy; task.world().level() == 1; y += dy) walk_to(task, torso, {goal.x, y}, 0.1);
+  torso.t = 4;
+  task.record(torso, r);
+  const SceneGrid* second = nullptr;
+  for (const SceneEvent& e : r.events)
+    if (e.t == 4 && std::holds_alternative<SceneGrid>(e.what)) second = &std::get<SceneGrid>(e.what);
+  ASSERT_NE(second, nullptr);
+  const GridPoint g = task.to_grid(second->origin);
+  EXPECT_NEAR(g.x, 0, 1e-12);
+  EXPECT_NEAR(g.y, 0, 1e-12);
+  EXPECT_NE(second->origin, first.origin);
+  EXPECT_EQ(r.events.back(), (SceneEvent{4, SceneCounter{"score", task.score(CreatureModel{}).fitness}}));
 }
 
 }  // namespace
