@@ -470,7 +470,7 @@ void add_watch_commands(CLI::App& app) {
   p->add_option("--height", plot.height, "Height in pixels")->default_val(500);
   p->add_option("--metric", plot.metrics,
                 "Instead of fitness, the share of each generation's evaluations in which each task metric whose name "
-                "contains this was not 0 (repeatable; e.g. \"completed\": the river crossing's levels)");
+                "contains this was not 0 (repeatable; e.g. \"completed\": each level a task counts as completed)");
   p->callback([] { std::exit(cmd_plot(plot)); });
 }
 
