@@ -16,7 +16,10 @@
 // Output: one line per creature, then the totals, `cpu_s_per_600s_evaluation:
 // X` (ours, the median of the creatures' medians, scaled to 600 s) and
 // `ratio_vs_raw_ode: Y` (the smallest ratio of steps/s). Checks (does raw
-// reproduce our trajectory bit for bit?) go to stderr. Exit code 0; 1 if a
+// reproduce our trajectory bit for bit?) go to stderr, with a fingerprint of
+// each creature's evaluation (FNV-1a of every step's poses, signals, neurons
+// and joint angles and of the result), equal before and after a change that
+// changes no result. Exit code 0; 1 if a
 // check fails; 2 on a bad argument.
 #include <ode/ode.h>
 
@@ -98,6 +101,42 @@ Pose placement_of(const CreatureModel& m, const SimConfig& cfg, std::uint64_t se
   }
   const double drop = (*task)->scenario().drop_height + d.lift;
   return {{0, 0, drop - m.min_z()}, Mat3::rotation({0, 0, 1}, d.yaw)};
+}
+
+// FNV-1a over exact bits: a fingerprint of an evaluation, so that an
+// optimisation can show it changed no result
+struct Fingerprint {
+  std::uint64_t h = 1469598103934665603ull;
+  void add(const void* p, std::size_t n) {
+    const auto* b = static_cast<const unsigned char*>(p);
+    for (std::size_t i = 0; i < n; ++i) {
+      h ^= b[i];
+      h *= 1099511628211ull;
+    }
+  }
+  void add(double v) { add(&v, sizeof v); }
+  void add(const std::vector<double>& v) { add(v.data(), v.size() * sizeof(double)); }
+};
+
+// every frame's poses, signals, neurons and joint angles, and the result
+std::uint64_t fingerprint(const Replay& replay, const EvalResult& r) {
+  Fingerprint f;
+  for (const ReplayFrame& fr : replay.frames) {
+    f.add(fr.t);
+    f.add(fr.poses);
+    f.add(fr.effectors);
+    f.add(fr.neurons);
+    f.add(fr.joint_angles);
+  }
+  f.add(r.fitness);
+  for (const Metric& m : r.metrics) f.add(m.value);
+  f.add(r.diagnostics.max_joint_gap);
+  f.add(r.diagnostics.max_stop_overshoot);
+  f.add(r.diagnostics.max_penetration);
+  f.add(r.diagnostics.effector_mean);
+  f.add(r.diagnostics.effector_sd);
+  f.add(r.diagnostics.effector_hz);
+  return f.h;
 }
 
 double quantile(std::vector<double> v, double q) {
@@ -222,8 +261,11 @@ int main(int argc, char** argv) {
       c.tape = record_motor_tape(m, cfg, replay, c.steps);
       // check: raw ODE reproduces our trajectory (same physics work)
       const double dev_m = max_part_deviation(m, replay, run_raw(m, cfg, c.placement, c.tape, c.seed));
-      std::fprintf(stderr, "check creature %d: %ld steps, raw ODE replay ends %s (max part deviation %.3g m)\n",
-                   i + 1, c.steps, dev_m == 0 ? "bit-identical to ours" : "DIFFERENT from ours", dev_m);
+      std::fprintf(stderr,
+                   "check creature %d: %ld steps, raw ODE replay ends %s (max part deviation %.3g m); "
+                   "our run's fingerprint %016llx\n",
+                   i + 1, c.steps, dev_m == 0 ? "bit-identical to ours" : "DIFFERENT from ours", dev_m,
+                   static_cast<unsigned long long>(fingerprint(replay, rec)));
       if (dev_m != 0) ++different;
       ++draw;
       break;
