@@ -19,8 +19,9 @@
 // reproduce our trajectory bit for bit?) go to stderr, with a fingerprint of
 // each creature's evaluation (FNV-1a of every step's poses, signals, neurons
 // and joint angles and of the result), equal before and after a change that
-// changes no result. Exit code 0; 1 if a
-// check fails; 2 on a bad argument.
+// changes no result. Controllers whose evaluation ends early (a death, a
+// blow-up) are drawn again, at most 200 times. Exit code 0; 1 if a check
+// fails; 2 on a bad argument or when no controller lasts.
 #include <ode/ode.h>
 
 #include <algorithm>
@@ -49,6 +50,9 @@ using namespace bx::bench;
 
 // the paper's evaluation: 10 simulated minutes
 constexpr double kPaperSeconds = 600;
+// draws of controllers that end early, at most (a solver that tears every
+// body would draw for ever)
+constexpr int kMaxRedraws = 200;
 
 struct Options {
   double seconds = kPaperSeconds;
@@ -253,7 +257,14 @@ int main(int argc, char** argv) {
       c.seed = stream_seed({o.seed, 2, draw});
       Replay replay;
       EvalResult rec = evaluate(c.creature, rec_cfg, c.seed, &replay);
-      if (rec.failed || rec.steps != full) continue;
+      if (rec.failed || rec.steps != full) {
+        if (redrawn + 1 >= kMaxRedraws) {
+          std::fprintf(stderr, "bench_river: %d controllers drawn, none evaluated to the end (the last: %s)\n",
+                       kMaxRedraws, rec.failed ? rec.failure.c_str() : "it died");
+          return 2;
+        }
+        continue;
+      }
       const CreatureModel& m = *c.creature.body;
       c.steps = rec.steps;
       c.fitness = rec.fitness;
