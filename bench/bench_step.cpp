@@ -14,7 +14,6 @@
 // ratio). Checks (does raw reproduce our trajectory bit for bit?) go to stderr.
 #include <ode/ode.h>
 
-#include <dlfcn.h>
 #include <time.h>
 
 #include <algorithm>
@@ -33,27 +32,12 @@
 #include "geometry/ode.h"
 #include "genome/genome_json.h"
 #include "physics/world.h"
+#include "contact_counter.h"
 #include "raw_ode.h"
 
 #ifndef BESTIARY_SOURCE_DIR
 #define BESTIARY_SOURCE_DIR "."
 #endif
-
-// ---------------------------------------------------------------------------
-// Contact counter. This definition takes the place of ODE's for every call in
-// this executable (ours in bx_sim and raw in raw_ode.h alike): it counts, then calls
-// ODE's own. One increment and one indirect call per contact, on both sides.
-
-namespace {
-using CreateContactFn = dJointID (*)(dWorldID, dJointGroupID, const dContact*);
-CreateContactFn g_real_create_contact = nullptr;
-long g_contacts = 0;
-}  // namespace
-
-extern "C" dJointID dJointCreateContact(dWorldID w, dJointGroupID g, const dContact* c) {
-  ++g_contacts;
-  return g_real_create_contact(w, g, c);
-}
 
 namespace {
 
@@ -215,9 +199,7 @@ int main(int argc, char** argv) {
     }
   }
 
-  g_real_create_contact =
-      reinterpret_cast<CreateContactFn>(dlsym(RTLD_NEXT, "dJointCreateContact"));
-  if (!g_real_create_contact) {
+  if (!bind_contact_counter()) {
     std::fprintf(stderr, "bench_step: cannot find ODE's dJointCreateContact\n");
     return 2;
   }

@@ -1,7 +1,7 @@
 // raw_ode.h: a creature built and stepped with direct ODE calls only, as a
 // plain ODE program would, replaying the motor commands of one of our
-// evaluations (docs/benchmarks.md). The baseline of bench_step and
-// bench_evolve.
+// evaluations (docs/benchmarks.md). The baseline of bench_step,
+// bench_evolve and bench_river.
 //
 //   record_motor_tape()  the motor commands of every step of our run, from a
 //                        replay with a frame every step
@@ -310,6 +310,15 @@ struct RawWorld {
     }
   }
 
+  // the angle of a driven degree of freedom (hinges and universal joints:
+  // the joints with a motor of their own), as World::Impl::position reads it
+  double angle(const Drive& d) const {
+    dJointID j = joints[d.joint];
+    if (d.type == JointType::Universal)
+      return d.dof == 0 ? dJointGetUniversalAngle1(j) : dJointGetUniversalAngle2(j);
+    return dJointGetHingeAngle(j);
+  }
+
   // adds one recorded joint torque (per degree of freedom)
   void add_torque(const Drive& d, const double* tq) {
     dJointID j = joints[d.joint];
@@ -347,21 +356,30 @@ struct RawWorld {
 /// The motor commands of every step of one of our runs, as World gave them.
 /// Torque motors (Torque model): the joint torques World added, 3 per joint
 /// (one per degree of freedom, summed in effector order). Velocity motors
-/// (Servo, Saturation): dParamVel and dParamFMax per degree of freedom.
+/// (Servo, Saturation): dParamVel and dParamFMax per degree of freedom. PD
+/// motors (the river crossing's): the target angle per degree of freedom;
+/// the raw run reads the angle each step, as World does.
 struct MotorTape {
   bool torques = true;
+  bool pd = false;        ///< MotorModel::PD: v holds targets (rad)
+  double kp = 0, kd = 0;  ///< the PD's gains
   std::vector<Drive> drives;
   std::vector<double> v;  ///< steps x drives x width()
   long steps = 0;
-  std::size_t width() const { return torques ? 3 : 2; }
+  std::size_t width() const { return torques ? 3 : pd ? 1 : 2; }
 };
 
 /// Why the raw replay cannot reproduce runs of this config, or empty. The
 /// tape records effector signals, so the motor's command must follow from
-/// the signal alone (not the PD model, which reads the joint) and the
+/// the signal alone, or (PD) from the signal and the joint's angle through a
+/// joint motor of its own (powered_stops "separate", kd above 0: World's
+/// implicit damper; the explicit torque of kd = 0 is not replayed), and the
 /// controller must be on from the first step (Activation::Always).
 inline std::string raw_replay_unsupported(const SimConfig& cfg) {
-  if (cfg.motor.model == MotorModel::PD) return "the raw replay does not support the PD motor model";
+  if (cfg.motor.model == MotorModel::PD &&
+      (cfg.physics.powered_stops != PoweredStops::Separate || !(cfg.motor.kd > 0)))
+    return "the raw replay supports PD motors only with their damper in a joint motor (powered_stops "
+           "\"separate\", kd > 0)";
   if (cfg.task.activation != Activation::Always)
     return "the raw replay needs the controller on from the first step (activation always)";
   return {};
@@ -379,6 +397,9 @@ inline MotorTape record_motor_tape(const CreatureModel& m, const SimConfig& cfg,
   // torque motors with a speed limit are ODE velocity motors, as Saturation
   const bool limited = motor.torque_max_speed > 0 || motor.torque_max_linear_speed > 0;
   tape.torques = motor.model == MotorModel::Torque && !limited;
+  tape.pd = motor.model == MotorModel::PD;
+  tape.kp = motor.kp;
+  tape.kd = motor.kd;
   // drives: torque motors per joint, in joint order (as World adds torques);
   // velocity motors per degree of freedom, the last effector's command winning
   std::vector<int> drive_of(m.joints.size() * 3, -1);
@@ -410,6 +431,13 @@ inline MotorTape record_motor_tape(const CreatureModel& m, const SimConfig& cfg,
         row[drive_of[em.joint * 3] * 3 + em.dof] += sv * motor.strength * em.cross_section;
         continue;
       }
+      if (tape.pd) {
+        // the target within the joint's range, as World::apply_effectors has it
+        const JointModel& jm = m.joints[em.joint];
+        const Limit& l = jm.limits[em.dof];
+        row[drive_of[em.joint * 3 + em.dof]] = 0.5 * (l.lo + l.hi) + 0.5 * sv * (l.hi - l.lo);
+        continue;
+      }
       double* cmd = row + drive_of[em.joint * 3 + em.dof] * 2;
       if (motor.model == MotorModel::Servo) {
         cmd[0] = motor.max_speed * sv;
@@ -434,7 +462,10 @@ inline MotorTape record_motor_tape(const CreatureModel& m, const SimConfig& cfg,
 /// tape, destroy. Torque motors: one dJointAdd*Torque call per driven joint
 /// per step. Velocity motors: dParamVel per driven degree of freedom per step
 /// and dParamFMax when it changes (a plain ODE program's cheapest way to give
-/// the same commands). Returns the final body positions for the check.
+/// the same commands). PD motors: FMax (none) and CFM 1/kd set once, then
+/// per driven degree of freedom per step the joint's angle read and
+/// dParamVel set to kp (target - angle) / kd (World's implicit damper).
+/// Returns the final body positions for the check.
 inline std::vector<Vec3> run_raw(const CreatureModel& m, const SimConfig& cfg,
                                  const Pose& placement, const MotorTape& tape,
                                  std::uint64_t seed) {
@@ -445,6 +476,19 @@ inline std::vector<Vec3> run_raw(const CreatureModel& m, const SimConfig& cfg,
   if (tape.torques) {
     for (long s = 0; s < tape.steps; ++s) {
       for (std::size_t k = 0; k < nd; ++k, v += 3) w.add_torque(tape.drives[k], v);
+      w.step();
+    }
+  } else if (tape.pd) {
+    for (const Drive& d : tape.drives) {
+      w.set_param(d, dParamFMax, dInfinity);
+      w.set_param(d, dParamCFM, 1 / tape.kd);
+    }
+    for (long s = 0; s < tape.steps; ++s) {
+      for (std::size_t k = 0; k < nd; ++k, ++v) {
+        const Drive& d = tape.drives[k];
+        const double err = *v - w.angle(d);
+        w.set_param(d, dParamVel, tape.kp * err / tape.kd);
+      }
       w.step();
     }
   } else {

@@ -92,6 +92,11 @@ struct World::Impl {
   // force then and the step before
   std::vector<CarriedContact> carried;
   std::string solver_failure;  // the message of a step ODE could not solve
+  // each joint's degrees of freedom as ODE reads them, once per step: the
+  // motors, the explosion test and the sensors ask for the same angles
+  // between two steps, and ODE builds each from quaternions and an atan2
+  mutable std::vector<std::array<double, 3>> positions;
+  mutable std::vector<std::uint8_t> positions_read;  // bit d: dof d is in `positions`
   double total_mass = 0;
   double t = 0;
   WorldStats stats;
@@ -198,7 +203,22 @@ struct World::Impl {
     }
   }
 
+  // the position of a degree of freedom now (read_position), read from ODE
+  // once between two steps
   double position(const Joint& j, int dof) const {
+    const std::size_t k = static_cast<std::size_t>(&j - joints.data());
+    const auto bit = static_cast<std::uint8_t>(1u << dof);
+    if (positions_read[k] & bit) return positions[k][static_cast<std::size_t>(dof)];
+    const double x = read_position(j, dof);
+    positions[k][static_cast<std::size_t>(dof)] = x;
+    positions_read[k] |= bit;
+    return x;
+  }
+
+  // the bodies moved: every position must be read again
+  void forget_positions() { std::fill(positions_read.begin(), positions_read.end(), 0); }
+
+  double read_position(const Joint& j, int dof) const {
     if (j.broken) return 0;
     switch (j.type) {
       case JointType::Hinge: return dJointGetHingeAngle(j.id);
@@ -469,6 +489,8 @@ void World::add_creature(const CreatureModel& m, const Pose& placement) {
   // joints, with anchors and axes moved by the placement
   w.joints.resize(m.joints.size());
   w.joint_torque.assign(m.joints.size(), {0, 0, 0});
+  w.positions.assign(m.joints.size(), {0, 0, 0});
+  w.positions_read.assign(m.joints.size(), 0);
   for (std::size_t k = 0; k < m.joints.size(); ++k) {
     const JointModel& jm = m.joints[k];
     Impl::Joint& j = w.joints[k];
@@ -640,6 +662,7 @@ void World::step() {
   w.attach_contacts();
   OdeThreadLog& log = ode_thread_log();
   long messages = log.messages;
+  w.forget_positions();  // the bodies move
   if (w.def.solver == Solver::Exact)
     dWorldStep(w.world, w.def.dt);
   else
@@ -737,6 +760,7 @@ void World::break_joint(int j) {
   jt.motor = nullptr;
   jt.broken = true;
   w.free_part[jt.child] = true;
+  w.positions_read[static_cast<std::size_t>(j)] = 0;
 }
 
 bool World::joint_broken(int j) const { return impl_->joints[j].broken; }

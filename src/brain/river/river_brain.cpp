@@ -24,6 +24,11 @@ RiverBrain::RiverBrain(const RiverBrainModel& m)
       grid_(sm_.values().size(), river_cell::kGrass) {}
 
 bool RiverBrain::decide(int cell, bool carrying) {
+  // the DN is a function of these two inputs: the same ones, the same decision
+  if (decided_ && cell == cell_ && carrying == carrying_) return false;
+  decided_ = true;
+  cell_ = cell;
+  carrying_ = carrying;
   const std::array<int, river_cell::kCount> before = dn_.decision().iota;
   const Decision& now = dn_.decide(cell, carrying);
   if (now.iota == before) return false;

@@ -52,8 +52,9 @@ class RiverBrain {
   explicit RiverBrain(const RiverBrainModel& m);
 
   /// Runs the DN on the code of the cell the agent stands on (river_cell)
-  /// and whether it carries a stone; when the iotas change, recomputes the
-  /// landscape. Returns whether the iotas changed.
+  /// and whether it carries a stone (unless both are the last call's: the
+  /// same inputs give the same decision); when the iotas change, recomputes
+  /// the landscape. Returns whether the iotas changed.
   bool decide(int cell, bool carrying);
   /// The grid: a river_cell code per cell, row-major (cell (i, j) at
   /// j * width + i); the caller passes food as kResource. When it differs
@@ -86,6 +87,10 @@ class RiverBrain {
   PhysicalNetwork pn_;
   PatternGenerator pg_;
   std::vector<int> grid_;
+  // the DN's last inputs (decide() runs it again only when they change)
+  bool decided_ = false;
+  int cell_ = 0;
+  bool carrying_ = false;
 };
 
 }  // namespace bx

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <cstring>
 #include <vector>
 
 namespace bx {
@@ -13,12 +14,20 @@ class RiverControllerState : public ControllerState {
  public:
   RiverControllerState(const RiverBrainModel& m, RiverInputs in)
       : brain_(m), in_(in), grid_(static_cast<std::size_t>(in.cells()), 0),
-        effectors_(static_cast<std::size_t>(m.def.shape.motors), 0.0) {}
+        grid_in_(grid_.size(), 0.0), effectors_(static_cast<std::size_t>(m.def.shape.motors), 0.0) {}
 
   void step(std::span<const double>, std::span<const double> in, double dt) override {
     assert(static_cast<int>(in.size()) == in_.count());
-    for (std::size_t k = 0; k < grid_.size(); ++k) grid_[k] = static_cast<int>(std::lround(in[k]));
-    brain_.set_grid(grid_);
+    // the grid, read again only when its inputs changed (a stone moved, food
+    // eaten, a new level: a few times an evaluation, where the task gives it
+    // every step)
+    const std::size_t n = grid_.size();
+    if (!grid_seen_ || std::memcmp(in.data(), grid_in_.data(), n * sizeof(double)) != 0) {
+      std::copy(in.begin(), in.begin() + static_cast<std::ptrdiff_t>(n), grid_in_.begin());
+      for (std::size_t k = 0; k < n; ++k) grid_[k] = static_cast<int>(std::lround(in[k]));
+      brain_.set_grid(grid_);
+      grid_seen_ = true;
+    }
     brain_.decide(static_cast<int>(std::lround(in[static_cast<std::size_t>(in_.here())])),
                   in[static_cast<std::size_t>(in_.carrying())] > 0.5);
     GridPoint points[kRiverSensors];
@@ -53,6 +62,8 @@ class RiverControllerState : public ControllerState {
   RiverBrain brain_;
   RiverInputs in_;
   std::vector<int> grid_;
+  std::vector<double> grid_in_;  // the grid's inputs as last read
+  bool grid_seen_ = false;
   std::vector<double> effectors_, internals_;
   double action_[1] = {0};
   // the landscape last recorded

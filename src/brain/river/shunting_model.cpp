@@ -60,6 +60,9 @@ ShuntingModel::ShuntingModel(const ShuntingDef& def) : def_(def) {
   input_.assign(n, 0.0);
   x_.assign(n, 0.0);
   next_.assign(n, 0.0);
+  const std::size_t framed = static_cast<std::size_t>(def.width + 2) * static_cast<std::size_t>(def.height + 2);
+  positive_.assign(framed, 0.0);
+  positive_next_.assign(framed, 0.0);
 }
 
 void ShuntingModel::shape(std::span<const int> cells, const std::array<int, river_cell::kCount>& iota) {
@@ -67,34 +70,58 @@ void ShuntingModel::shape(std::span<const int> cells, const std::array<int, rive
   assert(cells.size() == x_.size());
 
   // external inputs from the iotas
+  bool source = false;
   for (std::size_t k = 0; k < cells.size(); ++k) {
     assert(cells[k] >= 0 && cells[k] < river_cell::kCount);
     input_[k] = iota[static_cast<std::size_t>(cells[k])] * def_.iota_scale;
+    source = source || input_[k] > 0;
   }
 
   // from zero, every sweep reads only the previous one (Jacobi)
   std::fill(x_.begin(), x_.end(), 0.0);
+  if (def_.sweeps == 0) return;
+  // without a positive input nothing spreads: every sweep gives each cell
+  // its own input (a negative one held, 0 elsewhere)
+  if (!source) {
+    std::copy(input_.begin(), input_.end(), x_.begin());
+    return;
+  }
+  // the activity's positive parts [x]+, framed by a border of zeros one cell
+  // wide (the neighbours outside the grid), as the sweeps read them
+  const std::ptrdiff_t fw = w + 2;
+  std::fill(positive_.begin(), positive_.end(), 0.0);
   for (int s = 0; s < def_.sweeps; ++s) {
     for (int j = 0; j < h; ++j) {
+      const std::size_t row = static_cast<std::size_t>(j) * static_cast<std::size_t>(w);
+      const std::size_t framed_row = static_cast<std::size_t>((j + 1) * fw + 1);
       for (int i = 0; i < w; ++i) {
-        const std::size_t k =
-            static_cast<std::size_t>(j) * static_cast<std::size_t>(w) + static_cast<std::size_t>(i);
-        // a cell of negative iota stays at its input; [x]+ below keeps it
-        // from pulling its neighbours down
+        const std::size_t k = row + static_cast<std::size_t>(i), f = framed_row + static_cast<std::size_t>(i);
+        // a cell of negative iota stays at its input; [x]+ keeps it from
+        // pulling its neighbours down
         if (input_[k] < 0) {
           next_[k] = input_[k];
+          positive_next_[f] = 0;
           continue;
         }
         // the eight Moore neighbours' [x]+, those outside the grid 0, over 8
-        // whatever the count inside, so the border leaks activity
+        // whatever the count inside, so the border leaks activity (summed
+        // row by row, left to right: the order fixes the rounding)
+        const double* p = &positive_[f];
         double sum = 0;
-        for (int dj = -1; dj <= 1; ++dj)
-          for (int di = -1; di <= 1; ++di)
-            if (di != 0 || dj != 0) sum += std::max(0.0, point(x_, w, h, i + di, j + dj));
+        sum += p[-fw - 1];
+        sum += p[-fw];
+        sum += p[-fw + 1];
+        sum += p[-1];
+        sum += p[1];
+        sum += p[fw - 1];
+        sum += p[fw];
+        sum += p[fw + 1];
         next_[k] = std::min(sum / 8 + input_[k], def_.max_activity);
+        positive_next_[f] = std::max(0.0, next_[k]);
       }
     }
     std::swap(x_, next_);
+    std::swap(positive_, positive_next_);
   }
 }
 

@@ -82,6 +82,9 @@ class ShuntingModel {
   std::vector<double> input_;
   std::vector<double> x_;
   std::vector<double> next_;  // the sweep being computed
+  // [x]+ of x_ and of next_, (width + 2) x (height + 2) with a border of
+  // zeros: the sweeps read neighbours without testing the grid's edge
+  std::vector<double> positive_, positive_next_;
 };
 
 }  // namespace bx

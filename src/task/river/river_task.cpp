@@ -1,5 +1,6 @@
 #include "task/river/river_task.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace bx {
@@ -30,6 +31,15 @@ RiverTask::RiverTask(const RiverTaskDef& def, double dt, std::uint64_t seed, int
       scene_(torso) {
   in_.width = world_.grid().width();
   in_.height = world_.grid().height();
+  refresh_codes();
+}
+
+void RiverTask::refresh_codes() {
+  if (world_.changes() == codes_changes_) return;
+  const std::span<const Cell> cells = world_.grid().cells();
+  codes_.resize(cells.size());
+  for (std::size_t k = 0; k < cells.size(); ++k) codes_[k] = river_cell_code(cells[k]);
+  codes_changes_ = world_.changes();
 }
 
 long RiverTask::max_steps() const { return std::lround(def_.seconds / dt_); }
@@ -43,8 +53,7 @@ void RiverTask::place_grid(Vec3 torso) {
 void RiverTask::begin(const Observation& o) { place_grid(o.part_pose(torso_).p); }
 
 void RiverTask::inputs(const Observation& o, std::span<double> out) const {
-  const std::span<const Cell> cells = world_.grid().cells();
-  for (std::size_t k = 0; k < cells.size(); ++k) out[k] = river_cell_code(cells[k]);
+  std::copy(codes_.begin(), codes_.end(), out.begin());
   out[static_cast<std::size_t>(in_.here())] = river_cell_code(world_.under_agent());
   out[static_cast<std::size_t>(in_.carrying())] = world_.carrying() ? 1 : 0;
   const Pose torso = o.part_pose(torso_);
@@ -57,12 +66,14 @@ void RiverTask::inputs(const Observation& o, std::span<double> out) const {
 
 void RiverTask::act(const CreatureModel&, std::span<const double> outputs, World&, const Observation&) {
   world_.act(outputs[0]);
+  refresh_codes();
 }
 
 void RiverTask::observe(const Observation& o) {
   const Vec3 torso = o.part_pose(torso_).p;
   const GridPoint g = to_grid(torso);
   world_.enter(cell_under(g.x, g.y));
+  refresh_codes();
   // a resource reached: the next level's grid is laid with its start under the walker
   if (world_.levels_completed() != levels_seen_) place_grid(torso);
 }

@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cstdint>
+#include <vector>
 
 #include "brain/river/river_controller.h"
 #include "task/river/grid_world.h"
@@ -69,6 +70,8 @@ class RiverTask : public Task {
  private:
   // places the grid so the torso's centre is over the start cell's middle
   void place_grid(Vec3 torso);
+  // the cells' codes as inputs, made again only when the cells changed
+  void refresh_codes();
 
   RiverTaskDef def_;
   double dt_;
@@ -79,6 +82,8 @@ class RiverTask : public Task {
   Vec3 origin_;  ///< the world point (m) of the grid's corner (0, 0)
   int levels_seen_ = 0;
   RiverScene scene_;
+  std::vector<double> codes_;  ///< river_cell_code of every cell, row-major
+  long codes_changes_ = -1;    ///< world_.changes() when codes_ was made
 };
 
 /// The river_cell code the controller sees for a cell (food as the resource).

@@ -6,9 +6,13 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <vector>
+
+#include "core/rng.h"
 
 namespace bx {
 namespace {
@@ -184,6 +188,56 @@ TEST(ShuntingModel, ReshapingStartsFromZero) {
   EXPECT_EQ(std::vector<double>(sm.values().begin(), sm.values().end()), first);
   sm.shape(g, Iota{0, 0, 0, 0, 0});
   for (double x : sm.values()) EXPECT_EQ(x, 0);
+}
+
+// Eq. 3 read plainly, as docs/rivercrossing.md states it: from zero, each
+// sweep from the last one, each cell's eight neighbours' [x]+ (0 outside the
+// grid) in row order, over 8, plus its input, capped at maxI; a cell of
+// negative input held at it.
+std::vector<double> plain_sweeps(const ShuntingDef& d, const std::vector<int>& cells, const Iota& iota) {
+  const int w = d.width, h = d.height;
+  std::vector<double> in(cells.size()), x(cells.size(), 0.0), next(cells.size());
+  for (std::size_t k = 0; k < cells.size(); ++k) in[k] = iota[static_cast<std::size_t>(cells[k])] * d.iota_scale;
+  auto at = [&](int i, int j) { return i < 0 || i >= w || j < 0 || j >= h ? 0.0 : x[static_cast<std::size_t>(j * w + i)]; };
+  for (int s = 0; s < d.sweeps; ++s) {
+    for (int j = 0; j < h; ++j) {
+      for (int i = 0; i < w; ++i) {
+        const std::size_t k = static_cast<std::size_t>(j * w + i);
+        if (in[k] < 0) {
+          next[k] = in[k];
+          continue;
+        }
+        double sum = 0;
+        for (int dj = -1; dj <= 1; ++dj)
+          for (int di = -1; di <= 1; ++di)
+            if (di != 0 || dj != 0) sum += std::max(0.0, at(i + di, j + dj));
+        next[k] = std::min(sum / 8 + in[k], d.max_activity);
+      }
+    }
+    std::swap(x, next);
+  }
+  return x;
+}
+
+// The model's sweeps (a frame of zeros around the grid, no source: no
+// sweeps) give exactly the plain reading's doubles, whatever the grid.
+TEST(ShuntingModel, SweepsGiveThePlainReadingOfEq3BitForBit) {
+  Rng rng(32);
+  for (int trial = 0; trial < 200; ++trial) {
+    const int w = 1 + static_cast<int>(rng.below(22)), h = 1 + static_cast<int>(rng.below(22));
+    const ShuntingDef d = def(w, h, static_cast<int>(rng.below(60)), trial % 3 == 0 ? 1 : 15, trial % 5 == 0 ? 4 : 15);
+    std::vector<int> cells(static_cast<std::size_t>(w * h));
+    for (int& c : cells) c = static_cast<int>(rng.below(river_cell::kCount));
+    Iota iota{0, 0, 0, 0, 0};
+    for (std::size_t c = 1; c < iota.size(); ++c) iota[c] = static_cast<int>(rng.below(3)) - 1;
+    ShuntingModel sm(d);
+    sm.shape(cells, iota);
+    const std::vector<double> want = plain_sweeps(d, cells, iota);
+    ASSERT_EQ(sm.values().size(), want.size());
+    for (std::size_t k = 0; k < want.size(); ++k)
+      ASSERT_EQ(std::bit_cast<std::uint64_t>(sm.values()[k]), std::bit_cast<std::uint64_t>(want[k]))
+          << "cell " << k << " of " << w << " x " << h << ", " << d.sweeps << " sweeps, trial " << trial;
+  }
 }
 
 // f on a 3 x 2 lattice, f[i, j] at f[j * 3 + i]
