@@ -50,7 +50,10 @@ void RiverTask::place_grid(Vec3 torso) {
   levels_seen_ = world_.levels_completed();
 }
 
-void RiverTask::begin(const Observation& o) { place_grid(o.part_pose(torso_).p); }
+void RiverTask::begin(const Observation& o) {
+  start_ = last_ = o.part_pose(torso_).p;
+  place_grid(start_);
+}
 
 void RiverTask::inputs(const Observation& o, std::span<double> out) const {
   std::copy(codes_.begin(), codes_.end(), out.begin());
@@ -71,6 +74,7 @@ void RiverTask::act(const CreatureModel&, std::span<const double> outputs, World
 
 void RiverTask::observe(const Observation& o) {
   const Vec3 torso = o.part_pose(torso_).p;
+  last_ = torso;
   const GridPoint g = to_grid(torso);
   world_.enter(cell_under(g.x, g.y));
   refresh_codes();
@@ -85,6 +89,7 @@ void RiverTask::record(const Observation& o, SceneRecord& out) {
 TaskScore RiverTask::score(const CreatureModel&) const {
   TaskScore s;
   s.fitness = world_.score();
+  s.distance = std::hypot(last_.x - start_.x, last_.y - start_.y);
   const std::optional<Cell> killer = world_.killed_by();
   s.metrics = {{"level", static_cast<double>(world_.level())},
                {"levels completed", static_cast<double>(world_.levels_completed())},

@@ -55,6 +55,8 @@ class RiverTask : public Task {
   /// Over once the agent died (or the time is up: max_steps).
   bool done() const override { return !world_.alive(); }
   /// Fitness: +100 per resource reached, +1 per food eaten (the paper);
+  /// distance: the torso's travel in the ground plane from its start to its
+  /// last position (m);
   /// metrics: the level reached, levels completed, food eaten, whether it
   /// died (1) and of what (cell codes: 3 water, 4 trap).
   TaskScore score(const CreatureModel&) const override;
@@ -80,6 +82,7 @@ class RiverTask : public Task {
   RiverInputs in_;
   GridWorld world_;
   Vec3 origin_;  ///< the world point (m) of the grid's corner (0, 0)
+  Vec3 start_, last_;  ///< the torso's centre at the start and after the last step (m)
   int levels_seen_ = 0;
   RiverScene scene_;
   std::vector<double> codes_;  ///< river_cell_code of every cell, row-major

@@ -125,6 +125,8 @@ TEST(RiverTask, FoodAndTheResourceScoreAndTheNextLevelStartsUnderTheWalker) {
   EXPECT_EQ(score.metrics[2].value, food);
   EXPECT_EQ(score.metrics[5].name, "level 1 completed");
   EXPECT_EQ(score.metrics[5].value, 1);
+  // its distance: the torso's travel in the plane, start to end, whatever the levels' grids
+  EXPECT_DOUBLE_EQ(score.distance, std::hypot(goal.x - start.x, goal.y - start.y));
 }
 
 TEST(RiverTask, WaterKillsAtTheNextActionAndEndsTheTask) {
