@@ -58,11 +58,14 @@ std::vector<SimField> river_fields() {
   };
 }
 
-// the paper's body physics and PD motors, and its task
+// the paper's body physics and PD motors, its task, and its controller
+// stepped once per physics step: the pattern generator's Euler step is the
+// paper's 0.01 s (not the sims1994 dialect's two brain steps per physics step)
 void river_defaults(SimConfig& c) {
   c.physics = river_physics(c.river.body);
   c.motor = river_motor();
   c.task_kind = TaskKind::River;
+  c.brain_hz = 1 / c.physics.dt;
 }
 
 // one row per CreatureKind, in its order

@@ -184,7 +184,7 @@ TEST_F(Kinds, CheckReEvaluatesTheCreatureAsScored) {
     std::vector<std::string> names;
     for (const auto& v : j["variants"]) names.push_back(v["name"]);
     // one other seed, the steps, the lag, the half rate, clamped and held
-    EXPECT_EQ(names, (std::vector<std::string>{"seed 2", "dt/2", "dt/4", "motor lag +10 ms", "brain at 100 Hz",
+    EXPECT_EQ(names, (std::vector<std::string>{"seed 2", "dt/2", "dt/4", "motor lag +10 ms", "brain at 50 Hz",
                                                "clamped", "held"}))
         << c.out;
     EXPECT_EQ(j["effector_sd"].size(), 12u);

@@ -87,6 +87,7 @@ TEST(Presets, PaperPresetsCarryThePapersConstants) {
   EXPECT_EQ(r.sim.motor.model, MotorModel::PD);
   EXPECT_EQ(r.sim.motor.kp, 0.25);
   EXPECT_EQ(r.sim.motor.kd, 0.175);
+  EXPECT_EQ(r.sim.brain_hz, 100);  // one controller step of 0.01 s per physics step
   EXPECT_EQ(r.sim.river.task.seconds, 600);
   EXPECT_EQ(r.evolution.algorithm, Algorithm::SteadyState);
   EXPECT_EQ(r.evolution.tournament_evaluates, TournamentEvaluates::All);
