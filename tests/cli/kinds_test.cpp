@@ -25,15 +25,9 @@ using nlohmann::json;
 
 // the tiny run: 6 individuals, 2 s each
 constexpr const char* kRiverConfig = R"([genotype]
-kind = "river"
-[task]
-kind = "river"
+kind = "river"  # brings the river task, the quadruped's physics and its PD motors
 [river]
 seconds = 2
-[motor]
-model = "pd"
-[physics]
-powered_stops = "separate"
 [evolution]
 algorithm = "steady_state"
 population = 6

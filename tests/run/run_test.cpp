@@ -46,15 +46,9 @@ seconds = 3
 // (evolution.tournament_evaluates = "all", Stanton & Channon 2015)
 const char* kRiverConfig = R"(
 [genotype]
-kind = "river"
-[task]
-kind = "river"
+kind = "river"  # brings the river task, the quadruped's physics and its PD motors
 [river]
 seconds = 1
-[motor]
-model = "pd"
-[physics]
-powered_stops = "separate"
 [evolution]
 algorithm = "steady_state"
 tournament_evaluates = "all"
