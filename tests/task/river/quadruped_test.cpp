@@ -403,6 +403,49 @@ TEST(Quadruped, AHipFollowsItsTargetAsALagOfKdOverKs) {
   EXPECT_NEAR(gain, 1 / std::hypot(1, w * tau), 0.01);  // 0.222; measured 0.223
 }
 
+TEST(Quadruped, AScriptedOneHertzGaitWalksUnderThePapersGains) {
+  // The lag above does not stop the body walking at the pattern generator's
+  // rhythm: every hip's yaw and lift at full command, s = sin(2 pi t + p_leg)
+  // for the yaw and its negative for the lift (lift half a cycle from the
+  // yaw), legs 0, 1 and 3 in phase and leg 2 half a cycle apart (pattern 36
+  // of a scratch search over 256 such gaits; docs/rivercrossing.md, "What it
+  // costs"), knees mid-range. The torso's travel in the plane from 5 s to 25
+  // s, in cell widths per second: measured 0.146 at dt, 0.133 at dt/2 and
+  // 0.133 at dt/4 (a cell in 7-8 s, the grid's 20 cells in under 3 minutes;
+  // over a minute's walk 0.12, as fast in its second half), joints within
+  // 0.2 mm
+  const QuadrupedDef def;
+  const CreatureModel m = make_quadruped(def);
+  auto speed = [&](double div) {
+    PhysicsDef physics = river_physics(def);
+    physics.dt /= div;
+    World w(physics);
+    w.add_creature(m, {{0, 0, quadruped_foot_depth(def) + 0.01 * def.unit}, Mat3::identity()});
+    std::vector<double> s(kQuadrupedEffectors, 0.0);
+    Vec3 start{};
+    const int steps = static_cast<int>(std::lround(25 / physics.dt));
+    for (int i = 1; i <= steps; ++i) {
+      const double t = i * physics.dt;
+      for (int leg = 0; leg < kLegs; ++leg) {
+        const double wave = std::sin(2 * kPi * t + (leg == 2 ? kPi : 0));
+        s[3 * leg] = wave;
+        s[3 * leg + 1] = -wave;
+      }
+      w.apply_effectors(m, river_motor(), s);
+      w.step();
+      EXPECT_EQ(w.check_explosion(), "") << "dt / " << div << " at " << t << " s";
+      if (i == static_cast<int>(std::lround(5 / physics.dt))) start = w.part_pose(kTorso).p;
+    }
+    EXPECT_LT(w.stats().max_joint_gap / def.unit, 0.005) << "dt / " << div;  // measured 1.5e-3 u at dt
+    const Vec3 end = w.part_pose(kTorso).p;
+    return std::hypot(end.x - start.x, end.y - start.y) / def.unit / 20;
+  };
+  const double at_dt = speed(1), at_half = speed(2);
+  EXPECT_GT(at_dt, 0.08);
+  EXPECT_GT(at_half, 0.08);
+  EXPECT_NEAR(at_half / at_dt, 1, 0.25);
+}
+
 // ---- the unit and density (docs/rivercrossing.md, "Unit and density") ----
 
 TEST(QuadrupedScale, AtOneMetreAndDensityOneItSinksOntoItsLimbs) {
