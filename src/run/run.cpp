@@ -261,6 +261,7 @@ Status drive_run(const std::string& dir, const RunOptions& opt) {
   const int total = evo.total_generations();
   auto t0 = std::chrono::steady_clock::now();
   long evals_this_session = 0;
+  double first_step = 0;  // seconds
   if (!note.empty()) log << "note: " << note << std::endl;
   log << "session: resuming at generation " << state.generation + 1 << " with " << evaluator->workers()
       << " workers" << std::endl;
@@ -279,7 +280,11 @@ Status drive_run(const std::string& dir, const RunOptions& opt) {
     double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     double rate = elapsed > 0 ? evals_this_session / elapsed : 0;
     int gens_left = total - 1 - state.generation;
-    double per_gen = elapsed / (done + 1);
+    // time per report interval from the intervals after this session's
+    // first, which may be a cheaper one (the steady state's first is its
+    // initial population: 150 river evaluations against 600 after it)
+    if (done == 0) first_step = elapsed;
+    double per_gen = done == 0 ? elapsed : (elapsed - first_step) / done;
     char line[256];
     const auto& st = res.stats;
     std::snprintf(line, sizeof line,
