@@ -269,6 +269,7 @@ std::string exact_number(double v) {
 
 Status set_seconds(SimConfig& sim, const std::optional<double>& seconds) {
   if (!seconds) return Ok{};
+  if (!has_body(sim.creature)) return Error{"--seconds: " + no_body(sim.creature, "no task to lengthen")};
   if (!(*seconds > 0) || !std::isfinite(*seconds) || *seconds > 1e6)
     return Error{"--seconds: expected a number in (0, 1e6], got " + exact_number(*seconds)};
   task_seconds(sim) = *seconds;

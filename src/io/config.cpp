@@ -451,6 +451,10 @@ Result<RunConfig> read_run_config(std::string_view text, std::string_view source
   }
   for (const auto& [t, src] : layers)
     if (Status s = apply_config_toml(cfg, t, src); !s) return Error{s.error()};
+  // the creature kinds' own rules between their keys
+  for (const CreatureKindRow& row : creature_kind_rows())
+    if (row.check)
+      if (Status s = row.check(cfg.sim); !s) return Error{std::string(source) + ": " + s.error()};
   // catapults are chaumont2007's, and a throwing run needs them
   if (cfg.operators.catapult.enabled && cfg.dialect != Dialect::Chaumont2007)
     return Error{std::string(source) + ": catapult.enabled: catapults need genome.dialect = \"chaumont2007\", got \"" +
