@@ -5,6 +5,7 @@
 #include "brain/river/river_controller.h"
 #include "task/river/quadruped.h"
 #include "develop/develop.h"
+#include "eval/motif_file.h"
 #include "eval/motif_kind.h"
 #include "genome/graph_genotype.h"
 
@@ -56,6 +57,8 @@ std::vector<SimField> river_fields() {
       {"motif", "alpha", SimField::Triple, -1e6, 1e6, {}, [](SimConfig& c) -> void* { return &c.motif.alpha; }, "... biases (eq. 6)"},
       {"motif", "input", SimField::Int, 0, 2, {}, [](SimConfig& c) -> void* { return &c.motif.input; }, "... the neuron that takes the physical network's drive"},
       {"motif", "output", SimField::Int, 0, 2, {}, [](SimConfig& c) -> void* { return &c.motif.output; }, "... the neuron the motor neurons read"},
+      {"motif", "file", SimField::Text, 0, 0, {}, [](SimConfig& c) -> void* { return &c.motif_source.file; }, "... read from this motif file instead: a shipped one's name (motifs/: stanton2015-found) or a path; its motif replaces the keys above (docs/rivercrossing.md, \"The motif file\")"},
+      {"motif", "hash", SimField::Text, 0, 0, {}, [](SimConfig& c) -> void* { return &c.motif_source.hash; }, "... the hash of that file's text as it was read (FNV-1a 64), written by the reader: beside motif.file (a run's resolved config) the keys above stand and the file is not read again"},
   };
 }
 
@@ -71,11 +74,12 @@ void river_defaults(SimConfig& c) {
 
 // one row per CreatureKind, in its order
 const CreatureKindRow kKinds[] = {
-    {CreatureKind::Graph, "graph", GraphGenotype::kKind, develop_graph, nullptr, nullptr, nullptr, nullptr, nullptr},
-    {CreatureKind::River, "river", "floats", develop_river, nullptr, river_genes, river_fields, river_defaults,
+    {CreatureKind::Graph, "graph", GraphGenotype::kKind, develop_graph, nullptr, nullptr, nullptr, nullptr, nullptr,
      nullptr},
+    {CreatureKind::River, "river", "floats", develop_river, nullptr, river_genes, river_fields, river_defaults,
+     resolve_motif_keys, nullptr},
     {CreatureKind::Motif, "motif", "floats", nullptr, evaluate_motif_genes, motif_kind_genes, motif_kind_fields,
-     nullptr, check_motif_kind},
+     nullptr, nullptr, check_motif_kind},
 };
 
 }  // namespace

@@ -57,6 +57,12 @@ struct CreatureKindRow {
   /// The settings it brings, as a dialect does, before a config's own keys
   /// apply: its body's physics and motors, its task (null: none).
   void (*defaults)(SimConfig&);
+  /// What a config layer (a file, one --set) does besides storing the keys
+  /// it set, given all of them ("section.key", whichever row brings them):
+  /// e.g. a key that names a file reads the file into other keys. An error
+  /// names the key and the value; the reader adds the layer's name. Run for
+  /// every row, whatever the config's kind, as every key is read (null: nothing).
+  Status (*resolve)(SimConfig&, const std::vector<std::string>& keys);
   /// Whether its keys agree with each other, once every layer is read (an
   /// error names the key and the value; null: no such rule). Run for every row.
   Status (*check)(const SimConfig&);

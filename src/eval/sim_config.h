@@ -50,8 +50,9 @@ struct SimConfig {
   ThrowingDef throwing;
   RiverDef river;  ///< the river crossing's creature and task
   /// The pre-evolved CTRNN motif every copy in the river crossing's pattern
-  /// generator shares (the [motif] keys).
+  /// generator shares (the [motif] keys), and the file it came from.
   Motif motif = found_motif();
+  MotifSource motif_source;
   /// How genotype.kind = "motif" scores and breeds motifs ([motif_fitness]).
   MotifKindDef motif_kind;
   /// Evaluations per creature under different physics seeds; its fitness is

@@ -1,6 +1,6 @@
 // The motif run (preset rivercrossing-motif): a creature kind without a body
 // evolved, replayed by `simulate` and `best`, refused by the commands that
-// need a body.
+// need a body; and the river runs' motif file, recorded with its hash.
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 #include <sqlite3.h>
@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "core/hash.h"
 #include "support/run_command.h"
 
 namespace {
@@ -185,6 +186,46 @@ TEST_F(MotifRun, CommandsThatNeedABodyRefuseInOneLineAndWriteNothing) {
   }
   EXPECT_FALSE(fs::exists(dir / "unmade"));
   EXPECT_FALSE(fs::exists(run() / "view.html"));
+}
+
+TEST_F(MotifRun, ARiverRunRecordsTheMotifFileItReadAndItsHash) {
+  // the preset names the shipped file; the run's resolved config records it and its hash
+  const fs::path river = dir / "river";
+  const std::string tiny =
+      " --set evolution.population=3 --set evolution.evaluations=0 --set river.seconds=0.05 --workers 0 --quiet";
+  Outcome r = bestiary("run rivercrossing-small" + tiny + " --out " + river.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string shipped = slurp(std::string(BESTIARY_SOURCE_DIR) + "/motifs/stanton2015-found.json");
+  const std::string cfg = slurp(river / "config.toml");
+  EXPECT_NE(cfg.find("\nfile = \"stanton2015-found\"\nhash = \"" + bx::fnv1a64_hex(shipped) + "\"\n"),
+            std::string::npos)
+      << cfg;
+  // a motif run's best, named by its path: its genes are the motif, its hash recorded
+  const fs::path file = dir / "evolved.json";
+  ASSERT_EQ(bestiary("best " + run().string() + " --out " + file.string()).code, 0);
+  const fs::path mine = dir / "river-mine";
+  r = bestiary("run rivercrossing-small" + tiny + " --set motif.file=" + file.string() + " --out " + mine.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string own = slurp(mine / "config.toml");
+  EXPECT_NE(own.find("\nfile = \"" + file.string() + "\"\nhash = \"" + bx::fnv1a64_hex(slurp(file)) + "\"\n"),
+            std::string::npos)
+      << own;
+  EXPECT_EQ(own.find("w0 = [-0.7863092507538241,"), std::string::npos) << "still the shipped motif";
+  // and its best simulates as scored, whatever becomes of the file
+  fs::remove(file);
+  Outcome s = bestiary("simulate " + mine.string() + " --json");
+  ASSERT_EQ(s.code, 0) << s.err;
+  EXPECT_TRUE(json::parse(s.out)["as_scored"].get<bool>());
+}
+
+TEST_F(MotifRun, ABadMotifFileStopsARunBeforeItStartsNamingTheFile) {
+  const fs::path missing = dir / "missing.json";
+  const fs::path out = dir / "never";
+  Outcome r = bestiary("run rivercrossing-small --set motif.file=" + missing.string() + " --out " + out.string());
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(r.err, "bestiary: --set motif.file=" + missing.string() + ": motif.file: \"" + missing.string() +
+                       "\": no shipped motif of that name (shipped: stanton2015-found) and no such file\n");
+  EXPECT_FALSE(fs::exists(out));
 }
 
 }  // namespace

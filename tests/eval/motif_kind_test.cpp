@@ -6,11 +6,13 @@
 
 #include <gtest/gtest.h>
 
+#include "brain/river/found_motif.h"
 #include "brain/river/motif_fitness.h"
 #include "core/rng.h"
 #include "eval/creature.h"
 #include "eval/evaluate.h"
 #include "eval/evaluator.h"
+#include "eval/motif_file.h"
 #include "genome/float_vector.h"
 #include "io/config.h"
 #include "physics/world.h"
@@ -76,6 +78,13 @@ TEST(MotifKind, ItsFitnessThroughEvaluateGenotypeIsMotifFitnessOfTheDecodedGenes
     // a pure function of the genes: another seed, the same
     EXPECT_EQ(evaluate_genotype(g, cfg, seed + 1000).result.fitness, o.result.fitness);
   }
+  // the found motif's genes score as docs/rivercrossing.md says
+  auto found = read_motif_file("stanton2015-found", MotifGeneDef{});
+  ASSERT_TRUE(found.ok()) << found.error();
+  const EvalOutcome o = evaluate_genotype(FloatVector(found->genes), cfg, 1);
+  EXPECT_EQ(o.result.fitness, motif_fitness(found_motif(), MotifFitnessDef{}));
+  EXPECT_NEAR(o.result.fitness, 0.899, 0.0005);
+  EXPECT_NEAR(o.result.metrics[2].value, 1.0, 1e-12);  // dominant at 1 Hz under input
 }
 
 TEST(MotifKind, ItsEvaluationBuildsNoWorld) {

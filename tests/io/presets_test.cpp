@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include "brain/river/found_motif.h"
 #include "io/config.h"
 
 namespace bx {
@@ -95,6 +96,14 @@ TEST(Presets, PaperPresetsCarryThePapersConstants) {
   EXPECT_EQ(r.evolution.evaluations, 1000000);
   EXPECT_EQ(r.evolution.report_every, 1000);
   EXPECT_EQ(r.evolution.p_crossover, 1);
+  // both river presets copy the shipped motif file's motif, which is
+  // found_motif(), and record the file's hash
+  for (const char* name : {"rivercrossing", "rivercrossing-small"}) {
+    RunConfig k = find(name);
+    EXPECT_EQ(k.sim.motif_source.file, "stanton2015-found") << name;
+    EXPECT_EQ(k.sim.motif_source.hash.size(), 16u) << name;
+    EXPECT_EQ(k.sim.motif, found_motif()) << name;
+  }
   // the motif run ("Neural Architecture"): no body, population 1000,
   // tournaments of three, each child evaluated once; the search's operators
   // (a mutated single-point crossover, each gene with p 0.2 by N(0, 0.1));
