@@ -42,6 +42,7 @@ int cmd_check(const CheckArgs& a) {
   auto subject = resolve_creature(a.target, a.flags);
   if (!subject) return fail(subject.error());
   const SimConfig& sim = subject->cfg.sim;
+  if (!has_body(sim.creature)) return fail(no_body(sim.creature, "nothing to check"));
   auto creature = subject->develop();
   if (!creature) return fail(subject->label + ": not viable: " + creature.error());
   const CreatureModel& m = *creature->body;

@@ -11,6 +11,7 @@
 
 #include "cli/commands.h"
 #include "core/files.h"
+#include "core/hash.h"
 #include "run/run.h"
 #include "genome/dialect.h"
 #include "genome/float_vector.h"
@@ -24,16 +25,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
-
-// FNV-1a, 64 bits, as 16 hex digits: detects an edited config or genome in a
-// genome file's provenance (not a security measure)
-std::string fnv1a64(const std::string& text) {
-  std::uint64_t h = 14695981039346656037ull;
-  for (unsigned char c : text) h = (h ^ c) * 1099511628211ull;
-  char buf[17];
-  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
-  return buf;
-}
 
 /// A run target split into its directory and its selector (after the colon).
 struct RunTarget {
@@ -204,8 +195,8 @@ Result<Subject> from_genome(const std::string& path, const CreatureFlags& f) {
     if (!prov_seed || str("config").empty())
       return Error{path + ": provenance: expected the fields \"seed\" (a number as text) and \"config\" (TOML text)"};
     scored_by = str("run") + " individual " + (prov.contains("individual") ? prov["individual"].dump() : "?");
-    bool genome_same = str("genome_hash") == fnv1a64(genotype_text(*c.genotype));
-    bool config_same = str("config_hash") == fnv1a64(str("config"));
+    bool genome_same = str("genome_hash") == fnv1a64_hex(genotype_text(*c.genotype));
+    bool config_same = str("config_hash") == fnv1a64_hex(str("config"));
     if (f.config.empty() && !f.seed) {
       auto cfg = genotype_config(*c.genotype, path, str("config"), path + " (provenance.config)", f.set);
       if (!cfg) return Error{cfg.error()};
@@ -278,6 +269,7 @@ std::string exact_number(double v) {
 
 Status set_seconds(SimConfig& sim, const std::optional<double>& seconds) {
   if (!seconds) return Ok{};
+  if (!has_body(sim.creature)) return Error{"--seconds: " + no_body(sim.creature, "no task to lengthen")};
   if (!(*seconds > 0) || !std::isfinite(*seconds) || *seconds > 1e6)
     return Error{"--seconds: expected a number in (0, 1e6], got " + exact_number(*seconds)};
   task_seconds(sim) = *seconds;
@@ -350,8 +342,8 @@ json provenance_json(const Subject& c, const std::string& config_text) {
     p["evaluations"] = c.individual->evaluations;
   }
   p["seed"] = std::to_string(c.seed);  // text: JSON numbers lose 64-bit integers in many readers
-  p["genome_hash"] = fnv1a64(genotype_text(*c.genotype));
-  p["config_hash"] = fnv1a64(config_text);
+  p["genome_hash"] = fnv1a64_hex(genotype_text(*c.genotype));
+  p["config_hash"] = fnv1a64_hex(config_text);
   p["config"] = config_text;
   return p;
 }

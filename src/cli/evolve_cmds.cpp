@@ -67,13 +67,20 @@ std::string timestamp() {
 int finish(const std::string& dir, const Status& s) {
   if (!s) return fail(s.error());
   std::printf("run in %s (config.toml, run.sqlite, run.log)\n", dir.c_str());
+  bool body = true;  // a kind without a body has no creature to watch
   if (auto store = RunStore::open(run_db_path(dir)); store) {
     auto gens = (*store)->generations();
     if (!gens.empty())
       std::printf("best fitness %.6g (generation 0: %.6g)\n", gens.back().best, gens.front().best);
+    if (auto text = (*store)->config_text(); text)
+      if (auto cfg = read_run_config(*text, run_db_path(dir)); cfg) body = has_body(cfg->sim.creature);
   }
   std::printf("its genome: %s best %s --out best.json\n", program().c_str(), dir.c_str());
-  std::printf("watch the run: %s show %s  (writes %s/view.html)\n", program().c_str(), dir.c_str(), dir.c_str());
+  if (body)
+    std::printf("watch the run: %s show %s  (writes %s/view.html)\n", program().c_str(), dir.c_str(), dir.c_str());
+  else
+    std::printf("its curves: %s plot %s --out %s/fitness.svg  (--metric NAME: its measures)\n", program().c_str(),
+                dir.c_str(), dir.c_str());
   return 0;
 }
 

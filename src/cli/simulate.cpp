@@ -13,6 +13,7 @@
 #include "cli/creature.h"
 #include "core/files.h"
 #include "eval/evaluate.h"
+#include "eval/evaluator.h"
 #include "genome/dialect.h"
 #include "io/config.h"
 #include "io/replay_file.h"
@@ -29,12 +30,78 @@ struct SimulateArgs {
   bool json = false;
 };
 
+// A creature of a kind without a body: its kind evaluates its genotype (no
+// world, nothing to replay); its fitness and measures, as `simulate` says them.
+int simulate_without_body(const Subject& c, const SimulateArgs& a) {
+  const SimConfig& cfg = c.cfg.sim;
+  const EvalOutcome o = evaluate_genotype(*c.genotype, cfg, c.seed);
+  const EvalResult& res = o.result;
+  // a run's elite scored as the mean (or least) of several evaluations
+  std::vector<double> each;
+  double folded = 0;
+  if (o.viable && c.scored_settings && c.evaluations > 1)
+    folded = repeated_genotype_fitness(*c.genotype, cfg, c.seed, c.repeats(), o, &each);
+  if (a.json) {
+    nlohmann::json out;
+    out["genome"] = a.genome;
+    out["seed"] = c.seed;
+    out["settings"] = c.settings;
+    out["as_scored"] = c.scored_settings;
+    out["stored_fitness"] = c.stored_fitness ? nlohmann::json(*c.stored_fitness) : nlohmann::json(nullptr);
+    out["creature"] = c.kind_name();
+    out["body"] = false;
+    out["viable"] = o.viable;
+    if (!o.viable) out["reason"] = o.reason;
+    out["fitness"] = res.fitness;
+    out["seconds"] = res.seconds;
+    out["steps"] = res.steps;
+    out["brain_steps"] = res.brain_steps;
+    out["failed"] = res.failed;
+    out["failure"] = res.failure;
+    out["note"] = res.note;
+    nlohmann::json metrics = nlohmann::json::object();
+    for (const Metric& mt : res.metrics) metrics[mt.name] = mt.value;
+    out["metrics"] = metrics;
+    if (!each.empty()) {
+      out["evaluation_fitness"] = each;
+      out["scored_fitness"] = folded;
+    }
+    out["warnings"] = res.warnings;
+    out["replay"] = nullptr;
+    std::printf("%s\n", out.dump().c_str());
+    return 0;
+  }
+  if (!o.viable) {
+    std::printf("%s: not viable: %s\n", c.label.c_str(), o.reason.c_str());
+    return 0;
+  }
+  std::printf("%s: %s creature, no body\n", c.label.c_str(), c.kind_name().c_str());
+  if (!c.settings.empty()) std::printf("%s\n", c.settings.c_str());
+  std::printf("evaluated without a physics world: %.2f s of its controller (%ld steps), seed %llu\n", res.seconds,
+              res.brain_steps, static_cast<unsigned long long>(c.seed));
+  if (res.failed) std::printf("failed: %s\n", res.failure.c_str());
+  if (!res.note.empty()) std::printf("note: %s\n", res.note.c_str());
+  if (!res.metrics.empty()) std::printf("%s\n", metrics_line(res.metrics).c_str());
+  std::printf("%s\n", fitness_line(res.fitness, c.scored_fitness()).c_str());
+  if (!each.empty()) {
+    std::printf("the run's fitness is the %s of %zu evaluations (the lines above are the first's):",
+                score_name(cfg.trial_score), each.size());
+    for (double f : each) std::printf(" %.6g", f);
+    std::printf("\n%s\n", fitness_line(folded, c.stored_fitness).c_str());
+  }
+  return 0;
+}
+
 int cmd_simulate(const SimulateArgs& a) {
   // inputs: the creature, its config, flags; all checked before any work
   auto creature = resolve_creature(a.genome, a.flags);
   if (!creature) return fail(creature.error());
   const SimConfig& cfg = creature->cfg.sim;
   const std::uint64_t seed = creature->seed;
+  if (!has_body(cfg.creature)) {
+    if (!a.replay.empty()) return fail("--replay: " + no_body(cfg.creature, "nothing to replay"));
+    return simulate_without_body(*creature, a);
+  }
   if (!a.replay.empty()) {
     // make the replay's folder now, so a bad path fails before the simulation
     if (Status s = make_parent_dir("--replay", a.replay); !s) return fail(s.error());

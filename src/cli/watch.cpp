@@ -94,6 +94,9 @@ int cmd_show_run(WatchArgs a) {
   if (!text) return fail(text.error());
   auto cfg = read_run_config(*text, run_db_path(dir) + " (the run's config)");
   if (!cfg) return fail(cfg.error());
+  if (!has_body(cfg->sim.creature))
+    return fail(no_body(cfg->sim.creature, "no creature to show (its curves: `" + program() + " plot " + dir +
+                                              " --out fitness.svg`, and --metric NAME)"));
   auto seed = (*store)->master_seed();
   if (!seed) return fail(seed.error());
   SimConfig sim = cfg->sim;
@@ -125,6 +128,7 @@ int cmd_show(WatchArgs a) {
   // inputs first, then the simulation, then the page
   auto c = resolve_creature(a.genome, a.flags);
   if (!c) return fail(c.error());
+  if (!has_body(c->cfg.sim.creature)) return fail(no_body(c->cfg.sim.creature, "nothing to show"));
   if (a.out.empty())
     a.out = c->individual ? (fs::path(c->run_dir) / ("individual-" + std::to_string(c->individual->id) + ".html")).string()
                           : fs::path(a.genome).replace_extension(".html").string();
@@ -278,6 +282,7 @@ int cmd_render(const WatchArgs& a) {
   // inputs: the creature, its config and flags, the output's kind and folder, the tools
   auto c = resolve_creature(a.genome, a.flags);
   if (!c) return fail(c.error());
+  if (!has_body(c->cfg.sim.creature)) return fail(no_body(c->cfg.sim.creature, "nothing to render"));
   std::string ext = lower(fs::path(a.out).extension().string());
   if (ext != ".mp4" && ext != ".gif")
     return fail("--out: expected a file name ending in .mp4 or .gif, got \"" + a.out + "\"");
@@ -470,7 +475,8 @@ void add_watch_commands(CLI::App& app) {
   p->add_option("--height", plot.height, "Height in pixels")->default_val(500);
   p->add_option("--metric", plot.metrics,
                 "Instead of fitness, the share of each generation's evaluations in which each task metric whose name "
-                "contains this was not 0 (repeatable; e.g. \"completed\": each level a task counts as completed)");
+                "contains this was not 0 (repeatable; e.g. \"completed\": each level a task counts as completed); "
+                "a metric not always 0 or 1 is drawn as its mean over those evaluations");
   p->callback([] { std::exit(cmd_plot(plot)); });
 }
 

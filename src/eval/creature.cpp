@@ -5,6 +5,8 @@
 #include "brain/river/river_controller.h"
 #include "task/river/quadruped.h"
 #include "develop/develop.h"
+#include "eval/motif_file.h"
+#include "eval/motif_kind.h"
 #include "genome/graph_genotype.h"
 
 namespace bx {
@@ -22,7 +24,7 @@ Result<Creature> develop_graph(const Genotype& g, const SimConfig& cfg) {
 Result<Creature> develop_river(const Genotype& g, const SimConfig& cfg) {
   const RiverDef& r = cfg.river;
   if (Status s = check_quadruped_def(r.body); !s) return Error{s.error()};
-  auto model = make_river_brain_model(r.brain, r.motif, static_cast<const FloatVector&>(g).genes);
+  auto model = make_river_brain_model(r.brain, cfg.motif, static_cast<const FloatVector&>(g).genes);
   if (!model) return Error{model.error()};
   Creature c;
   c.body = std::make_unique<const CreatureModel>(make_quadruped(r.body));
@@ -37,7 +39,7 @@ FloatVectorDef river_genes(const SimConfig& cfg) {
 
 std::vector<SimField> river_fields() {
   auto motif_row = [](int i) -> std::function<void*(SimConfig&)> {
-    return [i](SimConfig& c) -> void* { return &c.river.motif.w[static_cast<std::size_t>(i)]; };
+    return [i](SimConfig& c) -> void* { return &c.motif.w[static_cast<std::size_t>(i)]; };
   };
   return {
       {"river", "unit", SimField::Real, 1e-6, 1e6, {}, [](SimConfig& c) -> void* { return &c.river.body.unit; }, "river crossing: a cell's width, the quadruped's length unit (m)"},
@@ -51,10 +53,12 @@ std::vector<SimField> river_fields() {
       {"motif", "w0", SimField::Triple, -1e6, 1e6, {}, motif_row(0), "river crossing's CTRNN motif: weights into neuron 0 from neurons 0, 1, 2 (eq. 5)"},
       {"motif", "w1", SimField::Triple, -1e6, 1e6, {}, motif_row(1), "... into neuron 1"},
       {"motif", "w2", SimField::Triple, -1e6, 1e6, {}, motif_row(2), "... into neuron 2"},
-      {"motif", "tau", SimField::Triple, 1e-6, 1e6, {}, [](SimConfig& c) -> void* { return &c.river.motif.tau; }, "... time constants (s)"},
-      {"motif", "alpha", SimField::Triple, -1e6, 1e6, {}, [](SimConfig& c) -> void* { return &c.river.motif.alpha; }, "... biases (eq. 6)"},
-      {"motif", "input", SimField::Int, 0, 2, {}, [](SimConfig& c) -> void* { return &c.river.motif.input; }, "... the neuron that takes the physical network's drive"},
-      {"motif", "output", SimField::Int, 0, 2, {}, [](SimConfig& c) -> void* { return &c.river.motif.output; }, "... the neuron the motor neurons read"},
+      {"motif", "tau", SimField::Triple, 1e-6, 1e6, {}, [](SimConfig& c) -> void* { return &c.motif.tau; }, "... time constants (s)"},
+      {"motif", "alpha", SimField::Triple, -1e6, 1e6, {}, [](SimConfig& c) -> void* { return &c.motif.alpha; }, "... biases (eq. 6)"},
+      {"motif", "input", SimField::Int, 0, 2, {}, [](SimConfig& c) -> void* { return &c.motif.input; }, "... the neuron that takes the physical network's drive"},
+      {"motif", "output", SimField::Int, 0, 2, {}, [](SimConfig& c) -> void* { return &c.motif.output; }, "... the neuron the motor neurons read"},
+      {"motif", "file", SimField::Text, 0, 0, {}, [](SimConfig& c) -> void* { return &c.motif_source.file; }, "... read from this motif file instead: a shipped one's name (motifs/: stanton2015-found) or a path; its motif replaces the keys above (docs/rivercrossing.md, \"The motif file\")"},
+      {"motif", "hash", SimField::Text, 0, 0, {}, [](SimConfig& c) -> void* { return &c.motif_source.hash; }, "... the hash of that file's text as it was read (FNV-1a 64), written by the reader: beside motif.file (a run's resolved config) the keys above stand and the file is not read again"},
   };
 }
 
@@ -70,13 +74,19 @@ void river_defaults(SimConfig& c) {
 
 // one row per CreatureKind, in its order
 const CreatureKindRow kKinds[] = {
-    {CreatureKind::Graph, "graph", GraphGenotype::kKind, develop_graph, nullptr, nullptr, nullptr},
-    {CreatureKind::River, "river", "floats", develop_river, river_genes, river_fields, river_defaults},
+    {CreatureKind::Graph, "graph", GraphGenotype::kKind, develop_graph, nullptr, nullptr, nullptr, nullptr, nullptr,
+     nullptr},
+    {CreatureKind::River, "river", "floats", develop_river, nullptr, river_genes, river_fields, river_defaults,
+     resolve_motif_keys, nullptr},
+    {CreatureKind::Motif, "motif", "floats", nullptr, evaluate_motif_genes, motif_kind_genes, motif_kind_fields,
+     nullptr, nullptr, check_motif_kind},
 };
 
 }  // namespace
 
 const CreatureKindRow& creature_kind_row(CreatureKind kind) { return kKinds[static_cast<int>(kind)]; }
+
+std::span<const CreatureKindRow> creature_kind_rows() { return kKinds; }
 
 std::vector<std::string_view> creature_kind_names() {
   std::vector<std::string_view> out;
@@ -92,11 +102,18 @@ std::vector<SimField> creature_fields() {
   return out;
 }
 
+bool has_body(CreatureKind kind) { return creature_kind_row(kind).evaluate == nullptr; }
+
+std::string no_body(CreatureKind kind, std::string_view what) {
+  return "genotype.kind \"" + std::string(creature_kind_row(kind).name) + "\" has no body: " + std::string(what);
+}
+
 Result<Creature> develop_creature(const Genotype& g, const SimConfig& cfg) {
   const CreatureKindRow& row = creature_kind_row(cfg.creature);
   if (g.kind() != row.genotype_kind)
     return Error{"a genotype of kind " + std::string(g.kind()) + ", but genotype.kind \"" + std::string(row.name) +
                  "\" develops " + std::string(row.genotype_kind) + " genotypes"};
+  if (!row.develop) return Error{no_body(cfg.creature, "nothing to develop")};
   return row.develop(g, cfg);
 }
 

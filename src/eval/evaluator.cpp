@@ -37,6 +37,21 @@ EvalOutcome evaluate_genome(const Genome& g, const SimConfig& cfg, std::uint64_t
 
 EvalOutcome evaluate_genotype(const Genotype& g, const SimConfig& cfg, std::uint64_t seed) {
   EvalOutcome out;
+  // a kind without a body evaluates its genotype itself, with no world
+  const CreatureKindRow& row = creature_kind_row(cfg.creature);
+  if (row.evaluate) {
+    Status s = g.kind() == row.genotype_kind
+                   ? row.evaluate(g, cfg, seed, out.result)
+                   : Status(Error{"a genotype of kind " + std::string(g.kind()) + ", but genotype.kind \"" +
+                                  std::string(row.name) + "\" evaluates " + std::string(row.genotype_kind) +
+                                  " genotypes"});
+    if (!s) {
+      out.viable = false;
+      out.reason = s.error();
+      out.result = EvalResult{};
+    }
+    return out;
+  }
   auto creature = develop_creature(g, cfg);
   if (!creature) {
     out.viable = false;
@@ -45,6 +60,20 @@ EvalOutcome evaluate_genotype(const Genotype& g, const SimConfig& cfg, std::uint
   }
   out.result = evaluate(*creature, cfg, seed);
   return out;
+}
+
+double repeated_genotype_fitness(const Genotype& g, const SimConfig& cfg, std::uint64_t seed, const Repeats& r,
+                                 const EvalOutcome& first, std::vector<double>* each) {
+  auto scored = [&](const EvalOutcome& o) { return !o.viable || o.result.failed ? r.failed_fitness : o.result.fitness; };
+  const DividedSteps steps(cfg);
+  double score = scored(first);
+  if (each) each->assign(1, score);
+  for (int k = 1; k < r.evaluations; ++k) {
+    const double f = scored(evaluate_genotype(g, steps.at(repeat_step_divisor(r, k)), repeat_seed(seed, k)));
+    if (each) each->push_back(f);
+    score = fold_score(cfg.trial_score, score, k, f);
+  }
+  return score;
 }
 
 std::vector<EvalOutcome> SerialEvaluator::evaluate(const std::vector<EvalJob>& jobs) {

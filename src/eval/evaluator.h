@@ -39,8 +39,17 @@ EvalOutcome evaluate_genome(const Genome& g, const SimConfig& cfg, std::uint64_t
 
 /// Evaluates one genotype: the work of every evaluator. It develops into
 /// cfg.creature's creature (develop_creature: not viable when it does not,
-/// a genotype of another kind included) and that creature is evaluated.
+/// a genotype of another kind included) and that creature is evaluated; a
+/// kind without a body evaluates it itself, with no physics world
+/// (CreatureKindRow::evaluate).
 EvalOutcome evaluate_genotype(const Genotype& g, const SimConfig& cfg, std::uint64_t seed);
+
+/// repeated_fitness for any genotype, each evaluation by evaluate_genotype
+/// (a kind without a body has no Creature to pass): the fold of `first` and
+/// r.evaluations - 1 more under repeat_seed(seed, k), each at the step
+/// repeat_step_divisor says; each one's fitness to `each` when given.
+double repeated_genotype_fitness(const Genotype& g, const SimConfig& cfg, std::uint64_t seed, const Repeats& r,
+                                 const EvalOutcome& first, std::vector<double>* each = nullptr);
 
 /// Evaluates batches of jobs; results come back in job order.
 class Evaluator {

@@ -5,6 +5,8 @@
 #include <string_view>
 #include <vector>
 
+#include "brain/river/found_motif.h"
+#include "brain/river/motif_def.h"
 #include "develop/develop.h"
 #include "genome/genome.h"
 #include "physics/physics_def.h"
@@ -26,6 +28,7 @@ enum class TaskKind {
 enum class CreatureKind {
   Graph,  ///< Sims' graph genome: it grows its body and compiles its own brain
   River,  ///< a float vector: the river crossing's controller weights, driving its quadruped
+  Motif,  ///< a float vector: a CTRNN motif's 15 genes, scored without a body (no physics world)
 };
 
 /// How several trials' fitnesses combine (SimConfig::trial_score).
@@ -46,6 +49,12 @@ struct SimConfig {
   LocomotionDef task;
   ThrowingDef throwing;
   RiverDef river;  ///< the river crossing's creature and task
+  /// The pre-evolved CTRNN motif every copy in the river crossing's pattern
+  /// generator shares (the [motif] keys), and the file it came from.
+  Motif motif = found_motif();
+  MotifSource motif_source;
+  /// How genotype.kind = "motif" scores and breeds motifs ([motif_fitness]).
+  MotifKindDef motif_kind;
   /// Evaluations per creature under different physics seeds; its fitness is
   /// their mean (QuickStep's randomised solver makes a chaotic motion, such
   /// as a throw, depend on the seed).

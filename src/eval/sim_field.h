@@ -20,6 +20,7 @@ struct SimField {
     Int,     ///< int
     Choice,  ///< an enum (int-sized) named by `choices`
     Triple,  ///< std::array<double, 3>
+    Text,    ///< std::string, one line without control characters
   } kind;
   double lo, hi;                          ///< inclusive range (Real, Int, each of a Triple's)
   std::vector<std::string_view> choices;  ///< Choice: names, by enum value

@@ -24,7 +24,7 @@ namespace {
 struct Field {
   std::string_view section;
   std::string_view key;
-  enum Kind { Real, Int, Long, Bool, Choice, Vec, Triple } kind;  // Triple: std::array<double, 3>
+  enum Kind { Real, Int, Long, Bool, Choice, Vec, Triple, Text } kind;  // Triple: std::array<double, 3>; Text: std::string
   double lo, hi;                                  // inclusive range (Real, Int, each of Vec's)
   std::vector<std::string_view> choices;          // Choice: names, by enum value
   std::function<void*(RunConfig&)> at;            // the field's address
@@ -51,7 +51,7 @@ std::vector<Field> with_table_fields(std::vector<Field> own) {
   std::vector<std::string_view> sections;
   for (const SimField& f : table)
     if (std::find(sections.begin(), sections.end(), f.section) == sections.end()) sections.push_back(f.section);
-  static constexpr Field::Kind kinds[] = {Field::Real, Field::Int, Field::Choice, Field::Triple};
+  static constexpr Field::Kind kinds[] = {Field::Real, Field::Int, Field::Choice, Field::Triple, Field::Text};
   for (std::string_view sec : sections)
     for (const SimField& f : table)
       if (f.section == sec)
@@ -276,6 +276,14 @@ Status set_field(const Field& f, RunConfig& cfg, const toml::node& n, const std:
         *static_cast<std::array<double, 3>*>(p) = {v.x, v.y, v.z};
       return Ok{};
     }
+    case Field::Text: {
+      if (!n.is_string()) return bad("expected text in quotes");
+      auto text = *n.value<std::string>();
+      for (unsigned char c : text)
+        if (c < 0x20 || c == 0x7f) return bad("expected one line of text without control characters");
+      *static_cast<std::string*>(p) = std::move(text);
+      return Ok{};
+    }
     case Field::Choice: {
       std::string names;
       for (auto c : f.choices) names += (names.empty() ? "" : ", ") + std::string(c);
@@ -375,6 +383,7 @@ Status apply_config_toml(RunConfig& cfg, std::string_view text, std::string_view
                  ": " + one_line(e.description(), 200)};
   }
   RunConfig out = cfg;  // apply all or nothing
+  std::vector<std::string> set;  // the keys this layer sets, section.key
   for (auto&& [sec_key, sec_node] : root) {
     std::string sec = one_line(sec_key.str(), 100);  // as messages quote it
     auto* table = sec_node.as_table();
@@ -402,8 +411,13 @@ Status apply_config_toml(RunConfig& cfg, std::string_view text, std::string_view
         return Error{where + ": unknown key" + did_you_mean(one_line(key.str(), 100), keys)};
       }
       if (Status s = set_field(*field, out, node, where); !s) return s;
+      set.push_back(std::string(field->section) + "." + std::string(field->key));
     }
   }
+  // what setting them does besides (a key that names a file reads it)
+  for (const CreatureKindRow& row : creature_kind_rows())
+    if (row.resolve)
+      if (Status s = row.resolve(out.sim, set); !s) return Error{std::string(source) + ": " + s.error()};
   // keys that must agree with each other (both algorithms breed in these shares)
   const EvolutionDef& e = out.evolution;
   if (std::abs(e.p_asexual + e.p_crossover + e.p_graft - 1) > 1e-9)
@@ -451,6 +465,10 @@ Result<RunConfig> read_run_config(std::string_view text, std::string_view source
   }
   for (const auto& [t, src] : layers)
     if (Status s = apply_config_toml(cfg, t, src); !s) return Error{s.error()};
+  // the creature kinds' own rules between their keys
+  for (const CreatureKindRow& row : creature_kind_rows())
+    if (row.check)
+      if (Status s = row.check(cfg.sim); !s) return Error{std::string(source) + ": " + s.error()};
   // catapults are chaumont2007's, and a throwing run needs them
   if (cfg.operators.catapult.enabled && cfg.dialect != Dialect::Chaumont2007)
     return Error{std::string(source) + ": catapult.enabled: catapults need genome.dialect = \"chaumont2007\", got \"" +
@@ -505,6 +523,7 @@ std::string config_to_toml(const RunConfig& cfg_in, bool sim_only) {
       case Field::Choice: ss << '"' << f.choices[*static_cast<int*>(p)] << '"'; break;
       case Field::Vec: ss << vec_text(*static_cast<Vec3*>(p)); break;
       case Field::Triple: ss << vec_text(triple(p)); break;
+      case Field::Text: ss << toml_quote(*static_cast<std::string*>(p)); break;
     }
     ss << "\n";
   }
@@ -529,6 +548,7 @@ std::string config_reference_markdown() {
         case Field::Choice: ss << " " << f.choices[*static_cast<int*>(p)] << " |"; break;
         case Field::Vec: ss << " " << vec_text(*static_cast<Vec3*>(p)) << " |"; break;
         case Field::Triple: ss << " " << vec_text(triple(p)) << " |"; break;
+        case Field::Text: ss << " " << toml_quote(*static_cast<std::string*>(p)) << " |"; break;
       }
     }
     ss << " " << f.doc << " |\n";

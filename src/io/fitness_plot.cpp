@@ -1,5 +1,8 @@
 #include "io/fitness_plot.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "io/line_chart.h"
 
 namespace bx {
@@ -21,7 +24,16 @@ std::string fitness_svg(const std::vector<GenerationStats>& gens, const std::str
 std::string metric_svg(const std::vector<GenerationStats>& gens, const std::vector<std::string>& names,
                        double per_generation, const std::string& x_label, const std::string& title, int width,
                        int height) {
-  LineChart c{title, x_label, "share of evaluations (%)", {}, {}, 0, 100};
+  // a metric that is 0 or 1 in every evaluation (a count of levels
+  // completed) has its mean equal to its share of evaluations: drawn as that
+  // share (%) when every metric drawn is such; else every one as its mean
+  bool shares = true;
+  for (const GenerationStats& g : gens)
+    for (const MetricStat& m : g.metrics)
+      if (std::find(names.begin(), names.end(), m.name) != names.end() && !(std::abs(m.mean - m.nonzero) <= 1e-12))
+        shares = false;
+  LineChart c = shares ? LineChart{title, x_label, "share of evaluations (%)", {}, {}, 0, 100}
+                       : LineChart{title, x_label, "mean over the evaluations", {}, {}};
   for (const GenerationStats& g : gens) c.xs.push_back(g.generation * per_generation);
   int k = 0;
   for (const std::string& name : names) {
@@ -29,7 +41,7 @@ std::string metric_svg(const std::vector<GenerationStats>& gens, const std::vect
     for (const GenerationStats& g : gens) {
       double v = 0;  // a generation that lacks it: none of its evaluations had it
       for (const MetricStat& m : g.metrics)
-        if (m.name == name) v = 100 * m.nonzero;
+        if (m.name == name) v = shares ? 100 * m.nonzero : m.mean;
       s.ys.push_back(v);
     }
     c.series.push_back(std::move(s));

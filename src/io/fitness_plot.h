@@ -16,8 +16,11 @@ std::string fitness_svg(const std::vector<GenerationStats>& gens, const std::str
 
 /// An SVG of the share (%) of each generation's evaluations in which each
 /// named metric was not 0 (GenerationStats::metrics), e.g. the river
-/// crossing's "level k completed" (Stanton & Channon 2015, Fig. 5); x is the
-/// generation times `per_generation` (a steady state's tournaments per report).
+/// crossing's "level k completed" (Stanton & Channon 2015, Fig. 5), when
+/// every one drawn is 0 or 1 in every evaluation (its mean is that share);
+/// else of each one's mean over the generation's evaluations (a motif's
+/// "oscillation"). x is the generation times `per_generation` (a steady
+/// state's tournaments per report).
 std::string metric_svg(const std::vector<GenerationStats>& gens, const std::vector<std::string>& names,
                        double per_generation, const std::string& x_label, const std::string& title,
                        int width = 800, int height = 500);

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -406,7 +407,14 @@ PhysicsDef softness_at_step(PhysicsDef d) {
   return d;
 }
 
+namespace {
+std::atomic<long> g_worlds_made{0};
+}  // namespace
+
+long World::made() { return g_worlds_made.load(); }
+
 World::World(const PhysicsDef& given) : impl_(std::make_unique<Impl>()) {
+  ++g_worlds_made;
   ensure_ode_initialized();
   auto& w = *impl_;
   w.def = softness_at_step(given);

@@ -34,6 +34,9 @@ class World {
  public:
   explicit World(const PhysicsDef& def);
   ~World();
+  /// How many worlds this process has made (diagnostics: what builds one;
+  /// an evaluation of a kind without a body builds none).
+  static long made();
   World(const World&) = delete;
   World& operator=(const World&) = delete;
 

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include "brain/river/found_motif.h"
 #include "io/config.h"
 
 namespace bx {
@@ -95,6 +96,38 @@ TEST(Presets, PaperPresetsCarryThePapersConstants) {
   EXPECT_EQ(r.evolution.evaluations, 1000000);
   EXPECT_EQ(r.evolution.report_every, 1000);
   EXPECT_EQ(r.evolution.p_crossover, 1);
+  // both river presets copy the shipped motif file's motif, which is
+  // found_motif(), and record the file's hash
+  for (const char* name : {"rivercrossing", "rivercrossing-small"}) {
+    RunConfig k = find(name);
+    EXPECT_EQ(k.sim.motif_source.file, "stanton2015-found") << name;
+    EXPECT_EQ(k.sim.motif_source.hash.size(), 16u) << name;
+    EXPECT_EQ(k.sim.motif, found_motif()) << name;
+  }
+  // the motif run ("Neural Architecture"): no body, population 1000,
+  // tournaments of three, each child evaluated once; the search's operators
+  // (a mutated single-point crossover, each gene with p 0.2 by N(0, 0.1));
+  // the fitness's constants: 10 s twice at 0.01 s, input 1, 1 Hz, amplitude 0.5
+  RunConfig motif = find("rivercrossing-motif");
+  EXPECT_EQ(motif.sim.creature, CreatureKind::Motif);
+  EXPECT_EQ(motif.evolution.algorithm, Algorithm::SteadyState);
+  EXPECT_EQ(motif.evolution.tournament_evaluates, TournamentEvaluates::Child);
+  EXPECT_EQ(motif.evolution.population, 1000);
+  EXPECT_EQ(motif.evolution.evaluations, 200000);
+  EXPECT_EQ(motif.evolution.report_every, 10000);
+  EXPECT_EQ(motif.evolution.batch, 8);
+  EXPECT_EQ(motif.evolution.p_asexual, 0);
+  EXPECT_EQ(motif.evolution.p_crossover, 1);
+  EXPECT_EQ(motif.evolution.p_graft, 0);
+  EXPECT_EQ(motif.evolution.mutation_rate, 0.2);
+  EXPECT_EQ(motif.evolution.elite_evaluations, 1);
+  EXPECT_EQ(motif.sim.motif_kind.gene_sigma, 0.1);
+  EXPECT_EQ(motif.sim.motif_kind.fitness, MotifFitnessDef{});
+  EXPECT_EQ(motif.sim.motif_kind.fitness.seconds, 10);
+  EXPECT_EQ(motif.sim.motif_kind.fitness.dt, 0.01);
+  EXPECT_EQ(motif.sim.motif_kind.fitness.high_input, 1);
+  EXPECT_EQ(motif.sim.motif_kind.fitness.target_hz, 1);
+  EXPECT_EQ(motif.sim.motif_kind.fitness.amplitude, 0.5);
 }
 
 }  // namespace

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <complex>
 #include <cstddef>
 #include <cstdio>
+#include <memory>
 #include <numbers>
 #include <string>
 
@@ -64,6 +66,52 @@ struct Twiddles {
   }
 };
 
+// The twiddles of n samples, made once per thread for the last n asked:
+// a motif run scores every motif over the same count, and 2n cos and sin
+// calls cost as much as the rest of a score.
+const Twiddles& twiddles(std::size_t n) {
+  thread_local std::unique_ptr<Twiddles> last;
+  if (!last || last->cos.size() != n) last = std::make_unique<Twiddles>(n);
+  return *last;
+}
+
+using Complex = std::complex<double>;
+
+// X_k = sum_t x_t e^(-2 pi i k t / n) of the n values x[0], x[s], ...,
+// x[(n-1) s], into out[0 .. n): decimation in time over the smallest prime
+// factor p of n, recursively (mixed radix), so 1000 = 2^3 5^3 samples cost
+// n (2 + 2 + 2 + 5 + 5 + 5) products instead of the plain transform's n^2.
+// tw holds the twiddles of the outermost size N; `step` is N / n.
+void fft(const Complex* x, std::size_t s, std::size_t n, Complex* out, const Twiddles& tw, std::size_t step) {
+  if (n == 1) {
+    out[0] = x[0];
+    return;
+  }
+  std::size_t p = 2;
+  while (n % p != 0 && p * p <= n) ++p;
+  if (n % p != 0) p = n;  // n prime: one plain transform of its n values
+  const std::size_t m = n / p;
+  // the p interleaved subsequences x[r], x[r + p], ... each transformed
+  for (std::size_t r = 0; r < p; ++r) fft(x + r * s, s * p, m, out + r * m, tw, step * p);
+  // X[k + m q] = sum_r e^(-2 pi i r (k + m q) / n) Y_r[k], in place over the
+  // p entries k, k + m, ... (which hold Y_0[k], Y_1[k], ...)
+  std::vector<Complex> y(p);
+  for (std::size_t k = 0; k < m; ++k) {
+    for (std::size_t r = 0; r < p; ++r) y[r] = out[r * m + k];
+    for (std::size_t q = 0; q < p; ++q) {
+      const std::size_t j = k + m * q;
+      Complex sum = y[0];
+      std::size_t at = 0;  // (r j) mod n, kept without a division
+      for (std::size_t r = 1; r < p; ++r) {
+        at += j;
+        if (at >= n) at -= n;
+        sum += Complex(tw.cos[at * step], -tw.sin[at * step]) * y[r];
+      }
+      out[j] = sum;
+    }
+  }
+}
+
 // The one-sided power at bin k of centered samples x (power_spectrum's entry
 // k): one row of the plain DFT.
 double bin_power(const std::vector<double>& x, std::size_t k, const Twiddles& tw) {
@@ -83,14 +131,19 @@ double bin_power(const std::vector<double>& x, std::size_t k, const Twiddles& tw
 }
 
 // The frequency (Hz) of the largest bin above 0 of a signal of `seconds`, or
-// 0 for a constant one.
+// 0 for a constant one: every bin of power_spectrum, by the fast transform
+// (the same powers to rounding), the first of equal ones.
 double dominant(const Centered& c, double seconds) {
   if (c.variance == 0) return 0;
-  const Twiddles tw(c.x.size());
+  const std::size_t n = c.x.size();
+  const std::vector<Complex> x(c.x.begin(), c.x.end());
+  std::vector<Complex> X(n);
+  fft(x.data(), 1, n, X.data(), twiddles(n), 1);
   std::size_t best = 0;
   double best_power = -1;
-  for (std::size_t k = 1; 2 * k <= c.x.size(); ++k) {
-    const double p = bin_power(c.x, k, tw);
+  for (std::size_t k = 1; 2 * k <= n; ++k) {
+    // bin_power's scale: each interior bin counts twice
+    const double p = (2 * k == n ? 1 : 2) * std::norm(X[k]);
     if (p > best_power) {
       best_power = p;
       best = k;
@@ -116,7 +169,7 @@ MotifScore score_signals(std::span<const double> driven, std::span<const double>
   const Centered in = center(driven);
   const Centered q = center(quiet);
   const std::size_t target_bin = static_cast<std::size_t>(std::llround(d.target_hz * d.seconds));
-  s.target_power = bin_power(in.x, target_bin, Twiddles(in.x.size()));
+  s.target_power = bin_power(in.x, target_bin, twiddles(in.x.size()));
   // Parseval: the bins sum to the variance, so the rest is the variance less
   // the target's share (rounding can leave a hair below 0)
   s.other_power = std::max(0.0, in.variance - s.target_power);
@@ -192,7 +245,7 @@ std::vector<double> motif_trace(const Motif& m, double input, double seconds, do
 std::vector<double> power_spectrum(std::span<const double> samples) {
   const Centered c = center(samples);
   if (c.x.empty()) return {};
-  const Twiddles tw(c.x.size());
+  const Twiddles& tw = twiddles(c.x.size());
   std::vector<double> p(c.x.size() / 2 + 1);
   for (std::size_t k = 0; k < p.size(); ++k) p[k] = bin_power(c.x, k, tw);
   return p;

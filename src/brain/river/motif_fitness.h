@@ -40,6 +40,7 @@ struct MotifFitnessDef {
   /// Demanding more would only reward squaring the wave toward +-1, whose
   /// harmonics the score penalises anyway.
   double amplitude = 0.5;
+  friend bool operator==(const MotifFitnessDef&, const MotifFitnessDef&) = default;
 };
 
 /// An error naming the field and value if the def cannot score: a time or
@@ -124,6 +125,7 @@ struct MotifGeneDef {
   double tau_max = 2;
   int input = 0;   ///< the neuron that takes the external input
   int output = 2;  ///< the neuron the motor neurons read
+  friend bool operator==(const MotifGeneDef&, const MotifGeneDef&) = default;
 };
 
 /// An error naming the field and value if the def cannot decode: a

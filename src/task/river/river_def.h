@@ -1,10 +1,10 @@
 // Everything the river crossing takes from a config (SimConfig::river): its
-// task, its body, its controller's sizes and landscape, the pre-evolved
-// motif every pattern generator copies, and the box and mutation of its
-// genes. docs/rivercrossing.md says where each default comes from.
+// task, its body, its controller's sizes and landscape, and the box and
+// mutation of its genes. The pre-evolved CTRNN its pattern generator copies
+// is the brain's, beside this in SimConfig. docs/rivercrossing.md says where
+// each default comes from.
 #pragma once
 
-#include "brain/river/found_motif.h"
 #include "brain/river/river_brain.h"
 #include "task/river/quadruped.h"
 #include "task/river/river_task.h"
@@ -15,7 +15,6 @@ struct RiverDef {
   RiverTaskDef task;
   QuadrupedDef body;
   RiverBrainDef brain;
-  Motif motif = found_motif();
   /// Every gene (a weight) stays in [-gene_range, gene_range]; a mutated
   /// gene moves by N(0, gene_sigma). The paper gives neither: ours.
   double gene_range = 4;

@@ -93,6 +93,35 @@ TEST(MotifFitnessDef, DefaultsPassAndBadFieldsAreNamed) {
             std::string::npos);
 }
 
+// The dominant frequencies come from a fast transform (mixed radix), the
+// spectrum from the plain one: the same largest bin, for motifs' outputs and
+// for noise, over counts of samples that factor into small primes (1000,
+// 1024), large ones (999 = 27 x 37) and none (997).
+TEST(MotifSpectrum, TheDominantFrequencyIsTheLargestBinOfThePowerSpectrum) {
+  const auto largest = [](const std::vector<double>& x, double seconds) {
+    const std::vector<double> p = power_spectrum(x);
+    const auto top = std::max_element(p.begin() + 1, p.end());
+    return *top == 0 ? 0.0 : static_cast<double>(top - p.begin()) / seconds;
+  };
+  Rng rng(31);
+  for (int n : {1000, 1024, 999, 997}) {
+    const double seconds = 0.01 * n;
+    const MotifFitnessDef d{seconds, 0.01, 1, 1 / seconds, 0.5};
+    ASSERT_TRUE(check_motif_fitness_def(d).ok()) << check_motif_fitness_def(d).error();
+    for (int k = 0; k < 40; ++k) {
+      std::vector<double> genes(kMotifGenes);
+      for (double& g : genes) g = rng.uniform(-1, 1);
+      const Motif m = *motif_from_genes(genes, MotifGeneDef{});
+      const std::vector<double> driven = motif_trace(m, 1, seconds, 0.01);
+      std::vector<double> noise(static_cast<std::size_t>(n));
+      for (double& v : noise) v = rng.normal();
+      const MotifScore s = score_motif_outputs(driven, noise, d);
+      EXPECT_EQ(s.dominant_hz, largest(driven, seconds)) << n << " samples, motif " << k;
+      EXPECT_EQ(s.quiet_dominant_hz, largest(noise, seconds)) << n << " samples, noise " << k;
+    }
+  }
+}
+
 // Under input 0.5 sin(1 Hz) + 0.3 sin(3 Hz): P_t = 0.125, P = 0.125 + 0.045;
 // without input -0.7 + 0.1 cos(2 Hz): Q = 0.005; R = 0.5^2 / 2 = 0.125.
 TEST(MotifFitness, HandBuiltSignalsByTheFormula) {
