@@ -15,6 +15,7 @@
 #include "cli/creature.h"
 #include "core/text.h"
 #include "core/files.h"
+#include "eval/creature.h"
 #include "run/run.h"
 #include "genome/genotype_file.h"
 #include "io/config.h"
@@ -159,9 +160,10 @@ int cmd_best(const std::string& target, const CreatureFlags& flags, const std::s
   return 0;
 }
 
-// the paper a config reproduces, from its dialect
-std::string paper_of(Dialect d) {
-  switch (d) {
+// the paper a config reproduces: its creature kind's, else its dialect's
+std::string paper_of(const RunConfig& cfg) {
+  if (std::string_view p = creature_kind_row(cfg.sim.creature).paper; !p.empty()) return std::string(p);
+  switch (cfg.dialect) {
     case Dialect::Sims1994: return "Sims 1994";
     case Dialect::Miconi2006: return "Miconi & Channon 2006";
     case Dialect::Chaumont2007: return "Chaumont et al. 2007";
@@ -192,8 +194,9 @@ int cmd_presets() {
     const EvolutionDef& e = cfg->evolution;
     std::string budget = e.algorithm == Algorithm::Generational
                              ? grouped(e.population) + " x " + grouped(e.generations) + " generations"
-                             : grouped(e.population) + ", " + grouped(e.evaluations) + " evaluations";
-    rows.push_back({p.name, paper_of(cfg->dialect), budget, preset_time(p), preset_summary(p)});
+                             : grouped(e.population) + ", " + grouped(e.evaluations) +
+                                   (e.tournament_evaluates == TournamentEvaluates::All ? " tournaments" : " evaluations");
+    rows.push_back({p.name, paper_of(*cfg), budget, preset_time(p), preset_summary(p)});
   }
   std::size_t w[4] = {};
   for (const auto& r : rows)

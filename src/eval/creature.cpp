@@ -75,11 +75,11 @@ void river_defaults(SimConfig& c) {
 // one row per CreatureKind, in its order
 const CreatureKindRow kKinds[] = {
     {CreatureKind::Graph, "graph", GraphGenotype::kKind, develop_graph, nullptr, nullptr, nullptr, nullptr, nullptr,
-     nullptr},
+     nullptr, ""},
     {CreatureKind::River, "river", "floats", develop_river, nullptr, river_genes, river_fields, river_defaults,
-     resolve_motif_keys, nullptr},
+     resolve_motif_keys, nullptr, "Stanton & Channon 2015"},
     {CreatureKind::Motif, "motif", "floats", nullptr, evaluate_motif_genes, motif_kind_genes, motif_kind_fields,
-     nullptr, nullptr, check_motif_kind},
+     nullptr, nullptr, check_motif_kind, "Stanton & Channon 2015"},
 };
 
 }  // namespace

@@ -66,6 +66,9 @@ struct CreatureKindRow {
   /// Whether its keys agree with each other, once every layer is read (an
   /// error names the key and the value; null: no such rule). Run for every row.
   Status (*check)(const SimConfig&);
+  /// The paper its creatures come from, as `bestiary presets` names it
+  /// (empty: the config's dialect names it, as for Sims' graph genome).
+  std::string_view paper;
 };
 
 /// The row of a kind.

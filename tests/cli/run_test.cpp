@@ -351,6 +351,20 @@ TEST_F(RunCli, PresetsAreListedOneLineEach) {
   for (const char* name : {"quick", "miconi2006", "miconi2006-small", "chaumont2007-walker",
                            "chaumont2007-walker-small", "sims1994-walker"})
     EXPECT_NE(out.find(std::string("\n") + name + " "), std::string::npos) << name << r.out;
+  // each names its paper: a graph genome's by its dialect, a fixed body's by its creature kind
+  auto line_of = [&](const std::string& name) {
+    const std::size_t at = out.find("\n" + name + " ");
+    return at == std::string::npos ? std::string() : out.substr(at + 1, out.find('\n', at + 1) - at - 1);
+  };
+  EXPECT_NE(line_of("miconi2006").find("Miconi & Channon 2006"), std::string::npos) << r.out;
+  EXPECT_NE(line_of("sims1994-walker").find("Sims 1994"), std::string::npos) << r.out;
+  for (const char* name : {"rivercrossing", "rivercrossing-small", "rivercrossing-motif"}) {
+    EXPECT_NE(line_of(name).find("Stanton & Channon 2015"), std::string::npos) << name << r.out;
+    EXPECT_EQ(line_of(name).find("Sims"), std::string::npos) << name << r.out;
+  }
+  // a steady state that evaluates a tournament's three counts tournaments (evolution.evaluations)
+  EXPECT_NE(line_of("rivercrossing-small").find(" tournaments "), std::string::npos) << r.out;
+  EXPECT_NE(line_of("miconi2006-small").find(" evaluations "), std::string::npos) << r.out;
 }
 
 }  // namespace
