@@ -41,7 +41,8 @@ the release before the mechanism's delay (each simulated once, seed 1).
 For a river crossing run (Stanton & Channon 2015) instead of distances: its
 tournaments, best fitness, and per level the share of its final 1000
 tournaments' evaluations that completed the level (the generation_metric
-table), its Fig. 5 curve (`bestiary plot RUN --metric completed`, written as
+table), food eaten and the torso's travel in its first and last report
+interval (whether evolution got going), its Fig. 5 curve (`bestiary plot RUN --metric completed`, written as
 RUN/levels.svg); then over all its seeds the paper's Table 1: per level, the
 share of runs with more than 0% and at least 20/40/60/80% of those
 evaluations completing it, beside the paper's.
@@ -172,14 +173,26 @@ def river_row(preset, seed, run_dir):
     svg = os.path.join(run_dir, "levels.svg")
     sh(["plot", run_dir, "--metric", "completed", "--out", svg])
     cells = " | ".join(f"{shares[k]:.1f}" for k in range(1, RIVER_LEVELS + 1))
-    return (f"| {preset} | {seed} | {state['next_id'] - pop} | {evals} | {best:.4g} | {cells} | {svg} |", shares, span)
+    # whether evolution got going: food and travel in the first and the last report interval
+    first, last = con.execute("select min(gen), max(gen) from generation").fetchone()
+    def food(g):
+        v = con.execute("select nonzero from generation_metric where gen = ? and name = 'food eaten'", (g,)).fetchone()
+        return 100 * v[0] if v else 0
+    def travel(g):
+        v = con.execute("select avg(distance) from individual where gen = ? and evaluations > 0", (g,)).fetchone()
+        return v[0] or 0
+    start = (f"{food(first):.1f}% → {food(last):.1f}% | {100 * travel(first):.1f} → {100 * travel(last):.1f}")
+    return (f"| {preset} | {seed} | {state['next_id'] - pop} | {evals} | {best:.4g} | {start} | {cells} | {svg} |",
+            shares, span)
 
 
 def river_tables(rows):
     out = [f"\nLevel k: the share (%) of the final {rows[0][2]} tournaments' evaluations that completed level k.",
-           "\n| preset | seed | tournaments | evaluations | best fitness | "
+           "Food: the share of evaluations that ate any, in the first and the last report interval; travel: "
+           "the torso's mean travel (cm) per evaluation of the individuals born in them (their latest evaluation).",
+           "\n| preset | seed | tournaments | evaluations | best fitness | food | travel (cm) | "
            + " | ".join(f"level {k}" for k in range(1, RIVER_LEVELS + 1)) + " | Fig. 5 curve |",
-           "|" + "---|" * (6 + RIVER_LEVELS)]
+           "|" + "---|" * (8 + RIVER_LEVELS)]
     out += [r[0] for r in rows]
     span = rows[0][2]
     out.append(f"\nTable 1 over these {len(rows)} runs (share of runs whose final {span} tournaments' evaluations "
