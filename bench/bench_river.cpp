@@ -70,10 +70,7 @@ struct Options {
 // step asked for
 SimConfig river_config(const Options& o) {
   SimConfig cfg;
-  cfg.creature = CreatureKind::River;
-  cfg.task_kind = TaskKind::River;
-  cfg.physics = river_physics(cfg.river.body);
-  cfg.motor = river_motor();
+  apply_creature_kind(cfg, CreatureKind::River);  // the kind's physics, PD motors, task and brain rate
   cfg.river.task.seconds = o.seconds;
   if (o.solver) cfg.physics.solver = *o.solver;
   if (o.iterations) cfg.physics.solver_iterations = *o.iterations;

@@ -130,10 +130,7 @@ int main(int argc, char** argv) {
 
   // the river crossing's config (docs/rivercrossing.md, "Physics")
   SimConfig base;
-  base.creature = CreatureKind::River;
-  base.task_kind = TaskKind::River;
-  base.physics = river_physics(base.river.body);
-  base.motor = river_motor();
+  apply_creature_kind(base, CreatureKind::River);  // the kind's physics, PD motors, task and brain rate
   base.river.task.seconds = seconds;
   const double unit = base.river.body.unit, h = base.physics.dt;
 

@@ -108,6 +108,11 @@ std::string no_body(CreatureKind kind, std::string_view what) {
   return "genotype.kind \"" + std::string(creature_kind_row(kind).name) + "\" has no body: " + std::string(what);
 }
 
+void apply_creature_kind(SimConfig& cfg, CreatureKind kind) {
+  cfg.creature = kind;
+  if (auto defaults = creature_kind_row(kind).defaults) defaults(cfg);
+}
+
 Result<Creature> develop_creature(const Genotype& g, const SimConfig& cfg) {
   const CreatureKindRow& row = creature_kind_row(cfg.creature);
   if (g.kind() != row.genotype_kind)

@@ -88,6 +88,12 @@ bool has_body(CreatureKind kind);
 /// to render"): the one way commands refuse a kind without a body.
 std::string no_body(CreatureKind kind, std::string_view what);
 
+/// Makes cfg's creatures of `kind` with the settings the kind brings (its
+/// row's defaults: a river creature's physics, PD motors, task and brain
+/// rate), as a config naming only genotype.kind gets them; a config's own
+/// keys apply after.
+void apply_creature_kind(SimConfig& cfg, CreatureKind kind);
+
 /// Develops a genotype into cfg.creature's creature: its body and
 /// controller, or why it is not viable (a genotype of another kind than
 /// the creature's is not viable either, and says so, as does a kind

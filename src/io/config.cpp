@@ -459,10 +459,7 @@ Result<RunConfig> read_run_config(std::string_view text, std::string_view source
     }
   }
   RunConfig cfg = default_run_config(d);
-  if (kind) {
-    cfg.sim.creature = *kind;
-    if (auto defaults = creature_kind_row(*kind).defaults) defaults(cfg.sim);
-  }
+  if (kind) apply_creature_kind(cfg.sim, *kind);
   for (const auto& [t, src] : layers)
     if (Status s = apply_config_toml(cfg, t, src); !s) return Error{s.error()};
   // the creature kinds' own rules between their keys

@@ -28,10 +28,7 @@ namespace {
 
 SimConfig river_config(double seconds) {
   SimConfig cfg;
-  cfg.creature = CreatureKind::River;
-  cfg.task_kind = TaskKind::River;
-  cfg.physics = river_physics(cfg.river.body);
-  cfg.motor = river_motor();
+  apply_creature_kind(cfg, CreatureKind::River);  // the kind's physics, PD motors, task and brain rate
   cfg.river.task.seconds = seconds;
   return cfg;
 }
