@@ -272,8 +272,9 @@ def early_releases(run_dir, gen):
             if r.returncode != 0:
                 continue
             one = json.loads(r.stdout)
-            t, begin = one.get("release_time"), one.get("throw_begin_time") or 0
-            t = t - begin if t is not None and t >= 0 else t  # from the throw's beginning
+            marks = one.get("markers", {})  # the task's moments (s)
+            t, begin = marks.get("release"), marks.get("begin", 0)
+            t = t - begin if t is not None else t  # from the throw's beginning
             steps = json.loads(genome)["catapult"].get("release", {}).get("delay_steps", 30)
             delay = steps / rate  # brain steps at brain.rate_hz
             n += 1
@@ -304,11 +305,12 @@ def throw_row(preset, seed, run_dir):
     # the same creature under other evaluation seeds (drop the exact one)
     base = cmd[:cmd.index("--seed")] if "--seed" in cmd else cmd
     others = sorted(json.loads(sh(base + ["--seed", str(k), "--json"]).stdout)["distance"] for k in range(1, 6))
-    miss = one.get("target_miss")
+    miss = one.get("metrics", {}).get("target miss")  # the aim task's metric (m)
     early0, early1 = early_releases(run_dir, first[0]), early_releases(run_dir, last[0])
-    release = one.get("release_time")
-    if release is not None and release >= 0:
-        release -= one.get("throw_begin_time") or 0  # from the throw's beginning (its rest)
+    marks = one.get("markers", {})  # the task's moments (s)
+    release = marks.get("release")
+    if release is not None:
+        release -= marks.get("begin", 0)  # from the throw's beginning (its rest)
     head = f"| {preset} | {seed} | "
     result = (head + f"{gens[-1][1]} | {first[2]:.3g} | {last[2]:.3g} | "
               f"{one['distance']:.2f} | {'-' if miss is None else f'{miss:.2f}'} | {others[2]:.2f} | "

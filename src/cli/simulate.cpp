@@ -17,6 +17,7 @@
 #include "genome/dialect.h"
 #include "io/config.h"
 #include "io/replay_file.h"
+#include "task/throwing.h"
 
 namespace bx {
 
@@ -169,11 +170,11 @@ int cmd_simulate(const SimulateArgs& a) {
       out["evaluation_fitness"] = each;
       out["scored_fitness"] = mean;
     }
-    if (m.projectile >= 0) {
-      out["release_time"] = res.release_time >= 0 ? nlohmann::json(res.release_time) : nlohmann::json(nullptr);
-      out["throw_begin_time"] = res.throw_begin_time >= 0 ? nlohmann::json(res.throw_begin_time) : nlohmann::json(nullptr);
-      out["touch_end_time"] = res.touch_end_time >= 0 ? nlohmann::json(res.touch_end_time) : nlohmann::json(nullptr);
-      out["target_miss"] = res.target_miss >= 0 ? nlohmann::json(res.target_miss) : nlohmann::json(nullptr);
+    if (!res.markers.empty()) {
+      // the task's moments: a throw's begin, release, touch end (s)
+      nlohmann::json markers = nlohmann::json::object();
+      for (const SceneMarker& mk : res.markers) markers[mk.name] = mk.t;
+      out["markers"] = markers;
     }
     out["warnings"] = res.warnings;
     out["replay"] = a.replay.empty() ? nlohmann::json(nullptr) : nlohmann::json(a.replay);
@@ -193,15 +194,17 @@ int cmd_simulate(const SimulateArgs& a) {
   if (res.failed) std::printf("failed: %s\n", res.failure.c_str());
   if (!res.note.empty()) std::printf("note: %s\n", res.note.c_str());
   if (cfg.task_kind == TaskKind::Throwing) {
-    // the throw: when, how far, how close to the target
-    if (res.throw_begin_time > 0) std::printf("at rest at %.3f s: the throw began\n", res.throw_begin_time);
-    if (res.release_time >= 0) std::printf("released at %.3f s\n", res.release_time);
-    if (res.touch_end_time >= 0)
+    // the throw: when, how far, how close to the target (the task's markers and metric)
+    const auto begin = res.marker("begin"), release = res.marker("release"), touch = res.marker("touch end");
+    const auto miss = res.metric(ThrowingTask::kTargetMiss);
+    if (begin && *begin > 0) std::printf("at rest at %.3f s: the throw began\n", *begin);
+    if (release) std::printf("released at %.3f s\n", *release);
+    if (touch && release)
       std::printf("the creature touched its projectile at %.3f s, %.3f s after the release: the throw ended there "
                   "(throwing.touch_seconds)\n",
-                  res.touch_end_time, res.touch_end_time - res.release_time);
+                  *touch, *touch - *release);
     std::printf("projectile thrown %.4f m", res.distance);
-    if (res.target_miss >= 0) std::printf(", passing %.4f m from the target", res.target_miss);
+    if (miss) std::printf(", passing %.4f m from the target", *miss);
     std::printf("\n");
   } else if (!res.metrics.empty()) {
     // a task that names its own measures (levels, food, ...) says them in place of a distance

@@ -69,15 +69,13 @@ void report(const CreatureModel& m, EvalState& s, EvalResult& res, const SceneRe
   res.seconds = s.world.time();
   res.note = s.task->note();
   res.diagnostics = diagnostics(s);
-  // the throw's moments, as the task's scene names them
+  // the task's moments, as its scene names them
   SceneRecord own;
   if (!scene) {
     s.task->record(WorldObservation(m, s.world), own);
     scene = &own;
   }
-  res.release_time = scene->marker("release").value_or(-1);
-  res.touch_end_time = scene->marker("touch end").value_or(-1);
-  res.throw_begin_time = scene->marker("begin").value_or(-1);
+  res.markers = scene->markers;
   if (s.failed) {
     res.failed = true;
     res.failure = s.failure;
@@ -86,7 +84,6 @@ void report(const CreatureModel& m, EvalState& s, EvalResult& res, const SceneRe
   TaskScore score = s.task->score(m);
   res.fitness = score.fitness;
   res.distance = score.distance;
-  res.target_miss = score.target_miss;
   res.metrics = std::move(score.metrics);
 }
 
@@ -155,6 +152,18 @@ SeedDraw seed_draw(const SimConfig& cfg, std::uint64_t seed) {
 long brain_steps_due(long physics_steps, double dt, double brain_hz) {
   // the count of k >= 0 with k < physics_steps * dt * brain_hz, less a millionth
   return static_cast<long>(std::ceil(static_cast<double>(physics_steps) * dt * brain_hz - 1e-6));
+}
+
+std::optional<double> EvalResult::metric(std::string_view name) const {
+  for (const Metric& m : metrics)
+    if (m.name == name) return m.value;
+  return std::nullopt;
+}
+
+std::optional<double> EvalResult::marker(std::string_view name) const {
+  for (const SceneMarker& m : markers)
+    if (m.name == name) return m.t;
+  return std::nullopt;
 }
 
 // the stream of trial seeds (evolution.cpp's streams are 1-4)

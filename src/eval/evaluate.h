@@ -2,7 +2,9 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/scene_record.h"
@@ -56,19 +58,13 @@ struct EvalResult {
   std::string note;         ///< why the task scored 0 by rule (e.g. never settled), or empty
   double fitness = 0;
   double distance = 0;      ///< m, by the task's metric (throwing: D_p)
-  // the throw's moments: the task's scene record's markers
-  /// throwing: when the projectile was released (s; the marker "release"), or -1
-  double release_time = -1;
-  /// throwing: when a touch later than throwing.touch_seconds after the
-  /// release ended the throw (s; "touch end"), or -1 (not kept in a run's records)
-  double touch_end_time = -1;
-  /// throwing: when the throw began (0: at the drop; throwing.start =
-  /// settled: once the creature rested; "begin"), or -1: never, or a task
-  /// without a throw (not kept in records)
-  double throw_begin_time = -1;
-  double target_miss = -1;  ///< throwing, aim: D_t (m), or -1
-  /// The task's own measures by name (TaskScore::metrics); the first trial's.
+  /// The task's own measures by name (TaskScore::metrics: an aim task's
+  /// "target miss", the river crossing's levels and food); the first trial's.
   std::vector<Metric> metrics;
+  /// The task's named moments (its scene record's markers, SceneRecord: a
+  /// throw's "begin", "release" and "touch end"), whether or not a replay was
+  /// recorded; the first trial's.
+  std::vector<SceneMarker> markers;
   double seconds = 0;       ///< simulated time
   long steps = 0;            ///< physics steps
   long brain_steps = 0;      ///< brain steps run (at SimConfig::brain_hz; not those the task had the brain wait)
@@ -78,6 +74,11 @@ struct EvalResult {
   std::vector<double> trial_fitness;
   /// The first trial's.
   EvalDiagnostics diagnostics;
+
+  /// The metric of this name, if the task reported it.
+  std::optional<double> metric(std::string_view name) const;
+  /// When the moment of this name happened (s), if it did.
+  std::optional<double> marker(std::string_view name) const;
 };
 
 /// Simulates the creature (its body driven by its controller) on flat
@@ -89,7 +90,7 @@ struct EvalResult {
 /// With cfg.trials = K > 1 it evaluates K times, under trial_seed(seed, 0..K-1):
 /// fitness is the trials' mean (each in trial_fitness), steps and
 /// brain_steps their sums, and a numerical explosion in any trial fails the
-/// whole evaluation; the rest (distance, release, target miss, seconds, the
+/// whole evaluation; the rest (distance, metrics, markers, seconds, the
 /// replay) is the first trial's, whose seed is `seed` itself.
 EvalResult evaluate(const CreatureModel& body, const ControllerModel& controller, const SimConfig& cfg,
                     std::uint64_t seed, Replay* replay = nullptr);

@@ -51,21 +51,27 @@ T get(const json& j, const char* name) {
   }
 }
 
-// metrics as [[name, value], ...]: an array keeps the task's order
-json metrics_json(const std::vector<Metric>& metrics) {
+// named values (a task's metrics, its markers) as [[name, value], ...]: an
+// array keeps the task's order; V is the value's member
+template <auto V, class T>
+json named_json(const std::vector<T>& named) {
   json a = json::array();
-  for (const Metric& m : metrics) a.push_back(json::array({m.name, num(m.value)}));
+  for (const T& m : named) a.push_back(json::array({m.name, num(m.*V)}));
   return a;
 }
 
-std::vector<Metric> get_metrics(const json& j, const char* name) {
+template <auto V, class T>
+std::vector<T> get_named(const json& j, const char* name) {
   const json& a = field(j, name);
   if (!a.is_array()) throw std::runtime_error(std::string(name) + " is not an array");
-  std::vector<Metric> out;
+  std::vector<T> out;
   for (const json& m : a) {
     if (!m.is_array() || m.size() != 2 || !m[0].is_string())
       throw std::runtime_error(std::string(name) + " holds something other than [name, value]");
-    out.push_back({m[0].get<std::string>(), read_num(m[1], name)});
+    T one;
+    one.name = m[0].get<std::string>();
+    one.*V = read_num(m[1], name);
+    out.push_back(std::move(one));
   }
   return out;
 }
@@ -111,9 +117,8 @@ json outcome_to_json(const EvalOutcome& o) {
           {"note", r.note},
           {"fitness", num(r.fitness)},
           {"distance", num(r.distance)},
-          {"release_time", num(r.release_time)},
-          {"target_miss", num(r.target_miss)},
-          {"metrics", metrics_json(r.metrics)},
+          {"metrics", named_json<&Metric::value>(r.metrics)},
+          {"markers", named_json<&SceneMarker::t>(r.markers)},
           {"seconds", num(r.seconds)},
           {"steps", r.steps},
           {"brain_steps", r.brain_steps},
@@ -141,9 +146,8 @@ Result<EvalOutcome> outcome_from_json(const json& j) {
     r.note = get<std::string>(j, "note");
     r.fitness = get_num(j, "fitness");
     r.distance = get_num(j, "distance");
-    r.release_time = get_num(j, "release_time");
-    r.target_miss = get_num(j, "target_miss");
-    r.metrics = get_metrics(j, "metrics");
+    r.metrics = get_named<&Metric::value, Metric>(j, "metrics");
+    r.markers = get_named<&SceneMarker::t, SceneMarker>(j, "markers");
     r.seconds = get_num(j, "seconds");
     r.steps = get<long>(j, "steps");
     r.brain_steps = get<long>(j, "brain_steps");

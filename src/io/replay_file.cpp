@@ -157,15 +157,12 @@ std::string replay_to_string(const CreatureModel& m, const Replay& r, const Eval
                  {"seconds", res.seconds},   {"steps", res.steps},
                  {"warnings", res.warnings}};
   if (!res.trial_fitness.empty()) j["result"]["trial_fitness"] = res.trial_fitness;
-  // the task's own measures by name, when it has any
+  // the task's own measures by name, when it has any (an aim task's target miss, a
+  // river crossing's levels); its moments are the scene record's markers
   if (!res.metrics.empty()) {
     json metrics = json::object();
     for (const Metric& mt : res.metrics) metrics[mt.name] = mt.value;
     j["result"]["metrics"] = metrics;
-  }
-  if (m.projectile >= 0) {
-    j["result"]["throw_distance"] = res.distance;
-    j["result"]["target_miss"] = res.target_miss >= 0 ? json(res.target_miss) : json(nullptr);
   }
   return j.dump() + "\n";
 }

@@ -69,7 +69,7 @@ class LocomotionTask : public Task {
   bool controller_on() const override { return phase_ == Phase::Burst || phase_ == Phase::Measure; }
   /// True once the evaluation is over.
   bool done() const override { return phase_ == Phase::Done; }
-  TaskScore score(const CreatureModel& m) const override { return {fitness(m), distance(), -1, {}}; }
+  TaskScore score(const CreatureModel& m) const override { return {fitness(m), distance(), {}}; }
   std::string note() const override { return note_; }
   Phase phase() const { return phase_; }
 

@@ -90,7 +90,6 @@ struct Metric {
 struct TaskScore {
   double fitness = 0;
   double distance = 0;       ///< m, by the task's metric (throwing: D_p)
-  double target_miss = -1;   ///< throwing, aim: D_t (m), or -1
   std::vector<Metric> metrics;  ///< the task's own measures, in the task's order
 };
 

@@ -55,7 +55,10 @@ void ThrowingTask::observe(const Observation& o) {
 }
 
 TaskScore ThrowingTask::score(const CreatureModel&) const {
-  return {fitness(), distance(), def_.fitness == ThrowFitness::Aim ? target_miss() : -1};
+  TaskScore s{fitness(), distance(), {}};
+  // D_t, once there is a path to measure it on
+  if (def_.fitness == ThrowFitness::Aim && released_) s.metrics.push_back({kTargetMiss, target_miss()});
+  return s;
 }
 
 void ThrowingTask::record(const Observation&, SceneRecord& out) {

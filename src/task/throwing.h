@@ -89,6 +89,9 @@ class ThrowingTask : public Task {
   /// drop, or once the creature rested), "release", "touch end" (a late
   /// touch ended the throw).
   void record(const Observation&, SceneRecord& out) override;
+  /// The aim task's metric (TaskScore::metrics): D_t (m), reported once the
+  /// projectile was released.
+  static constexpr const char* kTargetMiss = "target miss";
   /// The colours a replay draws them in ("#rrggbb").
   static constexpr const char* kProjectileColor = "#ffc61a";
   static constexpr const char* kTargetColor = "#d6336c";

@@ -34,12 +34,15 @@ void expect_same(const EvalOutcome& a, const EvalOutcome& b) {
   EXPECT_EQ(x.note, y.note);
   EXPECT_TRUE(same_bits(x.fitness, y.fitness)) << x.fitness << " " << y.fitness;
   EXPECT_TRUE(same_bits(x.distance, y.distance));
-  EXPECT_TRUE(same_bits(x.release_time, y.release_time));
-  EXPECT_TRUE(same_bits(x.target_miss, y.target_miss));
   ASSERT_EQ(x.metrics.size(), y.metrics.size());
   for (std::size_t i = 0; i < x.metrics.size(); ++i) {
     EXPECT_EQ(x.metrics[i].name, y.metrics[i].name);
     EXPECT_TRUE(same_bits(x.metrics[i].value, y.metrics[i].value)) << x.metrics[i].name;
+  }
+  ASSERT_EQ(x.markers.size(), y.markers.size());
+  for (std::size_t i = 0; i < x.markers.size(); ++i) {
+    EXPECT_EQ(x.markers[i].name, y.markers[i].name);
+    EXPECT_TRUE(same_bits(x.markers[i].t, y.markers[i].t)) << x.markers[i].name;
   }
   EXPECT_TRUE(same_bits(x.seconds, y.seconds));
   EXPECT_EQ(x.steps, y.steps);
@@ -66,9 +69,9 @@ TEST(OutcomeJson, EveryFieldRoundTripsBitForBit) {
   r.note = "never settled";
   r.fitness = 0.1 + 0.2;  // not the double nearest 0.3
   r.distance = -1e-300;
-  r.release_time = 0.4999999999999999;
-  r.target_miss = 12345.678901234567;
-  r.metrics = {{"levels completed", 3}, {"food eaten", 1.0 / 7.0}, {"a \"quoted\" name", -0.0}};
+  r.metrics = {{"levels completed", 3}, {"food eaten", 1.0 / 7.0}, {"a \"quoted\" name", -0.0},
+               {"target miss", 12345.678901234567}};
+  r.markers = {{"begin", 0}, {"release", 0.4999999999999999}, {"touch end", 5e-324}};
   r.seconds = 1.0 / 3.0;
   r.steps = 1L << 40;
   r.brain_steps = 7;

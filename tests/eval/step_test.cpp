@@ -49,7 +49,7 @@ struct ScriptedTask : Task {
     times.push_back(o.time());
   }
   bool done() const override { return observed() >= last; }
-  TaskScore score(const CreatureModel&) const override { return {1, 2, -1}; }
+  TaskScore score(const CreatureModel&) const override { return {1, 2, {}}; }
   int observed() const { return static_cast<int>(times.size()) - 1; }
 };
 

@@ -11,6 +11,7 @@
 #include "genome/genome_json.h"
 #include "io/config.h"
 #include "io/presets.h"
+#include "task/throwing.h"
 
 namespace bx {
 namespace {
@@ -47,7 +48,7 @@ TEST(ThrowingEval, HandMadeCatapultThrowsItsProjectileAtTheDelay) {
   EvalResult r = evaluate(m, cfg, 1, &replay);
   EXPECT_FALSE(r.failed) << r.failure;
   // released at brain step 30 = 0.5 s at 60 Hz, the body never firing it
-  EXPECT_NEAR(r.release_time, 30 * cfg.physics.dt, 1e-9);
+  EXPECT_NEAR(r.marker("release").value_or(-1), 30 * cfg.physics.dt, 1e-9);
   // (2.49 m on QuickStep, whose hinges gave under the swing; 1.61 m exact)
   EXPECT_GE(r.distance, 1.4);
   EXPECT_DOUBLE_EQ(r.fitness, r.distance);
@@ -57,7 +58,7 @@ TEST(ThrowingEval, HandMadeCatapultThrowsItsProjectileAtTheDelay) {
   ASSERT_EQ(replay.scene.parts.size(), 1u);
   EXPECT_EQ(replay.scene.parts[0].name, "projectile");
   EXPECT_EQ(replay.scene.parts[0].part, 2);
-  EXPECT_EQ(replay.scene.marker("release"), r.release_time);
+  EXPECT_EQ(replay.scene.marker("release"), r.marker("release"));
   EXPECT_EQ(replay.scene.marker("begin"), 0.0);
   // until the release the projectile rides the arm: their distance holds (to
   // the few millimetres an ODE fixed joint gives under the swing)
@@ -67,7 +68,7 @@ TEST(ThrowingEval, HandMadeCatapultThrowsItsProjectileAtTheDelay) {
   };
   double held = gap(replay.frames[0]);
   for (const ReplayFrame& f : replay.frames) {
-    if (f.t < r.release_time) {
+    if (f.t < r.marker("release").value_or(-1)) {
       EXPECT_NEAR(gap(f), held, 1e-2) << "t=" << f.t;
     }
   }
@@ -106,18 +107,18 @@ TEST(ThrowingEval, TheBodyFiresTheReleaseEarlierButCannotHoldIt) {
   // the body's delay line (1 after 14 steps) drives the release: it fires then
   g.catapult->release.inputs = {from_body_delay(1.0)};
   EvalResult early = evaluate(grow(g), cfg, 1);
-  EXPECT_NEAR(early.release_time, 14 * cfg.physics.dt, 1e-9);
+  EXPECT_NEAR(early.marker("release").value_or(-1), 14 * cfg.physics.dt, 1e-9);
   // an inhibiting signal does not stop the mechanism's own delay
   g.catapult->release.inputs = {from_body_delay(-1.0)};
   EvalResult held = evaluate(grow(g), cfg, 1);
-  EXPECT_NEAR(held.release_time, 30 * cfg.physics.dt, 1e-9);
+  EXPECT_NEAR(held.marker("release").value_or(-1), 30 * cfg.physics.dt, 1e-9);
   // nor does a signal below the firing threshold fire it
   g.catapult->release.inputs = {from_body_delay(0.4)};
-  EXPECT_NEAR(evaluate(grow(g), cfg, 1).release_time, 30 * cfg.physics.dt, 1e-9);
+  EXPECT_NEAR(evaluate(grow(g), cfg, 1).marker("release").value_or(-1), 30 * cfg.physics.dt, 1e-9);
   // a longer delay releases later
   g.catapult->release.inputs.clear();
   g.catapult->release.delay_steps = 45;
-  EXPECT_NEAR(evaluate(grow(g), cfg, 1).release_time, 45 * cfg.physics.dt, 1e-9);
+  EXPECT_NEAR(evaluate(grow(g), cfg, 1).marker("release").value_or(-1), 45 * cfg.physics.dt, 1e-9);
 }
 
 TEST(ThrowingEval, TheReleaseKeepsItsTimeWhenThePhysicsStepIsHalvedOrQuartered) {
@@ -131,12 +132,12 @@ TEST(ThrowingEval, TheReleaseKeepsItsTimeWhenThePhysicsStepIsHalvedOrQuartered) 
     g.catapult->release.inputs.clear();
     EvalResult r = evaluate(grow(g), cfg, 1);
     ASSERT_FALSE(r.failed) << r.failure;
-    EXPECT_NEAR(r.release_time, 0.5, cfg.physics.dt + 1e-9) << "dt/" << div;
+    EXPECT_NEAR(r.marker("release").value_or(-1), 0.5, cfg.physics.dt + 1e-9) << "dt/" << div;
     // brain step k runs at k/60 s while k/60 < the evaluation's end T: ceil(60 T) steps
     EXPECT_NEAR(static_cast<double>(r.brain_steps) / r.seconds, 60, 1 / r.seconds + 1e-9) << "dt/" << div;
     EXPECT_GT(r.distance, 1.5) << "dt/" << div;
     g.catapult->release.inputs = {from_body_delay(1.0)};
-    EXPECT_NEAR(evaluate(grow(g), cfg, 1).release_time, 14.0 / 60, cfg.physics.dt + 1e-9) << "dt/" << div;
+    EXPECT_NEAR(evaluate(grow(g), cfg, 1).marker("release").value_or(-1), 14.0 / 60, cfg.physics.dt + 1e-9) << "dt/" << div;
   }
 }
 
@@ -154,14 +155,14 @@ TEST(ThrowingEval, TheProjectileRestsForRestSecondsAtAnyPhysicsStep) {
     Replay replay;
     EvalResult r = evaluate(m, cfg, 1, &replay);
     ASSERT_FALSE(r.failed) << r.failure;
-    ASSERT_GT(r.release_time, 0);
+    ASSERT_GT(r.marker("release").value_or(-1), 0);
     double last_moving = -1;
     for (std::size_t k = 1; k < replay.frames.size(); ++k) {
       const std::vector<double>&a = replay.frames[k - 1].poses, &b = replay.frames[k].poses;
       Vec3 pa{a[14], a[15], a[16]}, pb{b[14], b[15], b[16]};  // the projectile, part 2
       if (norm(pb - pa) >= cfg.throwing.rest_speed * dt) last_moving = replay.frames[k].t;
     }
-    ASSERT_GT(last_moving, r.release_time) << "dt/" << div;
+    ASSERT_GT(last_moving, r.marker("release").value_or(-1)) << "dt/" << div;
     EXPECT_NEAR(r.seconds - last_moving, cfg.throwing.rest_seconds, dt / 2) << "dt/" << div;
     ends.push_back(r.seconds);
   }
@@ -186,10 +187,10 @@ TEST(ThrowingEval, ASettledStartHoldsTheCreatureUntilItIsStillAndTheDelayCountsF
     Replay replay;
     EvalResult r = evaluate(m, cfg, 1, &replay);
     ASSERT_FALSE(r.failed) << r.failure;
-    ASSERT_GT(r.release_time, 0) << r.note;
+    ASSERT_GT(r.marker("release").value_or(-1), 0) << r.note;
     // the brain thought from the throw's beginning only: the release at its
     // 30th step, 0.5 s after it
-    const double t_begin = r.release_time - 0.5;
+    const double t_begin = r.marker("release").value_or(-1) - 0.5;
     EXPECT_GE(t_begin, cfg.throwing.settle.seconds) << "dt/" << div;
     EXPECT_NEAR(static_cast<double>(r.brain_steps), 60 * (r.seconds - t_begin), 1.5) << "dt/" << div;
     // until then every part came to rest: still for settle.seconds just
@@ -219,7 +220,7 @@ TEST(ThrowingEval, ACreatureThatNeverSettlesNeverThrowsAndScoresZero) {
   EvalResult r = evaluate(grow(g), cfg, 1);
   EXPECT_FALSE(r.failed) << r.failure;
   EXPECT_EQ(r.fitness, 0);
-  EXPECT_EQ(r.release_time, -1);
+  EXPECT_FALSE(r.marker("release"));
   EXPECT_EQ(r.brain_steps, 0);
   EXPECT_EQ(r.note, "never settled within settle_timeout");
   EXPECT_NEAR(r.seconds, 1.5, 2 * cfg.physics.dt);
@@ -234,18 +235,18 @@ TEST(ThrowingEval, TheArmMayPushItsProjectileOnlyForTouchSecondsAfterTheRelease)
   SimConfig cfg = default_sim_config(g);
   const EvalResult free = evaluate(m, cfg, 1);
   ASSERT_FALSE(free.failed) << free.failure;
-  EXPECT_EQ(free.touch_end_time, -1);
+  EXPECT_FALSE(free.marker("touch end"));
   // no touch allowed: the arm's push ends the throw within 0.2 s of the release
   cfg.throwing.touch_seconds = 0;
   const EvalResult pushed = evaluate(m, cfg, 1);
-  EXPECT_GT(pushed.touch_end_time, pushed.release_time);
-  EXPECT_LT(pushed.touch_end_time, pushed.release_time + 0.2);
-  EXPECT_NEAR(pushed.seconds, pushed.touch_end_time, 1e-9);
+  EXPECT_GT(pushed.marker("touch end").value_or(-1), pushed.marker("release").value_or(-1));
+  EXPECT_LT(pushed.marker("touch end").value_or(-1), pushed.marker("release").value_or(-1) + 0.2);
+  EXPECT_NEAR(pushed.seconds, pushed.marker("touch end").value_or(-1), 1e-9);
   EXPECT_LT(pushed.distance, 0.25 * free.distance);
   // allowed for 0.2 s: the push is part of the throw, which ends as before
   cfg.throwing.touch_seconds = 0.2;
   const EvalResult thrown = evaluate(m, cfg, 1);
-  EXPECT_EQ(thrown.touch_end_time, -1);
+  EXPECT_FALSE(thrown.marker("touch end"));
   EXPECT_EQ(thrown.fitness, free.fitness);
 }
 
@@ -254,6 +255,8 @@ TEST(ThrowingEval, AimScoresDistanceMinusTheMiss) {
   CreatureModel m = grow(g);
   SimConfig cfg = default_sim_config(g);
   EvalResult thrown = evaluate(m, cfg, 1);
+  // the distance task measures no miss: the aim task's metric alone is it
+  EXPECT_FALSE(thrown.metric(ThrowingTask::kTargetMiss));
   cfg.throwing.fitness = ThrowFitness::Aim;
   for (Vec3 target : {Vec3{-2, 0, 0.075}, Vec3{3, 0, 0.075}}) {
     cfg.throwing.target = target;
@@ -261,17 +264,18 @@ TEST(ThrowingEval, AimScoresDistanceMinusTheMiss) {
     EvalResult r = evaluate(m, cfg, 1, &replay);
     // the throw is the same; only its score changes
     EXPECT_DOUBLE_EQ(r.distance, thrown.distance);
-    EXPECT_GE(r.target_miss, 0.0);
-    EXPECT_DOUBLE_EQ(r.fitness, r.distance - r.target_miss);
+    ASSERT_TRUE(r.metric(ThrowingTask::kTargetMiss));
+    EXPECT_GE(*r.metric(ThrowingTask::kTargetMiss), 0.0);
+    EXPECT_DOUBLE_EQ(r.fitness, r.distance - *r.metric(ThrowingTask::kTargetMiss));
     ASSERT_EQ(replay.scene.points.size(), 1u);
     EXPECT_EQ(replay.scene.points[0].name, "target");
     EXPECT_EQ(replay.scene.points[0].p, target);
   }
   // the catapult throws towards -x: a target there is missed by less
   cfg.throwing.target = {-2, 0, 0.075};
-  double near_miss = evaluate(m, cfg, 1).target_miss;
+  double near_miss = evaluate(m, cfg, 1).metric(ThrowingTask::kTargetMiss).value_or(-1);
   cfg.throwing.target = {3, 0, 0.075};
-  EXPECT_LT(near_miss + 2.0, evaluate(m, cfg, 1).target_miss);
+  EXPECT_LT(near_miss + 2.0, evaluate(m, cfg, 1).metric(ThrowingTask::kTargetMiss).value_or(-1));
 }
 
 TEST(ThrowingEval, SameSeedGivesBitIdenticalThrows) {
@@ -283,7 +287,7 @@ TEST(ThrowingEval, SameSeedGivesBitIdenticalThrows) {
            default_sim_config(Dialect::Sims1994), 9);
   EvalResult b = evaluate(m, cfg, 5);
   EXPECT_EQ(a.fitness, b.fitness);
-  EXPECT_EQ(a.release_time, b.release_time);
+  EXPECT_EQ(a.marker("release"), b.marker("release"));
   EXPECT_EQ(a.steps, b.steps);
 }
 
@@ -293,7 +297,7 @@ TEST(ThrowingEval, OnlyTheThrowingTaskReleases) {
   cfg.task_kind = TaskKind::Locomotion;
   cfg.task.seconds = 2;
   EvalResult r = evaluate(grow(g), cfg, 1);
-  EXPECT_EQ(r.release_time, -1.0);
+  EXPECT_FALSE(r.marker("release"));
 }
 
 TEST(ThrowingEval, ANonCatapultCannotThrow) {
@@ -366,8 +370,8 @@ TEST(ThrowingEval, TrialsAverageTheThrowsOfSeveralSeeds) {
   EXPECT_LT(least, r.fitness);
   EvalResult first = evaluate(m, one, 7);
   EXPECT_EQ(r.distance, first.distance);
-  EXPECT_EQ(r.release_time, first.release_time);
-  EXPECT_EQ(replay.scene.marker("release"), first.release_time);
+  EXPECT_EQ(r.marker("release").value_or(-1), first.marker("release").value_or(-1));
+  EXPECT_EQ(replay.scene.marker("release"), first.marker("release"));
   // the seeds differ, and so (QuickStep is randomised) do the throws
   EXPECT_NE(trial_seed(7, 1), trial_seed(7, 2));
   EXPECT_NE(r.trial_fitness[0], r.trial_fitness[1]);

@@ -175,16 +175,19 @@ TEST(ReplayFile, ACatapultsSceneNamesItsProjectileAndMarksItsRelease) {
   const json& rec = w.j["scene"]["record"];
   EXPECT_FALSE(w.j.contains("throw"));  // its fields are the record's now
   EXPECT_EQ(rec["parts"], json::parse(R"([{"name": "projectile", "part": 2, "color": "#ffc61a"}])"));
-  ASSERT_GE(w.res.release_time, 0);
+  ASSERT_TRUE(w.res.marker("release"));
   bool release = false;
   for (const json& m : rec["markers"])
     if (m["name"] == "release") {
       release = true;
-      EXPECT_NEAR(m["t"].get<double>(), w.res.release_time, 1e-6);
+      EXPECT_NEAR(m["t"].get<double>(), *w.res.marker("release"), 1e-6);
     }
   EXPECT_TRUE(release) << rec;
   EXPECT_FALSE(rec.contains("events"));
-  EXPECT_TRUE(w.j["result"].contains("throw_distance"));
+  // nor has its result a field of its own: the distance is the task's, D_p
+  EXPECT_FALSE(w.j["result"].contains("throw_distance"));
+  EXPECT_FALSE(w.j["result"].contains("target_miss"));
+  EXPECT_EQ(w.j["result"]["distance"].get<double>(), w.res.distance);
   // a walker's task shows nothing beside it: no record
   EXPECT_FALSE(simulate("walker.json", 1).j["scene"].contains("record"));
 }

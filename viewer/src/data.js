@@ -154,7 +154,7 @@ export function parseReplay(r, path = 'replay') {
   });
   if (r.throw !== undefined && r.throw !== null) parseThrow(r.throw, parts.length, `${path}.throw`);
   obj(r.result, `${path}.result`);
-  parseThrowResult(r.result, `${path}.result`);
+  parseTaskResult(r.result, `${path}.result`);
   return r;
 }
 
@@ -173,8 +173,14 @@ export function parseThrow(th, nParts, path = 'throw') {
   return th;
 }
 
-// a throw's results, when present: D_p a number, D_t a number or null
-function parseThrowResult(res, path) {
+// the task's metrics, when present: an object of numbers by name; and a
+// throw's results as files before the metrics held them: D_p a number, D_t a
+// number or null
+function parseTaskResult(res, path) {
+  if (res.metrics !== undefined) {
+    obj(res.metrics, `${path}.metrics`);
+    for (const [name, v] of Object.entries(res.metrics)) num(v, `${path}.metrics[${JSON.stringify(name)}]`);
+  }
   if (res.throw_distance !== undefined) num(res.throw_distance, `${path}.throw_distance`);
   if (res.target_miss !== undefined && res.target_miss !== null) num(res.target_miss, `${path}.target_miss`);
 }

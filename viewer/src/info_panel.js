@@ -9,6 +9,9 @@ import { throwOf } from './flight.js';
 import { generationRanges } from './lineage.js';
 import { cssColor, PROJECTILE_COLOR } from './palette.js';
 
+// the aim task's metric: D_t, the least distance from the throw's path to the target (m)
+const TARGET_MISS = 'target miss';
+
 /** The facts of `entry` ({label, replay}) as [name, text] rows. */
 export function infoRows(entry) {
   const r = entry.replay;
@@ -26,6 +29,9 @@ export function infoRows(entry) {
     ['seed', String(r.seed)],
     ['simulated', num(res.seconds, seconds)],
   ];
+  // the task's own measures by name (the river crossing's levels and food,
+  // an aim task's target miss, in m)
+  const metrics = { ...(res.metrics ?? {}) };
   if (th) {
     // a catapult: its distance is the projectile's, from release to rest
     rows.push(
@@ -33,10 +39,14 @@ export function infoRows(entry) {
       ['release', th.release === null ? 'not released' : `released at ${seconds(th.release)}`],
       ['throw distance', num(res.throw_distance ?? res.distance, metres)],
     );
-    if (typeof res.target_miss === 'number') rows.push(['target miss', metres(res.target_miss)]);
+    // (files before the task's metrics held it as result.target_miss)
+    const miss = metrics[TARGET_MISS] ?? res.target_miss;
+    delete metrics[TARGET_MISS];
+    if (typeof miss === 'number') rows.push(['target miss', metres(miss)]);
   } else {
     rows.push(['distance', num(res.distance, metres)]);
   }
+  for (const [name, value] of Object.entries(metrics)) rows.push([name, fitness(value)]);
   rows.push(['fitness', num(res.fitness, fitness)]);
   // task.trials > 1: the fitness is their mean or, under task.trial_score =
   // min, the least (a copy of one trial's: a mean equals the least only when

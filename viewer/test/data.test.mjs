@@ -33,6 +33,8 @@ test('errors name the field, what was expected and what was found', () => {
     [(r) => delete r.frames[0].joint_angles, /^replay\.frames\[1\]\.joint_angles: expected none, as frame 0 has none/],
     [(r) => (r.joints[0].type = 'weld'), /^replay\.joints\[0\]\.type: expected one of fixed, hinge/],
     [(r) => (r.joints[0].limits = [[1]]), /^replay\.joints\[0\]\.limits\[0\]: expected 2 numbers, got \[1\]$/],
+    [(r) => (r.result.metrics = [1]), /^replay\.result\.metrics: expected an object, got \[1\]$/],
+    [(r) => (r.result.metrics = { level: 1, 'food eaten': '2' }), /^replay\.result\.metrics\["food eaten"\]: expected a number, got "2"$/],
   ];
   for (const [spoil, message] of cases) {
     const r = makeReplay();

@@ -143,7 +143,9 @@ export function makeCatapult({ target = null, release = 0.5, legacy = false } = 
     frames,
     result: {
       fitness: thrown, distance: thrown, failed: false, failure: '', seconds: 1, steps: 100, warnings: [],
-      throw_distance: thrown, target_miss: target ? 0.4 : null,
+      // an aim task's miss is its metric; older files held both as fields
+      ...(legacy ? { throw_distance: thrown, target_miss: target ? 0.4 : null }
+        : target ? { metrics: { 'target miss': 0.4 } } : {}),
     },
   };
 }

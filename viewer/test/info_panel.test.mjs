@@ -42,6 +42,18 @@ test('a catapult aiming at a target: the miss too', () => {
   // rows in order: the throw's facts before the fitness
   const keys = infoRows({ label: 'x', replay: makeCatapult({ target: [2, 0, 0.075] }) }).map(([k]) => k);
   assert.deepEqual(keys.slice(-5), ['projectile', 'release', 'throw distance', 'target miss', 'fitness']);
+  // a file from before the task's metrics held the miss as a field of its own
+  assert.equal(rows(makeCatapult({ target: [2, 0, 0.075], legacy: true }))['target miss'], '0.40 m');
+});
+
+test("a task's named measures, each a row", () => {
+  const replay = makeReplay();
+  replay.result.metrics = { level: 2, 'food eaten': 3, 'level 1 completed': 1 };
+  const r = rows(replay);
+  assert.equal(r.level, '2');
+  assert.equal(r['food eaten'], '3');
+  assert.equal(r['level 1 completed'], '1');
+  assert.equal(r.distance, '2.00 m');
 });
 
 test('a fitness averaged over trials says so, and which trial is shown', () => {
