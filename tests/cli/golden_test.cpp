@@ -117,7 +117,7 @@ const Golden kGolden[] = {
      "--set evolution.population=10 --set evolution.evaluations=40 --set task.seconds=10",
      "5eef55f87affd293", "a57a96847a96c309"},
     {"chaumont2007-catapult-small", "--set evolution.population=10 --set evolution.generations=3",
-     "4624cb87364d4351", "720a8d02d2fd2ed8"},
+     "4624cb87364d4351", "7665687cb77abd6e"},
     {"sims1994-walker", "--set evolution.population=10 --set evolution.generations=3",
      "f2db05190ff162cf", "7beb0e1fbdd9f46b"},
 };
