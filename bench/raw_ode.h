@@ -11,7 +11,7 @@
 //
 // Same inputs, same physics: with the same ODE seed the raw run ends
 // bit-identical to ours (max_part_deviation() == 0). If it does not,
-// src/physics/world.cpp has changed how it builds or steps the world and this
+// src/physics/ has changed how it builds or steps the world and this
 // copy must follow.
 #pragma once
 
