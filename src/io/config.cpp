@@ -474,7 +474,7 @@ Result<RunConfig> read_run_config(std::string_view text, std::string_view source
     return Error{std::string(source) + ": task.kind: \"throwing\" needs catapult.enabled = true"};
   // a PD motor's damper is a motor row of its own (docs/physics.md cause 28):
   // ODE's joint motor at a stop would turn its unlimited force into a torque
-  if (cfg.sim.motor.model == MotorModel::PD && cfg.sim.physics.powered_stops != PoweredStops::Separate)
+  if (needs_own_motor_row(cfg.sim.motor.model) && cfg.sim.physics.powered_stops != PoweredStops::Separate)
     return Error{std::string(source) + ": motor.model: \"pd\" needs physics.powered_stops = \"separate\", got \"ode\""};
   // a generational GA has no tournaments
   if (cfg.evolution.tournament_evaluates == TournamentEvaluates::All && cfg.evolution.algorithm != Algorithm::SteadyState)

@@ -59,76 +59,98 @@ void World::Impl::apply_torques() {
   }
 }
 
+const World::Impl::GainRow& World::Impl::gain(MotorModel model) {
+  // a Servo's full force is its cap; the others' strength x cross-section
+  static constexpr auto cap = [](const MotorDef& motor, const EffectorModel&) { return motor.max_force; };
+  static constexpr auto strength = [](const MotorDef& motor, const EffectorModel& em) {
+    return motor.strength * em.cross_section;
+  };
+  static const GainRow rows[] = {
+      // miconi2006: target velocity max_speed s, force capped at max_force
+      {MotorModel::Servo, false,
+       [](Impl& w, const Actuation& a) {
+         w.drive(a.j, a.em.dof, a.motor.max_speed * a.s, a.motor.max_force);
+         return false;
+       },
+       cap},
+      // chaumont2007 5.3: target velocity sign(s) max_speed, force cap |s| strength x cross-section
+      {MotorModel::Saturation, false,
+       [](Impl& w, const Actuation& a) {
+         w.drive(a.j, a.em.dof, a.s >= 0 ? a.motor.max_speed : -a.motor.max_speed,
+                 std::abs(a.s) * a.motor.strength * a.em.cross_section);
+         return false;
+       },
+       strength},
+      // sims1994: the torque s strength x cross-section, up to the no-load speed if it has one
+      {MotorModel::Torque, false,
+       [](Impl& w, const Actuation& a) {
+         double torque = a.s * a.motor.strength * a.em.cross_section;
+         double limit = is_linear_dof(a.j.type, a.em.dof) ? a.motor.torque_max_linear_speed
+                                                          : a.motor.torque_max_speed;
+         if (limit > 0) {
+           // the torque up to the no-load speed (as Saturation, with its own speed)
+           w.drive(a.j, a.em.dof, torque >= 0 ? limit : -limit, std::abs(torque));
+           return false;
+         }
+         w.joint_torque[a.em.joint][a.em.dof] += torque;
+         return true;
+       },
+       strength},
+      // rivercrossing: T = kp (theta_d - theta) - kd theta', theta_d from s within the joint's range
+      {MotorModel::PD, true,
+       [](Impl& w, const Actuation& a) {
+         double target;
+         if (a.em.dof < static_cast<int>(a.jm.limits.size())) {
+           const Limit& l = a.jm.limits[a.em.dof];
+           target = 0.5 * (l.lo + l.hi) + 0.5 * a.s * (l.hi - l.lo);
+         } else {
+           target = a.s * (is_linear_dof(a.j.type, a.em.dof) ? 1.0 : kPi);
+         }
+         const double err = target - w.position(a.j, a.em.dof);
+         if (a.j.motor && a.motor.kd > 0) {
+           // hinges and universal joints: the damper implicit in the joint's own motor
+           w.drive_pd(a.j, a.em.dof, a.motor.kp * err, a.motor.kd);
+           return false;
+         }
+         // no damper (kd = 0: the spring alone, explicit; the motor row off),
+         // or a joint without a motor of its own (slider, piston, ball): the
+         // explicit torque from the angle and rate at the start of the step
+         if (a.j.motor) w.drive(a.j, a.em.dof, 0, 0);
+         w.joint_torque[a.em.joint][a.em.dof] += a.motor.kp * err - a.motor.kd * w.rate(a.j, a.em.dof);
+         return true;
+       },
+       strength},
+  };
+  const GainRow& row = rows[static_cast<std::size_t>(model)];
+  if (row.model != model) throw std::logic_error("the actuator table's rows are out of MotorModel's order");
+  return row;
+}
+
+bool needs_own_motor_row(MotorModel m) { return World::Impl::gain(m).own_motor_row; }
+
 void World::brake_effectors(const CreatureModel& m, const MotorDef& motor, double share) {
   auto& w = *impl_;
-  for (const EffectorModel& em : m.effectors) {
-    const double full = motor.model == MotorModel::Servo ? motor.max_force : motor.strength * em.cross_section;
-    w.drive(w.joints[em.joint], em.dof, 0, share * full);
-  }
+  const Impl::GainRow& gain = Impl::gain(motor.model);
+  for (const EffectorModel& em : m.effectors) w.drive(w.joints[em.joint], em.dof, 0, share * gain.full_force(motor, em));
 }
 
 void World::apply_effectors(const CreatureModel& m, const MotorDef& motor,
                             std::span<const double> signals) {
   auto& w = *impl_;
-  if (motor.model == MotorModel::PD && w.def.powered_stops != PoweredStops::Separate)
+  const Impl::GainRow& gain = Impl::gain(motor.model);
+  if (gain.own_motor_row && w.def.powered_stops != PoweredStops::Separate)
     throw std::invalid_argument(
         "World: PD motors need physics.powered_stops = \"separate\" (their damper is a joint motor "
         "row of its own, beside the stops; docs/physics.md cause 28)");
   bool torques = false;
-  auto drive = [&w](const Impl::Joint& j, int dof, double speed, double force) { w.drive(j, dof, speed, force); };
   // the motors' first-order lag: the share of the gap closed in one step
   const double lag = motor_lag_share(w.def.dt, motor.response_time);
   if (lag > 0 && w.motor_signal.size() != m.effectors.size()) w.motor_signal.assign(m.effectors.size(), 0);
   for (std::size_t e = 0; e < m.effectors.size(); ++e) {
     const EffectorModel& em = m.effectors[e];
-    const Impl::Joint& j = w.joints[em.joint];
     double s = signals[e];
     if (lag > 0) s = w.motor_signal[e] += lag * (s - w.motor_signal[e]);
-    switch (motor.model) {
-      case MotorModel::Servo:
-        drive(j, em.dof, motor.max_speed * s, motor.max_force);
-        break;
-      case MotorModel::Saturation:
-        drive(j, em.dof, s >= 0 ? motor.max_speed : -motor.max_speed,
-              std::abs(s) * motor.strength * em.cross_section);
-        break;
-      case MotorModel::Torque: {
-        double torque = s * motor.strength * em.cross_section;
-        double limit = is_linear_dof(j.type, em.dof) ? motor.torque_max_linear_speed
-                                                     : motor.torque_max_speed;
-        if (limit > 0) {
-          // the torque up to the no-load speed (as Saturation, with its own speed)
-          drive(j, em.dof, torque >= 0 ? limit : -limit, std::abs(torque));
-          break;
-        }
-        w.joint_torque[em.joint][em.dof] += torque;
-        torques = true;
-        break;
-      }
-      case MotorModel::PD: {
-        const JointModel& jm = m.joints[em.joint];
-        double target;
-        if (em.dof < static_cast<int>(jm.limits.size())) {
-          const Limit& l = jm.limits[em.dof];
-          target = 0.5 * (l.lo + l.hi) + 0.5 * s * (l.hi - l.lo);
-        } else {
-          target = s * (is_linear_dof(j.type, em.dof) ? 1.0 : kPi);
-        }
-        const double err = target - w.position(j, em.dof);
-        if (j.motor && motor.kd > 0) {
-          // hinges and universal joints: the damper implicit in the joint's own motor
-          w.drive_pd(j, em.dof, motor.kp * err, motor.kd);
-          break;
-        }
-        // no damper (kd = 0: the spring alone, explicit; the motor row off),
-        // or a joint without a motor of its own (slider, piston, ball): the
-        // explicit torque from the angle and rate at the start of the step
-        if (j.motor) drive(j, em.dof, 0, 0);
-        w.joint_torque[em.joint][em.dof] += motor.kp * err - motor.kd * w.rate(j, em.dof);
-        torques = true;
-        break;
-      }
-    }
+    torques |= gain.drive(w, {em, m.joints[em.joint], w.joints[em.joint], motor, s});
   }
   if (torques) w.apply_torques();
 }

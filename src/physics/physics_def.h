@@ -118,6 +118,12 @@ enum class MotorModel {
   PD,
 };
 
+/// Whether a motor model drives through each hinge's and universal joint's
+/// motor row of its own, beside the stops, and so needs
+/// PoweredStops::Separate (PD: its implicit damper; docs/physics.md cause 28).
+/// Its row of the actuator table says (src/physics/actuators.cpp).
+bool needs_own_motor_row(MotorModel m);
+
 /// The motors of every effector of a creature.
 struct MotorDef {
   MotorModel model = MotorModel::Servo;

@@ -109,6 +109,7 @@ class World {
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
+  friend bool needs_own_motor_row(MotorModel m);  // reads the actuator table
 };
 
 }  // namespace bx

@@ -174,6 +174,32 @@ struct World::Impl {
   // contact point, is unambiguous at edges and corners
   void mark_face(dGeomID g, const dReal* n, double sign);
 
+  // actuators.cpp: the actuator table, one row per motor model (MuJoCo's
+  // actuator_gaintype beside its biastype): how a signal drives an
+  // effector's degree of freedom, and the full force a brake takes its share
+  // of. A motor model is its row; nothing else switches on the model.
+  // (What an actuator pulls, MuJoCo's actuator_trntype, is a joint's degree
+  // of freedom for every row so far: EffectorModel's joint and dof.)
+  struct Actuation {
+    const EffectorModel& em;
+    const JointModel& jm;
+    const Joint& j;
+    const MotorDef& motor;
+    double s;  // the signal, after the motors' lag
+  };
+  struct GainRow {
+    MotorModel model;
+    /// It needs each hinge's and universal joint's motor row of its own
+    /// (PoweredStops::Separate).
+    bool own_motor_row;
+    /// Drives the effector's degree of freedom; true when it left a torque
+    /// in joint_torque, for apply_torques to add.
+    bool (*drive)(Impl&, const Actuation&);
+    /// Its full force (N m or N), of which a brake takes a share.
+    double (*full_force)(const MotorDef&, const EffectorModel&);
+  };
+  static const GainRow& gain(MotorModel m);
+
   // joints.cpp: builds joint k of the creature, its anchors and axes moved
   // by the placement, with its stops
   void add_joint(const CreatureModel& m, std::size_t k, const Pose& placement);

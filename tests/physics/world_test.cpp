@@ -473,6 +473,10 @@ TEST(World, PDMotorNeedsSeparatePoweredStops) {
   EXPECT_THROW(w.apply_effectors(m, motor, s), std::invalid_argument);
   motor.model = MotorModel::Servo;
   EXPECT_NO_THROW(w.apply_effectors(m, motor, s));
+  // the actuator table says so, for the config's check too: PD's row alone
+  EXPECT_TRUE(needs_own_motor_row(MotorModel::PD));
+  for (MotorModel other : {MotorModel::Servo, MotorModel::Saturation, MotorModel::Torque})
+    EXPECT_FALSE(needs_own_motor_row(other));
 }
 
 // The PD tests' limb: the driven pendulum's 0.5 m bar (0.02 m square) of
