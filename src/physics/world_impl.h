@@ -200,6 +200,14 @@ struct World::Impl {
   };
   static const GainRow& gain(MotorModel m);
 
+  // sensors.cpp: the sensor table, one row per kind of sensor: what it
+  // reads of the world, as the brain takes it.
+  struct SensorRow {
+    SensorType type;
+    double (*read)(const Impl&, const CreatureModel&, const SensorModel&);
+  };
+  static const SensorRow& sensor(SensorType type);
+
   // joints.cpp: builds joint k of the creature, its anchors and axes moved
   // by the placement, with its stops
   void add_joint(const CreatureModel& m, std::size_t k, const Pose& placement);
