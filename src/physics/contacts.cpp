@@ -85,9 +85,8 @@ void World::Impl::remember_contacts() {
 }
 
 void World::Impl::mark_face(dGeomID g, const dReal* n, double sign) {
-  auto data = reinterpret_cast<std::intptr_t>(dGeomGetData(g));
-  if (data <= 0) return;  // ground
-  int part = static_cast<int>(data - 1);
+  const int part = part_of(g);
+  if (part < 0) return;  // the ground
   dVector3 local;
   dBodyVectorFromWorld(bodies[part], sign * n[0], sign * n[1], sign * n[2], local);
   int axis = 0;

@@ -72,7 +72,7 @@ World::World(const PhysicsDef& given) : impl_(std::make_unique<Impl>()) {
   w.space = dSimpleSpaceCreate(nullptr);
   w.contact_group = dJointGroupCreate(0);
   dGeomID ground = dCreatePlane(w.space, 0, 0, 1, 0);
-  dGeomSetData(ground, nullptr);
+  dGeomSetData(ground, entity_data({WorldEntity::Kind::Ground, 0}));
   w.contact_buf.resize(std::max(def.max_contacts, 1));
 }
 
@@ -124,7 +124,7 @@ void World::add_creature(const CreatureModel& m, const Pose& placement) {
       to_ode(z_to_x(), off);
       dGeomSetOffsetRotation(g, off);
     }
-    dGeomSetData(g, reinterpret_cast<void*>(static_cast<std::intptr_t>(i + 1)));
+    dGeomSetData(g, entity_data({WorldEntity::Kind::Part, i}));
     w.bodies[i] = b;
     w.geoms[i] = g;
     w.masses[i] = part.mass;

@@ -29,6 +29,24 @@ struct WorldStats {
   double max_penetration = 0;     ///< m: the deepest contact, with the ground or between parts
 };
 
+/// What a geom of the world belongs to: the ground, or part `index` of the
+/// creature. (lessin2015's props and lights join these kinds.)
+struct WorldEntity {
+  enum class Kind { Ground, Part };
+  Kind kind = Kind::Ground;
+  int index = 0;
+  friend bool operator==(const WorldEntity&, const WorldEntity&) = default;
+};
+
+/// The nearest surface along a ray (World::ray).
+struct RayHit {
+  bool hit = false;
+  double distance = 0;  ///< m from the ray's origin
+  Vec3 point;           ///< where it struck (world frame)
+  Vec3 normal;          ///< the surface's outward normal there
+  WorldEntity entity;   ///< what it struck
+};
+
 /// A simulated world holding one creature. Not copyable; one per evaluation.
 class World {
  public:
@@ -102,6 +120,11 @@ class World {
   std::uint8_t contact_mask(int i) const;
   /// Whether part i touched another part of the creature in the last step.
   bool touches_part(int i) const;
+  /// The nearest surface of the ground or any part (the creature occludes
+  /// itself) along the ray from `origin` in direction `dir` (need not be
+  /// unit length) within `length` m; hit = false when nothing is that close.
+  RayHit ray(Vec3 origin, Vec3 dir, double length) const;
+
   /// Simulated time (s).
   double time() const;
   const PhysicsDef& def() const;

@@ -26,6 +26,16 @@ inline bool is_linear_dof(JointType t, int dof) {
   return t == JointType::Slider || (t == JointType::Cylindrical && dof == 0);
 }
 
+// what a geom belongs to, held in its data pointer: the entity's kind in
+// the low 4 bits, its index above them (the ground: 0, a null pointer)
+inline void* entity_data(WorldEntity e) {
+  return reinterpret_cast<void*>((static_cast<std::intptr_t>(e.index) << 4) | static_cast<std::intptr_t>(e.kind));
+}
+inline WorldEntity entity_of(dGeomID g) {
+  const auto data = reinterpret_cast<std::intptr_t>(dGeomGetData(g));
+  return {static_cast<WorldEntity::Kind>(data & 15), static_cast<int>(data >> 4)};
+}
+
 struct World::Impl {
   struct Joint {
     dJointID id = nullptr;
@@ -164,9 +174,10 @@ struct World::Impl {
   // after the step: the normal force each contact carried
   void remember_contacts();
 
-  // the part index of a creature geom (geom data holds index + 1; 0: ground)
+  // the part index of a creature geom, or -1 (the ground)
   static int part_of(dGeomID g) {
-    return static_cast<int>(reinterpret_cast<std::intptr_t>(dGeomGetData(g))) - 1;
+    const WorldEntity e = entity_of(g);
+    return e.kind == WorldEntity::Kind::Part ? e.index : -1;
   }
 
   // sets the contact bit of the face of part geom `g` whose outward normal is
