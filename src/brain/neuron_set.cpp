@@ -11,7 +11,7 @@
 namespace bx {
 namespace {
 
-// Dense ids, in table order: sims1994, then chaumont2007, then miconi2006.
+// Dense ids, in table order: sims1994, chaumont2007, miconi2006, lessin2015.
 // eval_neuron switches on these; all_neuron_fns() places each spec at its id.
 enum Fn : NeuronFnId {
   // sims1994
@@ -49,13 +49,29 @@ enum Fn : NeuronFnId {
   // miconi2006
   kMSigmoid,
   kMTanh,
+  // lessin2015
+  kLSinusoidal,
+  kLComplement,
+  kLConstant,
+  kLScale,
+  kLMultiply,
+  kLDivide,
+  kLSum,
+  kLDifference,
+  kLDerivative,
+  kLThreshold,
+  kLSwitch,
+  kLDelay,
+  kLAbsDifference,
+  kLSigma,
   kFnCount
 };
 
 constexpr double kSimsBound = 1e3;     // sims1994 outputs are clamped to +-this
 constexpr double kTiny = 1e-9;         // sims1994 divide and log: |x| below this counts as 0
 constexpr double kExptCap = 20;        // sims1994 expt: exp(min(a, 20))
-constexpr int kMemMax = 1000;          // chaumont2007 mem: longest delay (steps)
+constexpr int kMemMax = 1000;          // chaumont2007 mem, lessin2015 delay: longest delay (steps)
+constexpr int kSigmaMaxInputs = 256;   // lessin2015 sigma: most inputs (an encapsulated skill's switch)
 constexpr double kPi = std::numbers::pi;
 
 /// Parameter i, or its default when the neuron carries fewer parameters.
@@ -83,6 +99,20 @@ int mem_length(std::span<const double> params) {
 inline double sawtooth(double phi) {
   double u = phi / (2 * kPi) + 0.5;
   return 2 * (u - std::floor(u)) - 1;
+}
+
+/// A delay of n steps (chaumont2007 mem, lessin2015 delay): `state` is a ring
+/// buffer of the n past inputs, then the write index; stores `in` and returns
+/// the input of n steps ago (0 for the first n steps).
+double delay_line(int n, std::span<double> state, double in) {
+  assert(state.size() >= static_cast<std::size_t>(n) + 1);
+  double& write = state[static_cast<std::size_t>(n)];
+  auto k = static_cast<std::size_t>(write);
+  if (k >= static_cast<std::size_t>(n)) k = 0;
+  const double out = state[k];
+  state[k] = in;
+  write = static_cast<double>(k + 1 == static_cast<std::size_t>(n) ? 0 : k + 1);
+  return out;
 }
 
 int state_none(std::span<const double>) { return 0; }
@@ -140,6 +170,24 @@ std::vector<NeuronFnSpec> build_table() {
   add(kMSigmoid, S::Miconi2006, "sigmoid", M::WeightedSum, 3);
   add(kMTanh, S::Miconi2006, "tanh", M::WeightedSum, 3);
 
+  // lessin2015 III-C: the names the paper lists; definitions are ours
+  // (docs/neurons.md), every output in [0, 1]
+  add(kLSinusoidal, S::Lessin2015, "sinusoidal", M::Positional, 0, {{"freq", 1.0, 0.0, 10.0}, phase});
+  add(kLComplement, S::Lessin2015, "complement", M::Positional, 1);
+  add(kLConstant, S::Lessin2015, "constant", M::Positional, 0, {{"V", 0.5, 0.0, 1.0}});
+  add(kLScale, S::Lessin2015, "scale", M::Positional, 1, {{"k", 1.0, 0.0, 10.0}});
+  add(kLMultiply, S::Lessin2015, "multiply", M::Positional, 2);
+  add(kLDivide, S::Lessin2015, "divide", M::Positional, 2, {{"eps", 0.001, 1e-6, 1.0}});
+  add(kLSum, S::Lessin2015, "sum", M::Positional, 2);
+  add(kLDifference, S::Lessin2015, "difference", M::Positional, 2);
+  add(kLDerivative, S::Lessin2015, "derivative", M::Positional, 1, {{"gain", 1.0, 0.01, 100.0}}, state_two);
+  add(kLThreshold, S::Lessin2015, "threshold", M::Positional, 1, {{"T", 0.5, 0.0, 1.0}});
+  add(kLSwitch, S::Lessin2015, "switch", M::Positional, 3);
+  add(kLDelay, S::Lessin2015, "delay", M::Positional, 1, {{"n", 1.0, 1.0, double(kMemMax), true}}, state_mem);
+  add(kLAbsDifference, S::Lessin2015, "absolute-difference", M::Positional, 2);
+  // IV-B: the summation of zero or more inputs that switches an encapsulated skill
+  add(kLSigma, S::Lessin2015, "sigma", M::WeightedSum, kSigmaMaxInputs);
+
   // every id filled, arities within brain_step's buffer
   for (std::size_t i = 0; i < t.size(); ++i) {
     assert(t[i].id == i && !t[i].name.empty());
@@ -152,6 +200,7 @@ std::vector<NeuronFnSpec> build_table() {
 inline double sims_out(double x) { return finite_clamp(x, kSimsBound); }
 inline double chaumont_out(double x) { return finite_clamp(x, 1.0); }
 inline double miconi_out(double x) { return std::isfinite(x) ? x : 0.0; }
+inline double lessin_out(double x) { return std::isfinite(x) ? std::clamp(x, 0.0, 1.0) : 0.0; }
 
 }  // namespace
 
@@ -230,18 +279,7 @@ double eval_neuron(NeuronFnId fn, std::span<const double> args, std::span<const 
     // chaumont2007, Table I; outputs in [-1, 1]
     case kCSumT: return chaumont_out(a + b >= param(params, 0, 0.0) ? a + b : 0.0);
     case kCDiv: return chaumont_out(b <= param(params, 0, 0.001) ? 1.0 : a / b);
-    case kCMem: {
-      // ring buffer of n past inputs, then the write index: out = input of n steps ago
-      const int n = mem_length(params);
-      assert(state.size() >= static_cast<std::size_t>(n) + 1);
-      double& write = state[n];
-      auto k = static_cast<std::size_t>(write);
-      if (k >= static_cast<std::size_t>(n)) k = 0;
-      double out = state[k];
-      state[k] = chaumont_out(a);
-      write = static_cast<double>(k + 1 == static_cast<std::size_t>(n) ? 0 : k + 1);
-      return out;
-    }
+    case kCMem: return delay_line(mem_length(params), state, chaumont_out(a));
     case kCWav: return chaumont_out(b * std::sin(a * clock.t + c));
     case kCMul: return chaumont_out(a * b);
     case kCSum: return chaumont_out(a + b);
@@ -250,6 +288,31 @@ double eval_neuron(NeuronFnId fn, std::span<const double> args, std::span<const 
     // miconi2006: args[0] = weighted sum + theta
     case kMSigmoid: return miconi_out(1.0 / (1.0 + std::exp(-3.0 * a)));
     case kMTanh: return miconi_out(std::tanh(2.0 * a));
+
+    // lessin2015: every output in [0, 1] (III-C)
+    case kLSinusoidal:
+      return lessin_out(0.5 + 0.5 * std::sin(2 * kPi * param(params, 0, 1.0) * clock.t + param(params, 1, 0.0)));
+    case kLComplement: return lessin_out(1.0 - a);
+    case kLConstant: return lessin_out(param(params, 0, 0.5));
+    case kLScale: return lessin_out(param(params, 0, 1.0) * a);
+    case kLMultiply: return lessin_out(a * b);
+    case kLDivide: return lessin_out(a / std::max(b, param(params, 0, 0.001)));
+    case kLSum: return lessin_out(a + b);
+    case kLDifference: return lessin_out(a - b);
+    case kLDerivative: {
+      // 0.5 is no change; a rise of 1/gain per second reads 1, a fall as fast 0.
+      // state: [previous input, has-previous flag]
+      assert(state.size() >= 2);
+      double d = state[1] != 0 ? (a - state[0]) / clock.dt : 0.0;
+      state[0] = std::isfinite(a) ? a : 0.0;
+      state[1] = 1;
+      return lessin_out(0.5 + 0.5 * param(params, 0, 1.0) * d);
+    }
+    case kLThreshold: return lessin_out(a >= param(params, 0, 0.5) ? 1.0 : 0.0);
+    case kLSwitch: return lessin_out(c >= 0.5 ? b : a);
+    case kLDelay: return delay_line(mem_length(params), state, lessin_out(a));  // as chaumont2007's mem
+    case kLAbsDifference: return lessin_out(std::abs(a - b));
+    case kLSigma: return lessin_out(a);  // args[0] = weighted sum + bias
 
     case kFnCount: break;
   }
@@ -260,6 +323,7 @@ double eval_neuron(NeuronFnId fn, std::span<const double> args, std::span<const 
 double effector_signal(NeuronSetId set, double x) {
   if (!std::isfinite(x)) return 0.0;
   if (set == NeuronSetId::Miconi2006) return std::tanh(x);
+  if (set == NeuronSetId::Lessin2015) return std::clamp(x, 0.0, 1.0);
   return std::clamp(x, -1.0, 1.0);
 }
 

@@ -10,14 +10,14 @@
 
 namespace bx {
 
-/// The neuron sets Bestiary knows. Lessin2015's set and ESP's sigma/multiply
-/// nodes are a later addition (they join this enum and the table).
-enum class NeuronSetId { Sims1994, Chaumont2007, Miconi2006 };
+/// The neuron sets Bestiary knows. Lessin2015's nodes output [0, 1] (III-C),
+/// with the sigma node of encapsulation (IV-B).
+enum class NeuronSetId { Sims1994, Chaumont2007, Miconi2006, Lessin2015 };
 
 /// How a function consumes its inputs.
 enum class InputMode {
   Positional,   ///< inputs are a, b, c... in order (weight multiplies each); missing read 0
-  WeightedSum,  ///< one argument: sum of weighted inputs (McCulloch-Pitts)
+  WeightedSum,  ///< one argument: sum of weighted inputs (McCulloch-Pitts; lessin2015's sigma)
 };
 
 /// A named parameter with its default and legal range (inclusive).
@@ -70,9 +70,10 @@ struct NeuronClock {
 double eval_neuron(NeuronFnId fn, std::span<const double> args, std::span<const double> params,
                    std::span<double> state, NeuronClock clock);
 
-/// Effector signal in [-1,1] from the weighted input sum plus bias:
-/// tanh for Miconi2006 (MaxSpeed*tanh(sigma+theta), MaxSpeed applied by the
-/// motor), a clamp to [-1,1] for the other sets.
+/// Effector signal from the weighted input sum plus bias: tanh for
+/// Miconi2006 (MaxSpeed*tanh(sigma+theta), MaxSpeed applied by the motor), a
+/// clamp to [0, 1] for Lessin2015 (a muscle's activation: its set's range),
+/// a clamp to [-1,1] for the other sets.
 double effector_signal(NeuronSetId set, double weighted_sum_plus_bias);
 
 }  // namespace bx

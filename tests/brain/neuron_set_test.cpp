@@ -21,6 +21,7 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr NeuronSetId kSims = NeuronSetId::Sims1994;
 constexpr NeuronSetId kChau = NeuronSetId::Chaumont2007;
 constexpr NeuronSetId kMico = NeuronSetId::Miconi2006;
+constexpr NeuronSetId kLess = NeuronSetId::Lessin2015;
 
 // One neuron with its own parameters and state, called as a function.
 struct Neuron {
@@ -54,7 +55,7 @@ double chau(std::string_view name, std::vector<double> args, std::vector<double>
 
 TEST(NeuronTable, IdsAreDenseAndMatchIndex) {
   const auto& fns = all_neuron_fns();
-  ASSERT_EQ(fns.size(), 23u + 7u + 2u);
+  ASSERT_EQ(fns.size(), 23u + 7u + 2u + 14u);
   for (std::size_t i = 0; i < fns.size(); ++i) {
     EXPECT_EQ(fns[i].id, i);
     EXPECT_FALSE(fns[i].name.empty());
@@ -87,6 +88,23 @@ TEST(NeuronTable, NamesAndArityPerSet) {
   };
   check(kSims, sims_arity, InputMode::Positional);
   check(kChau, chau_arity, InputMode::Positional);
+  // lessin2015 III-C's thirteen node types, then IV-B's sigma
+  const std::map<std::string, int> less_arity = {
+      {"sinusoidal", 0}, {"complement", 1}, {"constant", 0}, {"scale", 1}, {"multiply", 2},
+      {"divide", 2},     {"sum", 2},        {"difference", 2}, {"derivative", 1}, {"threshold", 1},
+      {"switch", 3},     {"delay", 1},      {"absolute-difference", 2}};
+  auto less = neuron_fn_names(kLess);
+  EXPECT_EQ(less.size(), less_arity.size() + 1);
+  for (const auto& [name, arity] : less_arity) {
+    const NeuronFnSpec* f = find_neuron_fn(kLess, name);
+    ASSERT_NE(f, nullptr) << name;
+    EXPECT_EQ(f->mode, InputMode::Positional) << name;
+    EXPECT_EQ(f->max_inputs, arity) << name;
+  }
+  const NeuronFnSpec* sigma = find_neuron_fn(kLess, "sigma");
+  ASSERT_NE(sigma, nullptr);
+  EXPECT_EQ(sigma->mode, InputMode::WeightedSum);
+  EXPECT_GE(sigma->max_inputs, 64);  // it switches a whole skill
 
   auto mico = neuron_fn_names(kMico);
   EXPECT_EQ(mico, (std::vector<std::string_view>{"sigmoid", "tanh"}));
@@ -163,8 +181,10 @@ TEST(NeuronTable, StateSizes) {
   EXPECT_EQ(size(kSims, "differentiate", {}), 2);
   EXPECT_EQ(size(kSims, "smooth", {0.1}), 1);
   EXPECT_EQ(size(kSims, "memory", {}), 1);
+  EXPECT_EQ(size(kLess, "derivative", {}), 2);
+  EXPECT_EQ(size(kLess, "delay", {30}), 31);
   const std::set<std::string_view> stateful = {"integrate", "differentiate", "smooth", "memory",
-                                               "mem"};
+                                               "mem", "derivative", "delay"};
   for (const NeuronFnSpec& f : all_neuron_fns()) {
     std::vector<double> defaults;
     for (const ParamSpec& p : f.params) defaults.push_back(p.default_value);
@@ -473,6 +493,93 @@ TEST(EffectorSignal, TanhForMiconiClampOtherwise) {
     EXPECT_EQ(effector_signal(set, kInf), 0.0);
     EXPECT_EQ(effector_signal(set, -kInf), 0.0);
   }
+}
+
+// --- lessin2015 ------------------------------------------------------------
+
+double less(std::string_view name, std::vector<double> args, std::vector<double> params = {}) {
+  return Neuron(kLess, name, std::move(params))(std::move(args));
+}
+
+TEST(Lessin2015, ArithmeticHeldInZeroToOne) {
+  EXPECT_DOUBLE_EQ(less("complement", {0.3}), 0.7);
+  EXPECT_DOUBLE_EQ(less("complement", {1.4}), 0.0);  // held at 0
+  EXPECT_DOUBLE_EQ(less("constant", {}), 0.5);
+  EXPECT_DOUBLE_EQ(less("constant", {}, {0.2}), 0.2);
+  EXPECT_NEAR(less("scale", {0.2}, {3}), 0.6, 1e-15);
+  EXPECT_DOUBLE_EQ(less("scale", {0.5}, {3}), 1.0);
+  EXPECT_DOUBLE_EQ(less("multiply", {0.5, 0.4}), 0.2);
+  EXPECT_DOUBLE_EQ(less("divide", {0.2, 0.5}), 0.4);
+  EXPECT_DOUBLE_EQ(less("divide", {0.2, 0.0}), 1.0);      // by eps: held at 1
+  EXPECT_DOUBLE_EQ(less("divide", {0.0, 0.0}), 0.0);
+  EXPECT_DOUBLE_EQ(less("sum", {0.25, 0.5}), 0.75);
+  EXPECT_DOUBLE_EQ(less("sum", {0.75, 0.5}), 1.0);
+  EXPECT_DOUBLE_EQ(less("difference", {0.75, 0.5}), 0.25);
+  EXPECT_DOUBLE_EQ(less("difference", {0.5, 0.75}), 0.0);  // no negative outputs
+  EXPECT_DOUBLE_EQ(less("absolute-difference", {0.5, 0.75}), 0.25);
+  EXPECT_DOUBLE_EQ(less("threshold", {0.5}), 1.0);  // at T: on
+  EXPECT_DOUBLE_EQ(less("threshold", {0.49}), 0.0);
+  EXPECT_DOUBLE_EQ(less("threshold", {0.3}, {0.2}), 1.0);
+  EXPECT_DOUBLE_EQ(less("switch", {0.2, 0.9, 0.0}), 0.2);  // c < 0.5: a
+  EXPECT_DOUBLE_EQ(less("switch", {0.2, 0.9, 0.5}), 0.9);  // c >= 0.5: b
+  EXPECT_DOUBLE_EQ(less("sigma", {0.3}), 0.3);              // its weighted sum (+ bias)
+  EXPECT_DOUBLE_EQ(less("sigma", {-2.0}), 0.0);
+  EXPECT_DOUBLE_EQ(less("sigma", {}), 0.0);  // no inputs: off
+}
+
+TEST(Lessin2015, SinusoidalSwingsBetweenZeroAndOneAtItsFrequency) {
+  Neuron n(kLess, "sinusoidal", {2.0, 0.0});  // 2 Hz
+  EXPECT_NEAR(n({}, 0.0), 0.5, 1e-12);
+  EXPECT_NEAR(n({}, 0.125), 1.0, 1e-12);  // a quarter period
+  EXPECT_NEAR(n({}, 0.375), 0.0, 1e-12);
+  EXPECT_NEAR(n({}, 0.5), 0.5, 1e-12);
+  Neuron shifted(kLess, "sinusoidal", {2.0, kPi / 2});
+  EXPECT_NEAR(shifted({}, 0.0), 1.0, 1e-12);
+}
+
+TEST(Lessin2015, DerivativeReadsHalfForNoChange) {
+  Neuron n(kLess, "derivative", {2.0});  // gain 2 s
+  const double dt = 0.01;
+  EXPECT_DOUBLE_EQ(n({0.3}, 0, dt), 0.5);  // first step: no previous input
+  // a rise of 0.001 per step is 0.1/s: 0.5 + 0.5 x 2 x 0.1
+  EXPECT_NEAR(n({0.301}, dt, dt), 0.6, 1e-9);
+  EXPECT_NEAR(n({0.300}, 2 * dt, dt), 0.4, 1e-9);
+  EXPECT_DOUBLE_EQ(n({0.9}, 3 * dt, dt), 1.0);  // 60/s: held at 1
+  EXPECT_DOUBLE_EQ(n({0.9}, 4 * dt, dt), 0.5);
+}
+
+TEST(Lessin2015, DelayGivesTheInputOfNStepsAgo) {
+  Neuron n(kLess, "delay", {3});
+  std::vector<double> out;
+  for (double x : {0.1, 0.2, 0.3, 0.4, 0.5, 1.7}) out.push_back(n({x}));
+  EXPECT_EQ(out, (std::vector<double>{0, 0, 0, 0.1, 0.2, 0.3}));
+  EXPECT_DOUBLE_EQ(n({0}), 0.4);
+  EXPECT_DOUBLE_EQ(n({0}), 0.5);
+  EXPECT_DOUBLE_EQ(n({0}), 1.0);  // stored held at 1
+}
+
+TEST(Lessin2015, EveryOutputIsFiniteAndInZeroToOne) {
+  // III-C: "always in the range [0,1]", whatever reaches a node
+  const std::vector<double> values = {-1e300, -3, -0.5, 0, 1e-300, 0.25, 0.5, 1, 2.5, 1e300, kInf, -kInf, kNaN};
+  for (std::string_view name : neuron_fn_names(kLess)) {
+    Neuron n(kLess, name);
+    int k = 0;
+    for (double a : values)
+      for (double b : {0.0, 0.5, -2.0, kNaN})
+        for (double c : {0.0, 1.0}) {
+          const double y = n({a, b, c}, 0.01 * k, 0.01);
+          ++k;
+          EXPECT_TRUE(std::isfinite(y) && y >= 0 && y <= 1) << name << "(" << a << ", " << b << ", " << c << ") = " << y;
+        }
+  }
+}
+
+TEST(Lessin2015, AnEffectorsSignalIsAnActivationInZeroToOne) {
+  EXPECT_DOUBLE_EQ(effector_signal(kLess, 0.3), 0.3);
+  EXPECT_DOUBLE_EQ(effector_signal(kLess, -0.3), 0.0);
+  EXPECT_DOUBLE_EQ(effector_signal(kLess, 4), 1.0);
+  EXPECT_DOUBLE_EQ(effector_signal(kLess, kNaN), 0.0);
+  EXPECT_DOUBLE_EQ(effector_signal(kChau, -0.3), -0.3);  // the other sets keep [-1, 1]
 }
 
 }  // namespace
