@@ -38,6 +38,12 @@ struct JointModel {
   Vec3 axis1{0, 0, 1};
   Vec3 axis2{0, 1, 0};
   std::vector<Limit> limits;  ///< per degree of freedom; empty: unlimited
+  /// Its two parts collide with each other, so their shapes limit how far it
+  /// turns (lessin2015 III-B: limits "through natural collisions between
+  /// adjacent segments"); false, as in the other dialects: joined parts pass
+  /// through each other. Whatever PhysicsDef::self_collision says, which is
+  /// for parts not joined.
+  bool parts_collide = false;
 };
 
 /// A sensor of the developed creature; its reading goes to brain slot

@@ -14,10 +14,17 @@ namespace bx {
 void World::Impl::collide(dGeomID a, dGeomID b) {
   dBodyID ba = dGeomGetBody(a), bb = dGeomGetBody(b);
   if (ba && bb) {
-    // parts joined by a joint never collide; others only with self_collision,
-    // unless one of them was set free
+    // parts joined by a joint collide only when it says so
+    // (JointModel::parts_collide); others only with self_collision, unless
+    // one of them was set free
     bool freed = free_part[part_of(a)] || free_part[part_of(b)];
-    if ((!def.self_collision && !freed) || dAreConnectedExcluding(ba, bb, dJointTypeContact)) return;
+    if (colliding_joints.empty()) {
+      if ((!def.self_collision && !freed) || dAreConnectedExcluding(ba, bb, dJointTypeContact)) return;
+    } else if (dAreConnectedExcluding(ba, bb, dJointTypeContact)) {
+      if (!joined_parts_collide(part_of(a), part_of(b))) return;
+    } else if (!def.self_collision && !freed) {
+      return;
+    }
   }
   int n = dCollide(a, b, def.max_contacts, &contact_buf[0].geom, sizeof(dContact));
   if (n > 0 && ba && bb) touching[part_of(a)] = touching[part_of(b)] = 1;

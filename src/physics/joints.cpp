@@ -36,6 +36,7 @@ void World::Impl::add_joint(const CreatureModel& m, std::size_t k, const Pose& p
   j.type = jm.type;
   j.parent = jm.parent;
   j.child = jm.child;
+  if (jm.parts_collide) colliding_joints.push_back(static_cast<int>(k));
   Vec3 an = placement.apply(jm.anchor);
   Vec3 a1 = placement.R * jm.axis1, a2 = placement.R * jm.axis2;
   dBodyID b1 = bodies[jm.parent], b2 = bodies[jm.child];

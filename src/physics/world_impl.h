@@ -67,6 +67,8 @@ struct World::Impl {
   std::vector<std::uint8_t> contact_mask;
   std::vector<std::uint8_t> touching;  // per part: touched another part this step
   std::vector<bool> free_part;  // freed by a broken joint: collides with every part
+  // the joints whose two parts collide (JointModel::parts_collide)
+  std::vector<int> colliding_joints;
   std::vector<Vec3> prev_pos;
   std::vector<std::array<double, 3>> joint_torque;  // Torque/PD accumulation per joint
   std::vector<double> motor_signal;  // each effector's signal after the motor's lag
@@ -173,6 +175,15 @@ struct World::Impl {
 
   // after the step: the normal force each contact carried
   void remember_contacts();
+
+  // whether a joint between parts p and q (not broken) lets them collide
+  bool joined_parts_collide(int p, int q) const {
+    for (int k : colliding_joints) {
+      const Joint& j = joints[static_cast<std::size_t>(k)];
+      if (!j.broken && ((j.parent == p && j.child == q) || (j.parent == q && j.child == p))) return true;
+    }
+    return false;
+  }
 
   // the part index of a creature geom, or -1 (the ground)
   static int part_of(dGeomID g) {
