@@ -54,6 +54,10 @@ struct SensorModel {
   JointIndex joint = -1;  ///< JointAngle: the part's joint to its parent
   int dof = 0;
   Face face = Face::NegZ; ///< Contact: face in the part's (proper) local frame
+  /// Photoreceptor: its orientation in the part's frame (need not be unit
+  /// length); it sits where that direction from the part's centre meets the
+  /// part's surface (lessin2015 III-D)
+  Vec3 direction{1, 0, 0};
 };
 
 /// An effector: brain effector i drives degree of freedom `dof` of `joint`.

@@ -74,6 +74,7 @@ std::string_view to_string(SensorType t) {
   switch (t) {
     case SensorType::JointAngle: return "joint_angle";
     case SensorType::Contact: return "contact";
+    case SensorType::Photoreceptor: return "photoreceptor";
   }
   return "?";
 }

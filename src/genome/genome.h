@@ -92,7 +92,13 @@ struct NeuronGene {
 };
 
 /// Kinds of sensor a part can carry.
-enum class SensorType { JointAngle, Contact };
+enum class SensorType {
+  JointAngle,
+  Contact,
+  /// lessin2015 III-D: the light it sees along its direction (physics layer
+  /// only so far: no dialect's genome carries one yet)
+  Photoreceptor,
+};
 
 /// A sensor of a part: joint angle of one degree of freedom of the part's
 /// joint to its parent (scaled to [-1,1]), or contact on one face (+1/-1).

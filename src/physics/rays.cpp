@@ -27,15 +27,16 @@ void ray_callback(void* data, dGeomID ray, dGeomID g) {
 
 }  // namespace
 
-RayHit World::ray(Vec3 origin, Vec3 dir, double length) const {
-  const auto& w = *impl_;
+RayHit World::ray(Vec3 origin, Vec3 dir, double length) const { return impl_->cast(origin, dir, length); }
+
+RayHit World::Impl::cast(Vec3 origin, Vec3 dir, double length) const {
   const double n = norm(dir);
   if (!(n > 0) || !(length > 0)) return {};
   dGeomID ray = dCreateRay(nullptr, length);
   dGeomRaySet(ray, origin.x, origin.y, origin.z, dir.x / n, dir.y / n, dir.z / n);
   dGeomRaySetClosestHit(ray, 1);
   RayQuery q;
-  dSpaceCollide2(ray, reinterpret_cast<dGeomID>(w.space), &q, &ray_callback);
+  dSpaceCollide2(ray, reinterpret_cast<dGeomID>(space), &q, &ray_callback);
   dGeomDestroy(ray);
   return q.nearest;
 }

@@ -1,18 +1,28 @@
 // The world's sensors, a table of kinds (World::Impl::sensor): a joint's
-// angle (scaled to its range) or a face's contact, as the brain reads them.
+// angle (scaled to its range), a face's contact or a photoreceptor's light,
+// as the brain reads them.
+#include <ode/ode.h>
+
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "physics/world_impl.h"
 
 namespace bx {
 
+namespace {
+// a photoreceptor looks for bodies in the way from this far off its part's surface (m)
+constexpr double kReceptorLift = 1e-4;
+}  // namespace
+
 const World::Impl::SensorRow& World::Impl::sensor(SensorType type) {
   static const SensorRow rows[] = {
       // the angle (or length) of one degree of freedom of the part's joint to
       // its parent, scaled from its stops to [-1, 1] (without stops: angle / pi)
       {SensorType::JointAngle,
-       [](const Impl& w, const CreatureModel& m, const SensorModel& s) {
+       [](const Impl& w, const CreatureModel& m, std::size_t i) {
+         const SensorModel& s = m.sensors[i];
          if (s.joint < 0) return 0.0;  // the root has no joint to its parent
          const JointModel& jm = m.joints[s.joint];
          double x = w.position(w.joints[s.joint], s.dof);
@@ -27,8 +37,33 @@ const World::Impl::SensorRow& World::Impl::sensor(SensorType type) {
        }},
       // whether one face of the part touched something in the last step: +1, else -1
       {SensorType::Contact,
-       [](const Impl& w, const CreatureModel&, const SensorModel& s) {
+       [](const Impl& w, const CreatureModel& m, std::size_t i) {
+         const SensorModel& s = m.sensors[i];
          return (w.contact_mask[s.part] >> static_cast<int>(s.face)) & 1 ? 1.0 : -1.0;
+       }},
+      // the lights it sees (Light): each strength / (1 + (d / range)^2) times the
+      // cosine of its angle off the receptor's direction, unless behind it or
+      // hidden by any body (the creature's own parts too); in [0, 1]
+      {SensorType::Photoreceptor,
+       [](const Impl& w, const CreatureModel& m, std::size_t i) {
+         const SensorModel& s = m.sensors[i];
+         const Vec3 at = w.world_point(s.part, w.receptor_points[i]);
+         dVector3 u;
+         dBodyVectorToWorld(w.bodies[s.part], s.direction.x, s.direction.y, s.direction.z, u);
+         const Vec3 facing = (1.0 / norm(vec(u))) * vec(u);
+         double sum = 0;
+         for (const Light& l : w.lights) {
+           const Vec3 to = l.position - at;
+           const double d = norm(to);
+           if (!(d > 0)) continue;
+           const double cos = dot(to, facing) / d;
+           if (cos <= 0) continue;  // behind it
+           // a body in the way: a ray from just off the surface to the light
+           const Vec3 from = at + kReceptorLift * facing;
+           if (w.cast(from, l.position - from, norm(l.position - from)).hit) continue;
+           sum += l.strength * cos / (1 + (d / l.range) * (d / l.range));
+         }
+         return std::clamp(sum, 0.0, 1.0);
        }},
   };
   const SensorRow& row = rows[static_cast<std::size_t>(type)];
@@ -36,12 +71,35 @@ const World::Impl::SensorRow& World::Impl::sensor(SensorType type) {
   return row;
 }
 
-void World::read_sensors(const CreatureModel& m, std::span<double> out) const {
-  const auto& w = *impl_;
+void World::Impl::place_receptors(const CreatureModel& m) {
+  receptor_points.assign(m.sensors.size(), Vec3{});
   for (std::size_t i = 0; i < m.sensors.size(); ++i) {
     const SensorModel& s = m.sensors[i];
-    out[i] = Impl::sensor(s.type).read(w, m, s);
+    if (s.type != SensorType::Photoreceptor) continue;
+    // where the direction from the centre leaves the part: a ray from outside
+    // its bounds back towards the centre, against its own geom alone
+    const Vec3 centre = vec(dBodyGetPosition(bodies[s.part]));
+    dVector3 u;
+    dBodyVectorToWorld(bodies[s.part], s.direction.x, s.direction.y, s.direction.z, u);
+    const Vec3 dir = (1.0 / norm(vec(u))) * vec(u);
+    const Vec3& size = m.parts[s.part].size;
+    const double far = 2 * norm(size) + 1;
+    dGeomID ray = dCreateRay(nullptr, far);
+    dGeomRaySet(ray, centre.x + far * dir.x, centre.y + far * dir.y, centre.z + far * dir.z, -dir.x, -dir.y, -dir.z);
+    dGeomRaySetClosestHit(ray, 1);
+    dContactGeom c;
+    const Vec3 surface = dCollide(ray, geoms[s.part], 1, &c, sizeof(dContactGeom)) == 1 ? vec(c.pos) : centre;
+    dGeomDestroy(ray);
+    receptor_points[i] = local_point(s.part, surface);
   }
 }
+
+void World::read_sensors(const CreatureModel& m, std::span<double> out) const {
+  const auto& w = *impl_;
+  for (std::size_t i = 0; i < m.sensors.size(); ++i) out[i] = Impl::sensor(m.sensors[i].type).read(w, m, i);
+}
+
+void World::set_lights(std::vector<Light> lights) { impl_->lights = std::move(lights); }
+const std::vector<Light>& World::lights() const { return impl_->lights; }
 
 }  // namespace bx

@@ -137,6 +137,7 @@ void World::add_creature(const CreatureModel& m, const Pose& placement) {
   w.positions.assign(m.joints.size(), {0, 0, 0});
   w.positions_read.assign(m.joints.size(), 0);
   for (std::size_t k = 0; k < m.joints.size(); ++k) w.add_joint(m, k, placement);
+  w.place_receptors(m);
 }
 
 void World::fix_part_to_world(int i) {

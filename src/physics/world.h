@@ -47,6 +47,17 @@ struct RayHit {
   WorldEntity entity;   ///< what it struck
 };
 
+/// A point light (lessin2015 III-D). A photoreceptor facing it from d metres
+/// reads strength / (1 + (d / range)^2), times the cosine of the angle
+/// between its direction and the light's, 0 behind it or when any body is in
+/// the way; several lights add, and the reading is held to [0, 1].
+struct Light {
+  Vec3 position;
+  double strength = 1;
+  double range = 1;  ///< m: where its reading has halved
+  friend bool operator==(const Light&, const Light&) = default;
+};
+
 /// A simulated world holding one creature. Not copyable; one per evaluation.
 class World {
  public:
@@ -124,6 +135,10 @@ class World {
   /// itself) along the ray from `origin` in direction `dir` (need not be
   /// unit length) within `length` m; hit = false when nothing is that close.
   RayHit ray(Vec3 origin, Vec3 dir, double length) const;
+
+  /// The lights photoreceptors see from now on (a task may move them each step).
+  void set_lights(std::vector<Light> lights);
+  const std::vector<Light>& lights() const;
 
   /// Simulated time (s).
   double time() const;

@@ -67,6 +67,9 @@ struct World::Impl {
   std::vector<std::uint8_t> contact_mask;
   std::vector<std::uint8_t> touching;  // per part: touched another part this step
   std::vector<bool> free_part;  // freed by a broken joint: collides with every part
+  std::vector<Light> lights;
+  // per sensor: a photoreceptor's place on its part's surface (part frame)
+  std::vector<Vec3> receptor_points;
   // the joints whose two parts collide (JointModel::parts_collide)
   std::vector<int> colliding_joints;
   std::vector<Vec3> prev_pos;
@@ -226,9 +229,16 @@ struct World::Impl {
   // reads of the world, as the brain takes it.
   struct SensorRow {
     SensorType type;
-    double (*read)(const Impl&, const CreatureModel&, const SensorModel&);
+    /// The reading of sensor i of the creature.
+    double (*read)(const Impl&, const CreatureModel&, std::size_t i);
   };
   static const SensorRow& sensor(SensorType type);
+  // where each photoreceptor sits on its part (receptor_points), from the
+  // parts' shapes as built
+  void place_receptors(const CreatureModel& m);
+
+  // rays.cpp: the nearest surface along a ray (World::ray)
+  RayHit cast(Vec3 origin, Vec3 dir, double length) const;
 
   // joints.cpp: builds joint k of the creature, its anchors and axes moved
   // by the placement, with its stops
