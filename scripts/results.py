@@ -221,6 +221,18 @@ def half_height(pose, size):
     return sum(abs(r) * h / 2 for r, h in zip(row, size))
 
 
+def throw_of(replay):
+    """The projectile's part and the release's time (None: never released),
+    from the replay's scene record (its "projectile" part and "release"
+    marker; files before the record held them as replay["throw"])."""
+    if "throw" in replay:
+        return replay["throw"]["projectile"], replay["throw"]["release_t"]
+    record = replay["scene"]["record"]
+    p = next(q["part"] for q in record["parts"] if q["name"] == "projectile")
+    rel = next((m["t"] for m in record.get("markers", []) if m["name"] == "release"), None)
+    return p, rel
+
+
 def throw_profile(replay):
     """How a catapult threw, from its replay (the first trial): the release's
     height and the projectile's top speed after it; the flight (release to the
@@ -230,8 +242,8 @@ def throw_profile(replay):
     means something hit it on the ground: a drop-kick, chaumont2007 4.3); the
     body's height at the start (its parts' highest corner) and its mass over
     the projectile's."""
-    parts, frames, t = replay["parts"], replay["frames"], replay["throw"]
-    p, rel = t["projectile"], t["release_t"]
+    parts, frames = replay["parts"], replay["frames"]
+    p, rel = throw_of(replay)
     size = parts[p]["size"]
     top = max(f[2] + half_height(f, parts[i]["size"])
               for i, f in enumerate(frames[0]["poses"]) if i != p)
