@@ -60,10 +60,22 @@ struct SensorModel {
   Vec3 direction{1, 0, 0};
 };
 
-/// An effector: brain effector i drives degree of freedom `dof` of `joint`.
+/// A muscle (lessin2015 III-E): a spring between a point on each of two
+/// parts whose stiffness its activation sets: `strength` at full
+/// activation, none when silent; at `rest_length` it pulls and pushes nothing.
+struct MuscleModel {
+  PartIndex part_a = 0, part_b = 0;
+  Vec3 anchor_a, anchor_b;  ///< its two ends, in the creature's frame at the initial pose (m)
+  double strength = 0;      ///< N/m: its stiffness at full activation
+  double rest_length = 0;   ///< m
+};
+
+/// An effector: brain effector i drives degree of freedom `dof` of `joint`,
+/// or, under MotorModel::Muscle, activates muscle `muscle`.
 struct EffectorModel {
   JointIndex joint = 0;
   int dof = 0;
+  int muscle = -1;  ///< MotorModel::Muscle: an index into CreatureModel::muscles
   /// sims1994 torque mode: strength scales with the cross-section (area) of
   /// the larger of the two parts, perpendicular to the part's x axis.
   double cross_section = 1;
@@ -76,6 +88,7 @@ struct CreatureModel {
   std::vector<JointModel> joints;  ///< joints[i] attaches some part to its parent
   std::vector<SensorModel> sensors;
   std::vector<EffectorModel> effectors;
+  std::vector<MuscleModel> muscles;
   BrainModel brain;
   /// A catapult's projectile (chaumont2007 4.1) and the fixed joint that
   /// holds it to the arm until the release effector fires; -1 otherwise.

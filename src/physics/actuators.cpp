@@ -3,6 +3,7 @@
 // the motors' lag; a brake holds them.
 #include <ode/ode.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -59,67 +60,96 @@ void World::Impl::apply_torques() {
   }
 }
 
+void World::Impl::set_muscle(std::size_t k, double kp, double kd) {
+  dJointID mj = muscles[k];
+  const double h = def.dt, both = h * kp + kd;
+  if (!(both > 0)) {
+    dJointDisable(mj);  // neither spring nor damper: slack
+    return;
+  }
+  // ODE's soft constraint as a spring and damper at step h (its manual):
+  // ERP = h kp / (h kp + kd), CFM = 1 / (h kp + kd)
+  dJointEnable(mj);
+  dJointSetDBallParam(mj, dParamERP, h * kp / both);
+  dJointSetDBallParam(mj, dParamCFM, 1 / both);
+}
+
 const World::Impl::GainRow& World::Impl::gain(MotorModel model) {
-  // a Servo's full force is its cap; the others' strength x cross-section
-  static constexpr auto cap = [](const MotorDef& motor, const EffectorModel&) { return motor.max_force; };
-  static constexpr auto strength = [](const MotorDef& motor, const EffectorModel& em) {
-    return motor.strength * em.cross_section;
+  // the joint rows brake a degree of freedom at speed 0 with a share of their
+  // full force: a Servo's cap, the others' strength x cross-section
+  static constexpr auto brake_strength = [](Impl& w, const Actuation& a) {
+    w.drive(w.joints[a.em.joint], a.em.dof, 0, a.s * (a.motor.strength * a.em.cross_section));
   };
   static const GainRow rows[] = {
       // miconi2006: target velocity max_speed s, force capped at max_force
       {MotorModel::Servo, false,
        [](Impl& w, const Actuation& a) {
-         w.drive(a.j, a.em.dof, a.motor.max_speed * a.s, a.motor.max_force);
+         w.drive(w.joints[a.em.joint], a.em.dof, a.motor.max_speed * a.s, a.motor.max_force);
          return false;
        },
-       cap},
+       [](Impl& w, const Actuation& a) { w.drive(w.joints[a.em.joint], a.em.dof, 0, a.s * a.motor.max_force); }},
       // chaumont2007 5.3: target velocity sign(s) max_speed, force cap |s| strength x cross-section
       {MotorModel::Saturation, false,
        [](Impl& w, const Actuation& a) {
-         w.drive(a.j, a.em.dof, a.s >= 0 ? a.motor.max_speed : -a.motor.max_speed,
+         w.drive(w.joints[a.em.joint], a.em.dof, a.s >= 0 ? a.motor.max_speed : -a.motor.max_speed,
                  std::abs(a.s) * a.motor.strength * a.em.cross_section);
          return false;
        },
-       strength},
+       brake_strength},
       // sims1994: the torque s strength x cross-section, up to the no-load speed if it has one
       {MotorModel::Torque, false,
        [](Impl& w, const Actuation& a) {
+         const Joint& j = w.joints[a.em.joint];
          double torque = a.s * a.motor.strength * a.em.cross_section;
-         double limit = is_linear_dof(a.j.type, a.em.dof) ? a.motor.torque_max_linear_speed
-                                                          : a.motor.torque_max_speed;
+         double limit = is_linear_dof(j.type, a.em.dof) ? a.motor.torque_max_linear_speed
+                                                        : a.motor.torque_max_speed;
          if (limit > 0) {
            // the torque up to the no-load speed (as Saturation, with its own speed)
-           w.drive(a.j, a.em.dof, torque >= 0 ? limit : -limit, std::abs(torque));
+           w.drive(j, a.em.dof, torque >= 0 ? limit : -limit, std::abs(torque));
            return false;
          }
          w.joint_torque[a.em.joint][a.em.dof] += torque;
          return true;
        },
-       strength},
+       brake_strength},
       // rivercrossing: T = kp (theta_d - theta) - kd theta', theta_d from s within the joint's range
       {MotorModel::PD, true,
        [](Impl& w, const Actuation& a) {
+         const Joint& j = w.joints[a.em.joint];
+         const JointModel& jm = a.m.joints[a.em.joint];
          double target;
-         if (a.em.dof < static_cast<int>(a.jm.limits.size())) {
-           const Limit& l = a.jm.limits[a.em.dof];
+         if (a.em.dof < static_cast<int>(jm.limits.size())) {
+           const Limit& l = jm.limits[a.em.dof];
            target = 0.5 * (l.lo + l.hi) + 0.5 * a.s * (l.hi - l.lo);
          } else {
-           target = a.s * (is_linear_dof(a.j.type, a.em.dof) ? 1.0 : kPi);
+           target = a.s * (is_linear_dof(j.type, a.em.dof) ? 1.0 : kPi);
          }
-         const double err = target - w.position(a.j, a.em.dof);
-         if (a.j.motor && a.motor.kd > 0) {
+         const double err = target - w.position(j, a.em.dof);
+         if (j.motor && a.motor.kd > 0) {
            // hinges and universal joints: the damper implicit in the joint's own motor
-           w.drive_pd(a.j, a.em.dof, a.motor.kp * err, a.motor.kd);
+           w.drive_pd(j, a.em.dof, a.motor.kp * err, a.motor.kd);
            return false;
          }
          // no damper (kd = 0: the spring alone, explicit; the motor row off),
          // or a joint without a motor of its own (slider, piston, ball): the
          // explicit torque from the angle and rate at the start of the step
-         if (a.j.motor) w.drive(a.j, a.em.dof, 0, 0);
-         w.joint_torque[a.em.joint][a.em.dof] += a.motor.kp * err - a.motor.kd * w.rate(a.j, a.em.dof);
+         if (j.motor) w.drive(j, a.em.dof, 0, 0);
+         w.joint_torque[a.em.joint][a.em.dof] += a.motor.kp * err - a.motor.kd * w.rate(j, a.em.dof);
          return true;
        },
-       strength},
+       brake_strength},
+      // lessin2015 III-E: the muscle's stiffness is its activation (held to [0, 1]) times its strength
+      {MotorModel::Muscle, false,
+       [](Impl& w, const Actuation& a) {
+         const auto k = static_cast<std::size_t>(a.em.muscle);
+         w.set_muscle(k, std::clamp(a.s, 0.0, 1.0) * a.m.muscles[k].strength, a.motor.muscle_damping);
+         return false;
+       },
+       // held: a share of its full stiffness
+       [](Impl& w, const Actuation& a) {
+         const auto k = static_cast<std::size_t>(a.em.muscle);
+         w.set_muscle(k, a.s * a.m.muscles[k].strength, a.motor.muscle_damping);
+       }},
   };
   const GainRow& row = rows[static_cast<std::size_t>(model)];
   if (row.model != model) throw std::logic_error("the actuator table's rows are out of MotorModel's order");
@@ -131,7 +161,7 @@ bool needs_own_motor_row(MotorModel m) { return World::Impl::gain(m).own_motor_r
 void World::brake_effectors(const CreatureModel& m, const MotorDef& motor, double share) {
   auto& w = *impl_;
   const Impl::GainRow& gain = Impl::gain(motor.model);
-  for (const EffectorModel& em : m.effectors) w.drive(w.joints[em.joint], em.dof, 0, share * gain.full_force(motor, em));
+  for (const EffectorModel& em : m.effectors) gain.brake(w, {m, em, motor, share});
 }
 
 void World::apply_effectors(const CreatureModel& m, const MotorDef& motor,
@@ -150,7 +180,7 @@ void World::apply_effectors(const CreatureModel& m, const MotorDef& motor,
     const EffectorModel& em = m.effectors[e];
     double s = signals[e];
     if (lag > 0) s = w.motor_signal[e] += lag * (s - w.motor_signal[e]);
-    torques |= gain.drive(w, {em, m.joints[em.joint], w.joints[em.joint], motor, s});
+    torques |= gain.drive(w, {m, em, motor, s});
   }
   if (torques) w.apply_torques();
 }

@@ -116,6 +116,12 @@ enum class MotorModel {
   /// row of CFM 1/kd: stable for any limb inertia), so it needs
   /// PoweredStops::Separate (World::apply_effectors; docs/physics.md cause 28)
   PD,
+  /// lessin2015 III-E: each effector activates a muscle (EffectorModel::
+  /// muscle): its stiffness is the signal, held to [0, 1], times its strength,
+  /// with the damper muscle_damping. Integrated implicitly as ODE's soft
+  /// distance constraint (a DBall joint whose ERP and CFM are the spring and
+  /// damper at the step), stable at any stiffness.
+  Muscle,
 };
 
 /// Whether a motor model drives through each hinge's and universal joint's
@@ -156,6 +162,7 @@ struct MotorDef {
   double off_brake = 0;
   double kp = 0.25;       ///< PD gain
   double kd = 0.175;      ///< PD damping
+  double muscle_damping = 0;  ///< Muscle: N s/m along its line, whatever its activation
   friend bool operator==(const MotorDef&, const MotorDef&) = default;
 };
 

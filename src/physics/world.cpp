@@ -137,6 +137,19 @@ void World::add_creature(const CreatureModel& m, const Pose& placement) {
   w.positions.assign(m.joints.size(), {0, 0, 0});
   w.positions_read.assign(m.joints.size(), 0);
   for (std::size_t k = 0; k < m.joints.size(); ++k) w.add_joint(m, k, placement);
+  // muscles: soft distance constraints between their anchors, slack until
+  // an effector activates them (MotorModel::Muscle)
+  w.muscles.clear();
+  for (const MuscleModel& mm : m.muscles) {
+    dJointID mj = dJointCreateDBall(w.world, nullptr);
+    dJointAttach(mj, w.bodies[mm.part_a], w.bodies[mm.part_b]);
+    const Vec3 a = placement.apply(mm.anchor_a), b = placement.apply(mm.anchor_b);
+    dJointSetDBallAnchor1(mj, a.x, a.y, a.z);
+    dJointSetDBallAnchor2(mj, b.x, b.y, b.z);
+    dJointSetDBallDistance(mj, mm.rest_length);
+    dJointDisable(mj);
+    w.muscles.push_back(mj);
+  }
   w.place_receptors(m);
 }
 

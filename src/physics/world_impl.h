@@ -206,9 +206,8 @@ struct World::Impl {
   // (What an actuator pulls, MuJoCo's actuator_trntype, is a joint's degree
   // of freedom for every row so far: EffectorModel's joint and dof.)
   struct Actuation {
+    const CreatureModel& m;
     const EffectorModel& em;
-    const JointModel& jm;
-    const Joint& j;
     const MotorDef& motor;
     double s;  // the signal, after the motors' lag
   };
@@ -217,12 +216,18 @@ struct World::Impl {
     /// It needs each hinge's and universal joint's motor row of its own
     /// (PoweredStops::Separate).
     bool own_motor_row;
-    /// Drives the effector's degree of freedom; true when it left a torque
-    /// in joint_torque, for apply_torques to add.
+    /// Drives what the effector pulls (a joint's degree of freedom, a
+    /// muscle); true when it left a torque in joint_torque, for
+    /// apply_torques to add.
     bool (*drive)(Impl&, const Actuation&);
-    /// Its full force (N m or N), of which a brake takes a share.
-    double (*full_force)(const MotorDef&, const EffectorModel&);
+    /// Holds it with `share` of its full force, whatever the signal
+    /// (World::brake_effectors): the Actuation's signal is the share.
+    void (*brake)(Impl&, const Actuation&);
   };
+  // each muscle's soft distance constraint (MotorModel::Muscle), by CreatureModel::muscles
+  std::vector<dJointID> muscles;
+  // sets muscle k's spring (N/m) and damper (N s/m) for the coming step
+  void set_muscle(std::size_t k, double kp, double kd);
   static const GainRow& gain(MotorModel m);
 
   // sensors.cpp: the sensor table, one row per kind of sensor: what it
