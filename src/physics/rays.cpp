@@ -32,9 +32,7 @@ RayHit World::ray(Vec3 origin, Vec3 dir, double length) const { return impl_->ca
 RayHit World::Impl::cast(Vec3 origin, Vec3 dir, double length) const {
   const double n = norm(dir);
   if (!(n > 0) || !(length > 0)) return {};
-  dGeomID ray = dCreateRay(nullptr, length);
-  dGeomRaySet(ray, origin.x, origin.y, origin.z, dir.x / n, dir.y / n, dir.z / n);
-  dGeomRaySetClosestHit(ray, 1);
+  dGeomID ray = make_ray(origin, (1.0 / n) * dir, length);
   RayQuery q;
   dSpaceCollide2(ray, reinterpret_cast<dGeomID>(space), &q, &ray_callback);
   dGeomDestroy(ray);

@@ -48,9 +48,7 @@ const World::Impl::SensorRow& World::Impl::sensor(SensorType type) {
        [](const Impl& w, const CreatureModel& m, std::size_t i) {
          const SensorModel& s = m.sensors[i];
          const Vec3 at = w.world_point(s.part, w.receptor_points[i]);
-         dVector3 u;
-         dBodyVectorToWorld(w.bodies[s.part], s.direction.x, s.direction.y, s.direction.z, u);
-         const Vec3 facing = (1.0 / norm(vec(u))) * vec(u);
+         const Vec3 facing = w.world_direction(s.part, s.direction);
          double sum = 0;
          for (const Light& l : w.lights) {
            const Vec3 to = l.position - at;
@@ -59,8 +57,8 @@ const World::Impl::SensorRow& World::Impl::sensor(SensorType type) {
            const double cos = dot(to, facing) / d;
            if (cos <= 0) continue;  // behind it
            // a body in the way: a ray from just off the surface to the light
-           const Vec3 from = at + kReceptorLift * facing;
-           if (w.cast(from, l.position - from, norm(l.position - from)).hit) continue;
+           const Vec3 from = at + kReceptorLift * facing, ahead = l.position - from;
+           if (w.cast(from, ahead, norm(ahead)).hit) continue;
            sum += l.strength * cos / (1 + (d / l.range) * (d / l.range));
          }
          return std::clamp(sum, 0.0, 1.0);
@@ -79,14 +77,9 @@ void World::Impl::place_receptors(const CreatureModel& m) {
     // where the direction from the centre leaves the part: a ray from outside
     // its bounds back towards the centre, against its own geom alone
     const Vec3 centre = vec(dBodyGetPosition(bodies[s.part]));
-    dVector3 u;
-    dBodyVectorToWorld(bodies[s.part], s.direction.x, s.direction.y, s.direction.z, u);
-    const Vec3 dir = (1.0 / norm(vec(u))) * vec(u);
-    const Vec3& size = m.parts[s.part].size;
-    const double far = 2 * norm(size) + 1;
-    dGeomID ray = dCreateRay(nullptr, far);
-    dGeomRaySet(ray, centre.x + far * dir.x, centre.y + far * dir.y, centre.z + far * dir.z, -dir.x, -dir.y, -dir.z);
-    dGeomRaySetClosestHit(ray, 1);
+    const Vec3 dir = world_direction(s.part, s.direction);
+    const double far = 2 * norm(m.parts[s.part].size) + 1;
+    dGeomID ray = make_ray(centre + far * dir, -1.0 * dir, far);
     dContactGeom c;
     const Vec3 surface = dCollide(ray, geoms[s.part], 1, &c, sizeof(dContactGeom)) == 1 ? vec(c.pos) : centre;
     dGeomDestroy(ray);

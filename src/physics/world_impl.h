@@ -1,9 +1,10 @@
 // The physics world's private state (World::Impl), shared by the files that
 // implement World by concept: world.cpp (the world, its bodies, the step and
 // the explosion tests), joints.cpp (joints, their degrees of freedom, stops
-// and gaps), actuators.cpp (the motor models), contacts.cpp (collision,
-// contact joints, the friction bound, contact flags) and sensors.cpp. Not
-// part of the physics layer's interface: only physics/*.cpp include it.
+// and gaps), actuators.cpp (the actuator table: motor models, muscles),
+// contacts.cpp (collision, contact joints, the friction bound, contact
+// flags), sensors.cpp (the sensor table, lights) and rays.cpp. Not part of
+// the physics layer's interface: only physics/*.cpp include it.
 #pragma once
 
 #include <ode/ode.h>
@@ -34,6 +35,15 @@ inline void* entity_data(WorldEntity e) {
 inline WorldEntity entity_of(dGeomID g) {
   const auto data = reinterpret_cast<std::intptr_t>(dGeomGetData(g));
   return {static_cast<WorldEntity::Kind>(data & 15), static_cast<int>(data >> 4)};
+}
+
+// a ray geom in no space, from `origin` along the unit vector `dir` for
+// `length` m, reporting its closest hit (dCollide it; dGeomDestroy it after)
+inline dGeomID make_ray(Vec3 origin, Vec3 dir, double length) {
+  dGeomID ray = dCreateRay(nullptr, length);
+  dGeomRaySet(ray, origin.x, origin.y, origin.z, dir.x, dir.y, dir.z);
+  dGeomRaySetClosestHit(ray, 1);
+  return ray;
 }
 
 struct World::Impl {
@@ -103,6 +113,12 @@ struct World::Impl {
     dVector3 out;
     dBodyGetRelPointPos(bodies[part], local.x, local.y, local.z, out);
     return vec(out);
+  }
+  // a direction of part `part`'s frame in the world's, as a unit vector
+  Vec3 world_direction(int part, Vec3 local) const {
+    dVector3 out;
+    dBodyVectorToWorld(bodies[part], local.x, local.y, local.z, out);
+    return (1.0 / norm(vec(out))) * vec(out);
   }
   Vec3 local_point(int part, Vec3 world) const {
     dVector3 out;

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "physics/world.h"
+#include "support/parts.h"
 
 namespace bx {
 namespace {
@@ -21,18 +22,8 @@ double largest_turn(bool parts_collide, bool self_collision, double seconds = 3)
   def.self_collision = self_collision;
   World w(def);
   CreatureModel m;
-  PartModel cube;
-  cube.shape = Shape::Box;
-  cube.size = {1, 1, 1};
-  cube.mass = 10;
-  cube.pose = {{0, 0, 2}, Mat3::identity()};
-  PartModel bar;
-  bar.shape = Shape::Box;
-  bar.size = {1, 0.2, 0.2};
-  bar.mass = 1;
-  bar.pose = {{1.01, 0, 2.6}, Mat3::identity()};  // x 0.51..1.51, z 2.5..2.7
-  bar.parent = 0;
-  m.parts = {cube, bar};
+  m.parts = {bxtest::box_part({1, 1, 1}, 10, {0, 0, 2}),
+             bxtest::box_part({1, 0.2, 0.2}, 1, {1.01, 0, 2.6}, 0)};  // the bar: x 0.51..1.51, z 2.5..2.7
   JointModel j;
   j.type = JointType::Hinge;
   j.parent = 0;
@@ -47,9 +38,7 @@ double largest_turn(bool parts_collide, bool self_collision, double seconds = 3)
   m.effectors.push_back(e);
   w.add_creature(m, {{0, 0, 0}, Mat3::identity()});
   w.fix_part_to_world(0);
-  MotorDef motor;
-  motor.model = MotorModel::Torque;
-  motor.strength = 100;  // 1 N m
+  const MotorDef motor = bxtest::torque_motor(100);  // 1 N m
   const double s[1] = {1.0};
   double most = 0;
   while (w.time() < seconds) {

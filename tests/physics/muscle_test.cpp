@@ -8,25 +8,19 @@
 #include <cmath>
 
 #include "physics/world.h"
+#include "support/parts.h"
 
 namespace bx {
 namespace {
 
-PartModel box(Vec3 size, double mass, Vec3 pos) {
-  PartModel p;
-  p.shape = Shape::Box;
-  p.size = size;
-  p.mass = mass;
-  p.pose = {pos, Mat3::identity()};
-  return p;
-}
+using bxtest::box_part;
 
 // Two free 0.1 m cubes of masses m1 and m2 on the x axis, 2 m up, centres
 // `gap` apart, joined by a muscle between their centres of rest length L0
 // and strength k, driven by effector 0.
 CreatureModel pair(double m1, double m2, double gap, double L0, double k) {
   CreatureModel c;
-  c.parts = {box({0.1, 0.1, 0.1}, m1, {0, 0, 2}), box({0.1, 0.1, 0.1}, m2, {gap, 0, 2})};
+  c.parts = {box_part({0.1, 0.1, 0.1}, m1, {0, 0, 2}), box_part({0.1, 0.1, 0.1}, m2, {gap, 0, 2})};
   c.parts[1].parent = 0;
   c.muscles.push_back({0, 1, {0, 0, 2}, {gap, 0, 2}, k, L0});
   EffectorModel e;
@@ -103,7 +97,7 @@ Held hold(double activation, double seconds = 5) {
   def.dt = 0.005;
   World w(def);
   CreatureModel cm;
-  cm.parts = {box({0.2, 0.2, 0.8}, 5, {0, 0, 1}), box({0.6, 0.1, 0.1}, 0.5, {0.4, 0, 1.05})};
+  cm.parts = {box_part({0.2, 0.2, 0.8}, 5, {0, 0, 1}), box_part({0.6, 0.1, 0.1}, 0.5, {0.4, 0, 1.05})};
   cm.parts[1].parent = 0;
   JointModel j;
   j.type = JointType::Hinge;

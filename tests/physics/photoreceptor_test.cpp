@@ -7,18 +7,12 @@
 #include <vector>
 
 #include "physics/world.h"
+#include "support/parts.h"
 
 namespace bx {
 namespace {
 
-PartModel box(Vec3 size, Vec3 pos) {
-  PartModel p;
-  p.shape = Shape::Box;
-  p.size = size;
-  p.mass = 1;
-  p.pose = {pos, Mat3::identity()};
-  return p;
-}
+PartModel box(Vec3 size, Vec3 pos) { return bxtest::box_part(size, 1, pos); }
 
 // A 0.4 m cube at (0, 0, 1) whose photoreceptor looks along `direction`
 // (the cube's frame), and any other parts (unjoined, for occlusion); its

@@ -5,18 +5,12 @@
 #include <cmath>
 
 #include "physics/world.h"
+#include "support/parts.h"
 
 namespace bx {
 namespace {
 
-PartModel part(Shape shape, Vec3 size, Vec3 pos) {
-  PartModel p;
-  p.shape = shape;
-  p.size = size;
-  p.mass = 1;
-  p.pose = {pos, Mat3::identity()};
-  return p;
-}
+PartModel part(Shape shape, Vec3 size, Vec3 pos) { return bxtest::part(shape, size, 1, pos); }
 
 // a world of the ground and the given parts (unjoined; nothing is stepped)
 struct Scene {

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "physics/world.h"
+#include "support/parts.h"
 
 namespace bx {
 namespace {
@@ -21,18 +22,7 @@ double spun_rate(Shape shape, Vec3 size, double mass, Vec3 axis) {
   def.dt = 0.001;
   World w(def);
   CreatureModel m;
-  PartModel base;
-  base.shape = Shape::Box;
-  base.size = {0.1, 0.1, 0.1};
-  base.mass = 1;
-  base.pose = {{-2, 0, 1}, Mat3::identity()};
-  PartModel p;
-  p.shape = shape;
-  p.size = size;
-  p.mass = mass;
-  p.pose = {{0, 0, 1}, Mat3::identity()};
-  p.parent = 0;
-  m.parts = {base, p};
+  m.parts = {bxtest::box_part({0.1, 0.1, 0.1}, 1, {-2, 0, 1}), bxtest::part(shape, size, mass, {0, 0, 1}, 0)};
   JointModel j;
   j.type = JointType::Hinge;
   j.parent = 0;
@@ -46,9 +36,7 @@ double spun_rate(Shape shape, Vec3 size, double mass, Vec3 axis) {
   m.effectors.push_back(e);
   w.add_creature(m, {{0, 0, 0}, Mat3::identity()});
   w.fix_part_to_world(0);
-  MotorDef motor;
-  motor.model = MotorModel::Torque;
-  motor.strength = 1;
+  const MotorDef motor = bxtest::torque_motor(1);
   const double s[1] = {1.0};
   while (w.time() < 1 - 1e-9) {
     w.apply_effectors(m, motor, s);

@@ -2,6 +2,7 @@
 // at rest, motors, limits, contact sensing and the explosion tests.
 #include "physics/world.h"
 #include "develop/develop.h"  // find_self_intersection
+#include "support/parts.h"
 
 #include <gtest/gtest.h>
 
@@ -18,15 +19,7 @@
 namespace bx {
 namespace {
 
-PartModel box_part(Vec3 size, double mass, Vec3 pos, int parent = -1) {
-  PartModel p;
-  p.shape = Shape::Box;
-  p.size = size;
-  p.mass = mass;
-  p.pose = {pos, Mat3::identity()};
-  p.parent = parent;
-  return p;
-}
+using bxtest::box_part;
 
 CreatureModel one_box(Vec3 pos) {
   CreatureModel m;
@@ -313,9 +306,7 @@ TEST(World, TorqueMotorAcceleratesByTorqueOverInertia) {
   m.effectors.push_back(e);
   w.add_creature(m, {{0, 0, 0}, Mat3::identity()});
   w.fix_part_to_world(0);
-  MotorDef motor;
-  motor.model = MotorModel::Torque;
-  motor.strength = 10;  // torque = 1 * 10 * 0.01 = 0.1 N m
+  const MotorDef motor = bxtest::torque_motor(10);  // torque = 1 * 10 * 0.01 = 0.1 N m
   double s[1] = {1.0};
   for (int i = 0; i < 100; ++i) {
     w.apply_effectors(m, motor, s);
