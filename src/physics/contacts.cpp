@@ -11,6 +11,11 @@
 
 namespace bx {
 
+namespace {
+// two contact points of one pair this close, with normals this close, are one (m)
+constexpr double kRepeatedContact = 1e-9;
+}  // namespace
+
 void World::Impl::collide(dGeomID a, dGeomID b) {
   dBodyID ba = dGeomGetBody(a), bb = dGeomGetBody(b);
   if (ba && bb) {
@@ -30,6 +35,17 @@ void World::Impl::collide(dGeomID a, dGeomID b) {
   if (n > 0 && ba && bb) touching[part_of(a)] = touching[part_of(b)] = 1;
   for (int i = 0; i < n; ++i) {
     dContact& c = contact_buf[i];
+    // a point ODE's collider gave twice (a capsule against a box or a capsule
+    // can): two identical rows make the exact solver's LCP singular ("LCP
+    // internal error, s <= 0"), and the second adds nothing
+    bool repeated = false;
+    for (int k = 0; k < i && !repeated; ++k) {
+      const dContactGeom &p = contact_buf[k].geom, &q = c.geom;
+      repeated = std::abs(p.pos[0] - q.pos[0]) <= kRepeatedContact && std::abs(p.pos[1] - q.pos[1]) <= kRepeatedContact &&
+                 std::abs(p.pos[2] - q.pos[2]) <= kRepeatedContact && std::abs(p.normal[0] - q.normal[0]) <= kRepeatedContact &&
+                 std::abs(p.normal[1] - q.normal[1]) <= kRepeatedContact && std::abs(p.normal[2] - q.normal[2]) <= kRepeatedContact;
+    }
+    if (repeated) continue;
     c.surface.mode = dContactApprox1;
     c.surface.mu = def.friction;
     if (def.rolling_friction > 0 && (round_geom(a) || round_geom(b))) {

@@ -203,14 +203,19 @@ TEST(TorqueMotor, FullTorqueDoesNotSlamALightLegThroughItsStop) {
   EXPECT_LT(bounded.gap, 0.005);
 }
 
-TEST(Solver, AStepOdeCannotSolveFailsTheEvaluation) {
+TEST(Solver, AContactPointTheColliderRepeatsIsKeptOnceSoTheStepIsSolved) {
   // lcp_failure.json (random sims1994 creature 91): at 0.74 s ODE's exact
-  // solver reports "LCP internal error" and leaves the rows it did not reach
-  // at zero force; the evaluation fails, naming it, instead of going on
+  // solver reported "LCP internal error, s <= 0" and left the rows it did not
+  // reach at zero force, so its evaluation failed (cause 9). The cause was a
+  // contact point ODE's collider gave twice for one pair: two identical rows
+  // make the LCP singular. Kept once (cause 30), the step is solved and the
+  // creature comes to rest
   Dialect d;
   CreatureModel m = canonical("lcp_failure.json", &d);
   Outcome o = rest(m, clamped(d, 0.3), 91);
-  EXPECT_NE(o.failure.find("ODE could not solve the step"), std::string::npos) << o.failure;
+  EXPECT_EQ(o.failure, "");
+  EXPECT_LT(o.travel, kMostTravel);
+  EXPECT_LT(o.gap, kMostGap);
 }
 
 // Today's counts, out of 200 random creatures per dialect, of those that
@@ -226,7 +231,7 @@ struct Allowed {
 
 Allowed allowed(Dialect d) {
   switch (d) {
-    case Dialect::Sims1994: return {8, 27, 2, 4};  // 4 steps ODE could not solve
+    case Dialect::Sims1994: return {8, 27, 2, 0};  // 4 steps ODE could not solve, until repeated contacts went (cause 30)
     // causes 11-13 (no self-collision, motors beside the stops, a 0.05 s
     // motor lag): 7 -> 1 travel and 2 -> 1 deep, but 1 -> 3 joints part by
     // 1.1-1.6 cm for a moment in the first second (the landing, a limb's
