@@ -167,6 +167,7 @@ std::string paper_of(const RunConfig& cfg) {
     case Dialect::Sims1994: return "Sims 1994";
     case Dialect::Miconi2006: return "Miconi & Channon 2006";
     case Dialect::Chaumont2007: return "Chaumont et al. 2007";
+    case Dialect::Lessin2015: return "Lessin et al. 2015";
   }
   return "";
 }

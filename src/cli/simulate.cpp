@@ -238,7 +238,7 @@ int cmd_config(const std::string& dialect, bool dialect_given, const std::string
     return 0;
   }
   auto d = parse_dialect(dialect);
-  if (!d) return fail("dialect: expected sims1994, miconi2006 or chaumont2007, got \"" + dialect + "\"");
+  if (!d) return fail("dialect: expected sims1994, miconi2006, chaumont2007 or lessin2015, got \"" + dialect + "\"");
   if (config_file.empty()) {
     std::printf("%s", config_to_toml(default_sim_config(*d)).c_str());
     return 0;
@@ -270,7 +270,7 @@ void add_simulate_commands(CLI::App& app) {
   static bool reference = false;
   auto* c = app.add_subcommand("config", "Print the effective config (TOML) of a dialect");
   static CLI::Option* dialect_opt =
-      c->add_option("dialect", dialect, "sims1994, miconi2006 or chaumont2007 (with --config: that file's own)");
+      c->add_option("dialect", dialect, "sims1994, miconi2006, chaumont2007 or lessin2015 (with --config: that file's own)");
   c->add_option("--config", cfg_file, "TOML config overlaid on its dialect's (and creature kind's) defaults");
   c->add_flag("--reference", reference, "Print every key of every dialect as a Markdown table");
   c->callback([] { std::exit(cmd_config(dialect, dialect_opt->count() > 0, cfg_file, reference)); });

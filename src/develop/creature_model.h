@@ -58,6 +58,8 @@ struct SensorModel {
   /// length); it sits where that direction from the part's centre meets the
   /// part's surface (lessin2015 III-D)
   Vec3 direction{1, 0, 0};
+  /// MuscleLength: an index into CreatureModel::muscles
+  int muscle = -1;
 };
 
 /// A muscle (lessin2015 III-E): a spring between a point on each of two
@@ -68,6 +70,9 @@ struct MuscleModel {
   Vec3 anchor_a, anchor_b;  ///< its two ends, in the creature's frame at the initial pose (m)
   double strength = 0;      ///< N/m: its stiffness at full activation
   double rest_length = 0;   ///< m
+  /// m: its length as built (its anchors' distance at the initial pose), the
+  /// unit of its length sensor (SensorType::MuscleLength); 0: rest_length
+  double length = 0;
 };
 
 /// An effector: brain effector i drives degree of freedom `dof` of `joint`,

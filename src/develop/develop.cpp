@@ -24,6 +24,7 @@ struct Instance {
   int parent = -1;       // instance index
   int via_edge = -1;     // edge index in the parent's node
   Mat3 A;                // local -> creature frame, possibly improper
+  Mat3 parent_A;         // the parent's A as this instance's reflections mirror it
   Vec3 p;
   double scale = 1;
   Vec3 size;             // scaled extents
@@ -60,6 +61,18 @@ double surface_distance(Shape shape, Vec3 size, Vec3 d) {
 
 // half extent of a part along its own x axis
 double half_x(Shape shape, Vec3 size) { return size.x / 2; }
+
+// half of a part's thinner extent across its x axis (a sphere's and a
+// capsule's radius)
+double half_thickness(Shape shape, Vec3 size) {
+  switch (shape) {
+    case Shape::Sphere: return size.x / 2;
+    case Shape::Capsule:
+    case Shape::Cylinder: return size.y / 2;
+    case Shape::Box: return std::min(size.y, size.z) / 2;
+  }
+  return 0;
+}
 
 // the attachment point of an edge on the parent's surface, parent-local
 Vec3 attach_point(Shape shape, Vec3 size, const EdgeGene& e) {
@@ -116,7 +129,10 @@ Vec3 orthogonalize(Vec3 a, Vec3 b) {
 
 class Grower {
  public:
-  Grower(const Genome& g, int max_parts) : g_(g), max_parts_(max_parts) {}
+  // gap_share: a child whose joint collides with its parent starts this
+  // share of its half-thickness off the parent (DevelopDef::collide_gap)
+  Grower(const Genome& g, int max_parts, double gap_share)
+      : g_(g), max_parts_(max_parts), gap_share_(gap_share) {}
 
   /// The instances in depth-first order; empty if more than max_parts.
   /// Iterative, with the count of each node on the current root-to-part path
@@ -195,9 +211,11 @@ class Grower {
     // child frame relative to the parent: face frame, then the edge's rotation
     Mat3 Q = face_frame(e.face) * euler_xyz(e.rotation);
     Vec3 q = attach_point(pnode.shape, par.size, e);
-    Vec3 centre = q + Q * Vec3{half_x(cnode.shape, ch.size), 0, 0};
+    const double gap = gap_share_ * half_thickness(cnode.shape, ch.size);
+    Vec3 centre = q + Q * Vec3{half_x(cnode.shape, ch.size) + gap, 0, 0};
     Mat3 AM = par.A * mirror;
     ch.A = AM * Q;
+    ch.parent_A = AM;
     ch.p = par.p + AM * centre;
     anchors_.resize(out_.size() + 1);
     anchors_[out_.size()] = par.p + AM * q;
@@ -211,6 +229,7 @@ class Grower {
  private:
   const Genome& g_;
   int max_parts_;
+  double gap_share_;
   std::vector<Instance> out_;
   std::vector<int> on_path_;  // per node: its parts on the path from the root to the current one
   std::vector<Frame> stack_;  // that path
@@ -223,6 +242,7 @@ class Wiring {
       : g_(g), inst_(inst), m_(m) {}
 
   std::vector<int> sensor_base, neuron_base;
+  std::vector<int> muscle_sensor_base, muscle_count;  // per instance: its muscles' length sensors
   int global_base = 0;
 
   int slot(int owner, const InputGene& in, const std::string& where) {
@@ -248,6 +268,10 @@ class Wiring {
     if (in.kind == SourceKind::Sensor) {
       if (in.index >= static_cast<int>(tn.sensors.size())) return missing(where);
       return sensor_base[target] + in.index;
+    }
+    if (in.kind == SourceKind::Muscle) {
+      if (in.index >= muscle_count[target]) return missing(where);  // e.g. the root's
+      return muscle_sensor_base[target] + in.index;
     }
     if (in.index >= static_cast<int>(tn.neurons.size())) return missing(where);
     return m_.brain.n_sensors + neuron_base[target] + in.index;
@@ -313,7 +337,7 @@ Development develop(const Genome& g, const DevelopDef& def) {
   int max_parts = def.max_parts > 0 ? def.max_parts : (rules.max_parts > 0 ? rules.max_parts : 1000);
 
   // grow the tree of part instances
-  Grower grower(g, max_parts);
+  Grower grower(g, max_parts, rules.joined_parts_collide ? def.collide_gap : 0.0);
   std::vector<Instance> inst = grower.grow();
   if (inst.empty()) return {std::nullopt, "too many parts: more than " + std::to_string(max_parts)};
   const auto& anchors = grower.anchors_;
@@ -385,6 +409,7 @@ Development develop(const Genome& g, const DevelopDef& def) {
     j.limits = jg.limits;
     if (j.limits.empty() && j.type == JointType::Hinge && rules.default_hinge_limits)
       j.limits = {*rules.default_hinge_limits};
+    j.parts_collide = rules.joined_parts_collide;  // lessin2015 III-B: shapes limit the joint
     joint_of[i] = static_cast<int>(m.joints.size());
     m.joints.push_back(j);
   }
@@ -401,11 +426,46 @@ Development develop(const Genome& g, const DevelopDef& def) {
                               std::to_string(m.parts[a].gene) + ") and " + std::to_string(b) +
                               " (gene " + std::to_string(m.parts[b].gene) + ") overlap"};
 
+  // muscles (lessin2015 III-E): each effector of a muscle dialect's part, to
+  // its parent, between the points where its two directions leave the parts
+  std::vector<int> muscle_base(n, 0);
+  if (rules.muscle_effectors)
+    for (int i = 0; i < n; ++i) {
+      muscle_base[i] = static_cast<int>(m.muscles.size());
+      if (i == 0) continue;  // the root has no parent to pull
+      const NodeGene& node = g.nodes[inst[i].node];
+      const Instance& par = inst[inst[i].parent];
+      for (std::size_t k = 0; k < node.effectors.size(); ++k) {
+        const MuscleGene& mg = *node.effectors[k].muscle;
+        // points in the (possibly mirrored) local frames: a reflected part's
+        // muscle is mirrored too, on the parent as the reflection mirrors it
+        Vec3 dp = normalized(mg.parent_dir), dc = normalized(mg.child_dir);
+        Vec3 a = par.p + inst[i].parent_A * (surface_distance(g.nodes[par.node].shape, par.size, dp) * dp);
+        Vec3 b = inst[i].p + inst[i].A * (surface_distance(node.shape, inst[i].size, dc) * dc);
+        MuscleModel mm;
+        mm.part_a = inst[i].parent;
+        mm.part_b = i;
+        mm.anchor_a = a;
+        mm.anchor_b = b;
+        mm.strength = mg.strength;
+        mm.length = norm(b - a);
+        mm.rest_length = def.muscle_rest_fraction * mm.length;
+        if (!(mm.length >= def.min_muscle_length)) {
+          char buf[160];
+          std::snprintf(buf, sizeof buf, "nodes[%d].effectors[%zu].muscle: %.3g m long as built, below %g m",
+                        inst[i].node, k, mm.length, def.min_muscle_length);
+          return {std::nullopt, buf};
+        }
+        m.muscles.push_back(mm);
+      }
+    }
+
   // sensors, then neuron numbering
   BrainModel& brain = m.brain;
   brain.set = rules.neuron_set;
   Wiring wiring(g, inst, m);
   wiring.sensor_base.resize(n);
+  wiring.muscle_sensor_base.resize(n);
   wiring.neuron_base.resize(n);
   int n_neurons = 0;
   for (int i = 0; i < n; ++i) {
@@ -421,6 +481,21 @@ Development develop(const Genome& g, const DevelopDef& def) {
       s.dof = sg.dof;
       // a contact face in a mirrored frame: the proper frame flips local z
       s.face = flipped[i] && face_axis(sg.face) == 2 ? make_face(2, -face_sign(sg.face)) : sg.face;
+      // a direction likewise (the proper frame of a mirrored part flips local z)
+      s.direction = flipped[i] ? Vec3{sg.direction.x, sg.direction.y, -sg.direction.z} : sg.direction;
+      m.sensors.push_back(s);
+    }
+    // each muscle's length node (lessin2015 III-E), read as SourceKind::Muscle
+    wiring.muscle_sensor_base[i] = static_cast<int>(m.sensors.size());
+    const int muscles_here =
+        (i + 1 < n ? muscle_base[i + 1] : static_cast<int>(m.muscles.size())) - muscle_base[i];
+    wiring.muscle_count.push_back(rules.muscle_effectors ? muscles_here : 0);
+    for (int k = 0; rules.muscle_effectors && k < muscles_here; ++k) {
+      SensorModel s;
+      s.type = SensorType::MuscleLength;
+      s.part = i;
+      s.joint = joint_of[i];
+      s.muscle = muscle_base[i] + k;
       m.sensors.push_back(s);
     }
   }
@@ -472,6 +547,7 @@ Development develop(const Genome& g, const DevelopDef& def) {
       EffectorModel e;
       e.joint = joint_of[i];
       e.dof = eg.dof;
+      if (rules.muscle_effectors) e.muscle = muscle_base[i] + static_cast<int>(k);
       const PartModel& pc = m.parts[i];
       const PartModel& pp = m.parts[inst[i].parent];
       e.cross_section = std::max(cross_section(pc.shape, pc.size), cross_section(pp.shape, pp.size));
@@ -495,7 +571,13 @@ std::pair<int, int> find_self_intersection(const CreatureModel& m, double margin
   for (std::size_t i = 0; i < solids.size(); ++i) {
     const PartModel& p = m.parts[i];
     bool free = static_cast<int>(i) == released;
-    solids[i] = {p.shape, p.size, p.pose, free ? -1 : p.parent};
+    // a part whose joint lets it collide with its parent (JointModel::
+    // parts_collide) may not start inside it either: the contact would push
+    // the pair apart against the joint
+    bool collides = false;
+    for (const JointModel& j : m.joints)
+      if (j.child == static_cast<int>(i) && j.parts_collide) collides = true;
+    solids[i] = {p.shape, p.size, p.pose, free || collides ? -1 : p.parent};
   }
   return first_overlap(solids, margin);
 }

@@ -22,6 +22,22 @@ struct DevelopDef {
   /// (1.5 per level can grow 0.6 m genes into 9 m blocks), and a throwing task
   /// rewards giants that topple from a height.
   double max_body_length = 0;
+  /// Where joined parts collide (lessin2015 III-B: "limitations on joint
+  /// movement ... through natural collisions between adjacent segments"), a
+  /// child starts this share of its half-thickness (a sphere's or capsule's
+  /// radius, a box's thinner half-extent across its length) off its parent,
+  /// the joint's anchor on the parent's surface: flush, a box child could
+  /// not turn at all (its corner digs into the parent's face at once); at 1
+  /// it turns up to 45 degrees about its thinner side before its corner
+  /// meets the parent. Other dialects: flush, as Sims.
+  double collide_gap = 1.0;
+  /// A muscle's rest length as a share of its built length (lessin2015 III-E
+  /// gives none): below 1, an active muscle contracts, so a pair across a
+  /// joint moves it; at 1 a muscle could only hold the pose it was built in.
+  double muscle_rest_fraction = 0.5;
+  /// A muscle shorter than this as built (m) is not viable: its direction,
+  /// and so its force, would be undefined.
+  double min_muscle_length = 1e-3;
   friend bool operator==(const DevelopDef&, const DevelopDef&) = default;
 };
 
@@ -43,7 +59,9 @@ Development develop(const Genome& g, const DevelopDef& def = {});
 
 /// Development's self-intersection test: the first pair of parts, not joined
 /// by a joint, whose shapes (each shrunk by `margin` metres on every side)
-/// overlap at the initial pose; {-1, -1} if none (geometry/overlap.h). Part
+/// overlap at the initial pose; {-1, -1} if none (geometry/overlap.h). A
+/// part and its parent count as not joined when their joint lets them
+/// collide (JointModel::parts_collide, lessin2015). Part
 /// `released` (a catapult's projectile, whose joint breaks) may not overlap
 /// its parent either: once free, the contact would push it out at the
 /// solver's correcting speed, a launch by constraint error (docs/physics.md).

@@ -78,6 +78,27 @@ SimConfig default_sim_config(Dialect d) {
       c.task.seconds = 10;
       c.task.fitness = LocomotionFitness::Speed;  // speed of the centre of mass
       break;
+    case Dialect::Lessin2015:
+      // III: the paper used PhysX and gives no constant; ours. One brain step
+      // per physics step (III-C). Measured on 100 random creatures with
+      // constant activations (docs/physics.md cause 30): at 1/60 s strong
+      // muscles pull 56 joints more than 1 cm apart and 8 explode; at 1/120 s
+      // 21 and 2; at 1/240 s 4 and none
+      c.physics.dt = 1.0 / 240;
+      c.brain_hz = 240;
+      // III-B: joints are limited by collisions of adjacent parts (the
+      // dialect's joined_parts_collide); every part collides, as PhysX's shapes
+      c.physics.self_collision = true;
+      c.physics.friction = 1.0;
+      // III-E: muscles are the only actuators; the damper keeps a muscle from
+      // ringing (lessin2015 gives none): about critical for a 1 kg part on a
+      // 100 N/m muscle, well under it for the stronger ones
+      c.motor.model = MotorModel::Muscle;
+      c.motor.muscle_damping = 20;
+      // V, skill 1: forward locomotion's s is a speed
+      c.task.seconds = 10;
+      c.task.fitness = LocomotionFitness::Speed;
+      break;
   }
   return c;
 }

@@ -24,6 +24,13 @@ EvolutionDef default_evolution(Dialect d) {
       e.sexual_mutation_chance = 1.0;
       e.sexual_rate = 0.05;
       break;
+    case Dialect::Lessin2015:
+      // III-A: "elitism, fitness-proportionate selection, and rank selection";
+      // population and generations per skill are not given (ours)
+      e.population = 100;
+      e.generations = 50;
+      e.selection = Selection::Rank;
+      break;
   }
   return e;
 }

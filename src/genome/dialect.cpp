@@ -56,6 +56,8 @@ DialectRules sims1994_rules() {
       .edge_terminal_only = true,
       .limb_io = false,
       .slot_wiring = false,
+      .muscle_effectors = false,
+      .joined_parts_collide = false,
   };
 }
 
@@ -91,6 +93,8 @@ DialectRules miconi2006_rules() {
       .edge_terminal_only = false,
       .limb_io = true,                      // sec. 3.1, Fig. 1
       .slot_wiring = true,                  // sec. 3: connection slots
+      .muscle_effectors = false,            // sec. 3.1: one actuator per hinge
+      .joined_parts_collide = false,        // sec. 2: limits are the fixed joint range
   };
 }
 
@@ -126,6 +130,50 @@ DialectRules chaumont2007_rules() {
       .edge_terminal_only = true,
       .limb_io = false,
       .slot_wiring = false,
+      .muscle_effectors = false,
+      .joined_parts_collide = false,
+  };
+}
+
+// lessin2015 (Lessin, Fussell & Miikkulainen, IEEE TEVC, 2015), section III:
+// Sims' graph genome with round shapes, muscles and photoreceptors.
+DialectRules lessin2015_rules() {
+  return {
+      .dialect = Dialect::Lessin2015,
+      .neuron_set = NeuronSetId::Lessin2015,  // III-C: outputs in [0, 1]
+      .max_genes = 20,   // our bound (the paper gives none), as chaumont2007's n_max
+      .max_parts = 50,   // our safety cap; Fig. 3's creatures have up to about 15 segments
+      .tree_only = false,  // III-B: reflexive and multiple edges allowed (Fig. 4)
+      .shapes = {Shape::Box, Shape::Sphere, Shape::Capsule},  // III-B: "all PhysX primitives"
+      // III-B: "fixed, revolute, spherical, prismatic, and cylindrical"
+      .joints = {JointType::Fixed, JointType::Hinge, JointType::Spherical, JointType::Slider,
+                 JointType::Cylindrical},
+      .hinge_axis_y_or_z = false,
+      .angle_step = 0,
+      .max_neurons_per_part = 0,
+      .max_inputs_per_neuron = 0,  // each function's own arity (sum and sigma: any)
+      .mass_rule = MassRule::Density,
+      .mass_scale = 0,
+      .edge_roll_free = true,
+      .reflect_axes = {0, 1, 2},  // III-B: "reflection of body parts as well as body symmetry"
+      // III-B: "most limitations on joint movement ... through natural collisions
+      // between adjacent segments": no default limits; a genome may still carry some
+      .default_hinge_limits = std::nullopt,
+      .hinge_limits_fixed = false,
+      .max_abs_bias = 0,
+      .max_abs_weight = 0,
+      .sensors = {SensorType::Photoreceptor},  // III-D; each muscle adds its length (III-E)
+      .max_sensors_per_part = 0,
+      .max_effectors_per_part = 0,
+      .global_neurons = true,  // as Sims: the brain is one network of nodes and wires (III-C)
+      .operators = OperatorScheme::Graph,
+      .edge_lattice = false,
+      .edge_scale_free = true,
+      .edge_terminal_only = true,
+      .limb_io = false,
+      .slot_wiring = false,
+      .muscle_effectors = true,       // III-E: muscles are the only actuators
+      .joined_parts_collide = true,   // III-B
   };
 }
 
@@ -572,7 +620,9 @@ class Validator {
 
   Problem check_source(const InputGene& in, const std::string& path, int owner) const {
     bool neuron = in.kind == SourceKind::Neuron;
-    std::string what = neuron ? "neuron" : "sensor";
+    std::string what = neuron ? "neuron" : in.kind == SourceKind::Sensor ? "sensor" : "muscle";
+    if (in.kind == SourceKind::Muscle && !r_.muscle_effectors)
+      return problem(path + ".muscle", "no muscles" + in_dialect(r_), in.index);
     std::string ipath = path + "." + what;
     std::string place(to_string(in.place));
     if (!std::isfinite(in.weight)) return problem(path + ".weight", "must be finite", in.weight);
@@ -583,7 +633,9 @@ class Validator {
       return problem(path + ".from", "global neurons read only root and global sources", place);
     // how many neurons or sensors the source node has
     auto count = [&](const NodeGene& n) {
-      return static_cast<int>(neuron ? n.neurons.size() : n.sensors.size());
+      return static_cast<int>(neuron                              ? n.neurons.size()
+                              : in.kind == SourceKind::Sensor ? n.sensors.size()
+                                                                : n.effectors.size());
     };
     auto has = [&](int available, const std::string& where) -> Problem {
       if (in.index >= 0 && in.index < available) return std::nullopt;
@@ -639,6 +691,8 @@ class Validator {
             std::string(to_string(sg.type)));
       if (sg.type == SensorType::JointAngle)
         if (auto p = check_dof(sg.dof, node.joint.type, spath + ".dof")) return p;
+      if (sg.type == SensorType::Photoreceptor)
+        if (auto p = check_direction(sg.direction, spath + ".direction")) return p;
     }
     return std::nullopt;
   }
@@ -653,7 +707,14 @@ class Validator {
     for (int e = 0; e < n; ++e) {
       const EffectorGene& eg = node.effectors[e];
       std::string epath = path + ".effectors[" + std::to_string(e) + "]";
-      if (auto p = check_dof(eg.dof, node.joint.type, epath + ".dof")) return p;
+      if (r_.muscle_effectors) {
+        if (auto p = check_muscle(eg, epath)) return p;
+      } else {
+        if (eg.muscle)
+          return problem(epath + ".muscle", "no muscles" + in_dialect(r_) + " (effectors drive joints)",
+                         true);
+        if (auto p = check_dof(eg.dof, node.joint.type, epath + ".dof")) return p;
+      }
       if (!std::isfinite(eg.bias)) return problem(epath + ".bias", "must be finite", eg.bias);
       if (auto p = check_bias(eg.bias, epath + ".bias")) return p;
       // the dialect's input bound applies to effectors too (miconi2006: actuator neurons)
@@ -665,6 +726,27 @@ class Validator {
                        n_in);
       if (auto p = check_inputs(eg.inputs, epath, owner)) return p;
     }
+    return std::nullopt;
+  }
+
+  // a muscle dialect's effector: its muscle, whatever the joint
+  Problem check_muscle(const EffectorGene& eg, const std::string& path) const {
+    if (!eg.muscle)
+      return problem(path + ".muscle", "every effector is a muscle" + in_dialect(r_), nullptr);
+    if (eg.dof != 0) return problem(path + ".dof", "a muscle has no degree of freedom (0)", eg.dof);
+    const MuscleGene& m = *eg.muscle;
+    if (auto p = check_direction(m.parent_dir, path + ".muscle.parent_dir")) return p;
+    if (auto p = check_direction(m.child_dir, path + ".muscle.child_dir")) return p;
+    if (!std::isfinite(m.strength) || !(m.strength > 0) || m.strength > kMaxMuscleStrength)
+      return problem(path + ".muscle.strength", "must lie in (0, " + json(kMaxMuscleStrength).dump() + "] N/m",
+                     m.strength);
+    return std::nullopt;
+  }
+
+  // a direction from a part's centre (photoreceptor, muscle anchor): finite, not zero
+  static Problem check_direction(Vec3 d, const std::string& path) {
+    if (!finite(d) || !(norm(d) > 1e-9))
+      return problem(path, "a direction must be finite and not zero", vec_json(d));
     return std::nullopt;
   }
 
@@ -726,16 +808,18 @@ const DialectRules& dialect_rules(Dialect d) {
   static const DialectRules sims1994 = sims1994_rules();
   static const DialectRules miconi2006 = miconi2006_rules();
   static const DialectRules chaumont2007 = chaumont2007_rules();
+  static const DialectRules lessin2015 = lessin2015_rules();
   switch (d) {
     case Dialect::Sims1994: return sims1994;
     case Dialect::Miconi2006: return miconi2006;
     case Dialect::Chaumont2007: return chaumont2007;
+    case Dialect::Lessin2015: return lessin2015;
   }
   return sims1994;
 }
 
 std::optional<Dialect> parse_dialect(std::string_view name) {
-  for (Dialect d : {Dialect::Sims1994, Dialect::Miconi2006, Dialect::Chaumont2007})
+  for (Dialect d : {Dialect::Sims1994, Dialect::Miconi2006, Dialect::Chaumont2007, Dialect::Lessin2015})
     if (to_string(d) == name) return d;
   return std::nullopt;
 }

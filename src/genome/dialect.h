@@ -66,12 +66,22 @@ struct DialectRules {
   /// New neurons and effectors draw their inputs by filling connection slots
   /// (miconi2006 sec. 3), else a count from the operator ranges.
   bool slot_wiring;
+  /// Every effector is a muscle (EffectorGene::muscle), the only actuators
+  /// (lessin2015 III-E); else effectors drive joint degrees of freedom.
+  bool muscle_effectors;
+  /// A part and its parent collide, so shapes limit joints (lessin2015 III-B);
+  /// else joined parts pass through each other (JointModel::parts_collide).
+  bool joined_parts_collide;
 };
+
+/// Muscle strength (N/m at full activation) a genome may give (validate()):
+/// positive and below a bound far past any useful spring (lessin2015 gives none).
+inline constexpr double kMaxMuscleStrength = 1e7;
 
 /// The rules of a dialect.
 const DialectRules& dialect_rules(Dialect d);
 
-/// Parses "sims1994", "miconi2006", "chaumont2007".
+/// Parses "sims1994", "miconi2006", "chaumont2007", "lessin2015".
 std::optional<Dialect> parse_dialect(std::string_view name);
 
 /// Shortest and longest delay of a catapult's release mechanism (brain

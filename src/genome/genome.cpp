@@ -21,6 +21,7 @@ std::string_view to_string(Dialect d) {
     case Dialect::Sims1994: return "sims1994";
     case Dialect::Miconi2006: return "miconi2006";
     case Dialect::Chaumont2007: return "chaumont2007";
+    case Dialect::Lessin2015: return "lessin2015";
   }
   return "?";
 }
@@ -75,6 +76,7 @@ std::string_view to_string(SensorType t) {
     case SensorType::JointAngle: return "joint_angle";
     case SensorType::Contact: return "contact";
     case SensorType::Photoreceptor: return "photoreceptor";
+    case SensorType::MuscleLength: return "muscle_length";
   }
   return "?";
 }

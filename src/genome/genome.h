@@ -15,7 +15,7 @@
 namespace bx {
 
 /// Which paper's constraints and neuron set a genome follows.
-enum class Dialect { Sims1994, Miconi2006, Chaumont2007 };
+enum class Dialect { Sims1994, Miconi2006, Chaumont2007, Lessin2015 };
 
 /// Primitive shape of a part. Dimensions (`NodeGene::size`) are full extents
 /// along the part's local x, y, z: a sphere uses x as its diameter; a capsule
@@ -60,8 +60,10 @@ struct JointGene {
 /// Where a neuron or effector input reads from, relative to the part
 /// instance that owns the neuron.
 enum class SourcePlace { Self, Parent, Child, Root, Global };
-/// What it reads there.
-enum class SourceKind { Neuron, Sensor };
+/// What it reads there: a neuron's output, a sensor's reading, or the
+/// length of a muscle (the proprioceptive node each muscle adds, lessin2015
+/// III-E; `index` is the muscle's effector index on that part).
+enum class SourceKind { Neuron, Sensor, Muscle };
 
 /// One weighted input of a neuron or effector.
 /// `Child` sources read the part grown through `edge` (an index into the
@@ -95,28 +97,49 @@ struct NeuronGene {
 enum class SensorType {
   JointAngle,
   Contact,
-  /// lessin2015 III-D: the light it sees along its direction (physics layer
-  /// only so far: no dialect's genome carries one yet)
+  /// lessin2015 III-D: the light it sees along its direction
   Photoreceptor,
+  /// lessin2015 III-E: a muscle's length (not a gene of its own: every muscle
+  /// adds one, read through SourceKind::Muscle)
+  MuscleLength,
 };
 
 /// A sensor of a part: joint angle of one degree of freedom of the part's
-/// joint to its parent (scaled to [-1,1]), or contact on one face (+1/-1).
+/// joint to its parent (scaled to [-1,1]), contact on one face (+1/-1), or a
+/// photoreceptor looking along `direction` from the part's centre, sitting
+/// where that direction meets the part's surface (lessin2015 III-D).
 struct SensorGene {
   SensorType type = SensorType::JointAngle;
   int dof = 0;
   Face face = Face::NegZ;
+  Vec3 direction{1, 0, 0};  ///< Photoreceptor: in the part's frame, not zero (any length)
   bool locked = false;  ///< no operator changes or removes it (genome/locks.h)
   friend bool operator==(const SensorGene&, const SensorGene&) = default;
 };
 
+/// A muscle (lessin2015 III-E) between a part and its parent: "two
+/// attachment points on adjacent segments, along with a maximum strength".
+/// Each point is where a direction from its part's centre meets that part's
+/// surface (as a photoreceptor's), so it stays on the surface whatever the
+/// part's size. Development makes it a spring whose stiffness the
+/// activation sets (MuscleModel).
+struct MuscleGene {
+  Vec3 parent_dir{0, 0, 1};  ///< from the parent's centre, parent's frame; not zero
+  Vec3 child_dir{0, 0, 1};   ///< from this part's centre, its own frame; not zero
+  double strength = 100;     ///< N/m: its stiffness at full activation
+  friend bool operator==(const MuscleGene&, const MuscleGene&) = default;
+};
+
 /// An effector driving one degree of freedom of the part's joint to its
-/// parent. Its signal is the dialect's squashing of (sum of weighted inputs
-/// + bias) into [-1,1]; the motor model (config) turns it into force.
+/// parent, or, in a dialect whose actuators are muscles (lessin2015), the
+/// activation of `muscle`. Its signal is the dialect's squashing of (sum of
+/// weighted inputs + bias) into the neuron set's range; the motor model
+/// (config) turns it into force.
 struct EffectorGene {
-  int dof = 0;
+  int dof = 0;  ///< the joint's degree of freedom; 0 for a muscle
   double bias = 0;
   std::vector<InputGene> inputs;
+  std::optional<MuscleGene> muscle = std::nullopt;  ///< present exactly in muscle dialects
   bool locked = false;  ///< no operator changes or removes it (genome/locks.h)
   friend bool operator==(const EffectorGene&, const EffectorGene&) = default;
 };

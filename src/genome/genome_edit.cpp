@@ -14,10 +14,16 @@ namespace {
 
 int n_nodes(const Genome& g) { return static_cast<int>(g.nodes.size()); }
 
-// how many neurons or sensors node n has
+// how many neurons, sensors or muscles (muscle dialects' effectors) node n has
 int count_of(const Genome& g, int n, SourceKind kind) {
   const NodeGene& node = g.nodes[n];
-  return static_cast<int>(kind == SourceKind::Neuron ? node.neurons.size() : node.sensors.size());
+  switch (kind) {
+    case SourceKind::Neuron: return static_cast<int>(node.neurons.size());
+    case SourceKind::Sensor: return static_cast<int>(node.sensors.size());
+    case SourceKind::Muscle:
+      return dialect_rules(g.dialect).muscle_effectors ? static_cast<int>(node.effectors.size()) : 0;
+  }
+  return 0;
 }
 
 // whether node p has an edge to node c
@@ -271,23 +277,26 @@ bool source_exists(const Genome& g, int owner, const InputGene& in) {
 
 std::vector<InputGene> source_candidates(const Genome& g, int owner) {
   std::vector<InputGene> out;
-  auto add = [&out](SourcePlace place, int neurons, int sensors, int edge) {
+  auto add = [&out](SourcePlace place, int neurons, int sensors, int muscles, int edge) {
     for (int k = 0; k < neurons; ++k) out.push_back({place, SourceKind::Neuron, k, edge, 1.0});
     for (int k = 0; k < sensors; ++k) out.push_back({place, SourceKind::Sensor, k, edge, 1.0});
+    for (int k = 0; k < muscles; ++k) out.push_back({place, SourceKind::Muscle, k, edge, 1.0});
   };
   auto add_node = [&](SourcePlace place, int n, int edge) {
-    add(place, count_of(g, n, SourceKind::Neuron), count_of(g, n, SourceKind::Sensor), edge);
+    add(place, count_of(g, n, SourceKind::Neuron), count_of(g, n, SourceKind::Sensor),
+        count_of(g, n, SourceKind::Muscle), edge);
   };
   if (owner >= 0) {
     add_node(SourcePlace::Self, owner, 0);
     std::vector<int> ps = parents_of(g, owner);
     if (!ps.empty()) {
-      int nn = std::numeric_limits<int>::max(), ns = nn;
+      int nn = std::numeric_limits<int>::max(), ns = nn, nm = nn;
       for (int p : ps) {
         nn = std::min(nn, count_of(g, p, SourceKind::Neuron));
         ns = std::min(ns, count_of(g, p, SourceKind::Sensor));
+        nm = std::min(nm, count_of(g, p, SourceKind::Muscle));
       }
-      add(SourcePlace::Parent, nn, ns, 0);
+      add(SourcePlace::Parent, nn, ns, nm, 0);
     }
     const auto& edges = g.nodes[owner].edges;
     for (int e = 0; e < static_cast<int>(edges.size()); ++e)
@@ -298,7 +307,7 @@ std::vector<InputGene> source_candidates(const Genome& g, int owner) {
     add_node(SourcePlace::Root, 0, 0);
   }
   if (dialect_rules(g.dialect).global_neurons)
-    add(SourcePlace::Global, static_cast<int>(g.global_neurons.size()), 0, 0);
+    add(SourcePlace::Global, static_cast<int>(g.global_neurons.size()), 0, 0, 0);
   return out;
 }
 
@@ -326,16 +335,28 @@ int repair_sources(Genome& g, SourceFix fix, Rng* rng) {
 
 // ---------------------------------------------------------------- removals
 
-void remove_neuron(Genome& g, int node, int k, SourceFix fix, Rng* rng) {
-  assert(node >= 0 && node < n_nodes(g) && k >= 0 &&
-         k < static_cast<int>(g.nodes[node].neurons.size()));
+namespace {
+
+// Removes unit k of a node's `units` (neurons, sensors, or effectors, whose
+// muscles' lengths are sources): readers of a later unit of that node are
+// renumbered, readers of unit k fixed by `fix`.
+template <class Unit>
+void remove_read_unit(Genome& g, int node, int k, SourceKind kind, std::vector<Unit> NodeGene::*units,
+                      SourceFix fix, Rng* rng) {
+  assert(node >= 0 && node < n_nodes(g) && k >= 0 && k < static_cast<int>((g.nodes[node].*units).size()));
   for_each_inputs(g, [&](int owner, std::vector<InputGene>& inputs) {
     for (InputGene& in : inputs)
-      if (in.kind == SourceKind::Neuron && reads_node(g, owner, in, node)) shift_index(in.index, k);
+      if (in.kind == kind && reads_node(g, owner, in, node)) shift_index(in.index, k);
   });
-  auto& ns = g.nodes[node].neurons;
-  ns.erase(ns.begin() + k);
+  auto& us = g.nodes[node].*units;
+  us.erase(us.begin() + k);
   repair_sources(g, fix, rng);
+}
+
+}  // namespace
+
+void remove_neuron(Genome& g, int node, int k, SourceFix fix, Rng* rng) {
+  remove_read_unit(g, node, k, SourceKind::Neuron, &NodeGene::neurons, fix, rng);
 }
 
 void remove_global_neuron(Genome& g, int k, SourceFix fix, Rng* rng) {
@@ -349,15 +370,11 @@ void remove_global_neuron(Genome& g, int k, SourceFix fix, Rng* rng) {
 }
 
 void remove_sensor(Genome& g, int node, int k, SourceFix fix, Rng* rng) {
-  assert(node >= 0 && node < n_nodes(g) && k >= 0 &&
-         k < static_cast<int>(g.nodes[node].sensors.size()));
-  for_each_inputs(g, [&](int owner, std::vector<InputGene>& inputs) {
-    for (InputGene& in : inputs)
-      if (in.kind == SourceKind::Sensor && reads_node(g, owner, in, node)) shift_index(in.index, k);
-  });
-  auto& ss = g.nodes[node].sensors;
-  ss.erase(ss.begin() + k);
-  repair_sources(g, fix, rng);
+  remove_read_unit(g, node, k, SourceKind::Sensor, &NodeGene::sensors, fix, rng);
+}
+
+void remove_effector(Genome& g, int node, int k, SourceFix fix, Rng* rng) {
+  remove_read_unit(g, node, k, SourceKind::Muscle, &NodeGene::effectors, fix, rng);
 }
 
 void remove_edge(Genome& g, int node, int k, SourceFix fix, Rng* rng) {

@@ -84,6 +84,12 @@ void remove_global_neuron(Genome& g, int k, SourceFix fix = SourceFix::Remove, R
 void remove_sensor(Genome& g, int node, int k, SourceFix fix = SourceFix::Remove,
                    Rng* rng = nullptr);
 
+/// Removes effector `k` of node `node`. In muscle dialects an effector is a
+/// muscle whose length is a source: its readers are renumbered and fixed
+/// as for a sensor.
+void remove_effector(Genome& g, int node, int k, SourceFix fix = SourceFix::Remove,
+                     Rng* rng = nullptr);
+
 /// Removes edge `k` of node `node`: `child` sources of that node on later
 /// edges are renumbered, those on edge `k` are fixed. Nodes left unreachable
 /// stay (see remove_unreachable).

@@ -218,8 +218,9 @@ constexpr std::array kJoints{JointType::Fixed,     JointType::Hinge,  JointType:
 constexpr std::array kFaces{Face::PosX, Face::NegX, Face::PosY, Face::NegY, Face::PosZ, Face::NegZ};
 constexpr std::array kPlaces{SourcePlace::Self, SourcePlace::Parent, SourcePlace::Child,
                              SourcePlace::Root, SourcePlace::Global};
-constexpr std::array kSensorTypes{SensorType::JointAngle, SensorType::Contact};
-constexpr std::array kDialects{Dialect::Sims1994, Dialect::Miconi2006, Dialect::Chaumont2007};
+constexpr std::array kSensorTypes{SensorType::JointAngle, SensorType::Contact, SensorType::Photoreceptor};
+constexpr std::array kDialects{Dialect::Sims1994, Dialect::Miconi2006, Dialect::Chaumont2007,
+                               Dialect::Lessin2015};
 constexpr std::array<std::string_view, 3> kAxisNames{"x", "y", "z"};
 
 // a name from `all` (spelled as to_string() spells it)
@@ -368,15 +369,17 @@ class Reader {
   }
 
   InputGene source(const json& j, const std::string& path) const {
-    expect_object(j, path, {"from", "neuron", "sensor", "edge", "weight"});
+    expect_object(j, path, {"from", "neuron", "sensor", "muscle", "edge", "weight"});
     InputGene in;
     in.place = name_of(require(j, path, "from"), field_path(path, "from"), "source place", kPlaces);
     const json* neuron = find(j, "neuron");
     const json* sensor = find(j, "sensor");
-    if ((neuron != nullptr) == (sensor != nullptr))
-      fail(path, "a source names exactly one of \"neuron\" and \"sensor\"", j);
-    in.kind = neuron ? SourceKind::Neuron : SourceKind::Sensor;
-    in.index = integer(neuron ? *neuron : *sensor, field_path(path, neuron ? "neuron" : "sensor"));
+    const json* muscle = find(j, "muscle");
+    if ((neuron != nullptr) + (sensor != nullptr) + (muscle != nullptr) != 1)
+      fail(path, "a source names exactly one of \"neuron\", \"sensor\" and \"muscle\"", j);
+    in.kind = neuron ? SourceKind::Neuron : sensor ? SourceKind::Sensor : SourceKind::Muscle;
+    const char* key = neuron ? "neuron" : sensor ? "sensor" : "muscle";
+    in.index = integer(neuron ? *neuron : sensor ? *sensor : *muscle, field_path(path, key));
     const json* edge = find(j, "edge");
     if (in.place == SourcePlace::Child) {
       in.edge = integer(require(j, path, "edge"), field_path(path, "edge"));
@@ -388,31 +391,45 @@ class Reader {
   }
 
   SensorGene sensor(const json& j, const std::string& path) const {
-    expect_object(j, path, {"type", "dof", "face", "locked"});
+    expect_object(j, path, {"type", "dof", "face", "direction", "locked"});
     SensorGene s;
     if (const json* v = find(j, "locked")) s.locked = boolean(*v, field_path(path, "locked"));
     s.type =
         name_of(require(j, path, "type"), field_path(path, "type"), "sensor type", kSensorTypes);
     const json* dof = find(j, "dof");
     const json* face = find(j, "face");
-    if (s.type == SensorType::JointAngle) {
-      if (face) fail(field_path(path, "face"), "only contact sensors have a face", *face);
-      if (dof) s.dof = integer(*dof, field_path(path, "dof"));
-    } else {
-      if (dof) fail(field_path(path, "dof"), "only joint_angle sensors have a dof", *dof);
-      if (face) s.face = name_of(*face, field_path(path, "face"), "face", kFaces);
-    }
+    const json* direction = find(j, "direction");
+    if (dof && s.type != SensorType::JointAngle)
+      fail(field_path(path, "dof"), "only joint_angle sensors have a dof", *dof);
+    if (face && s.type != SensorType::Contact)
+      fail(field_path(path, "face"), "only contact sensors have a face", *face);
+    if (direction && s.type != SensorType::Photoreceptor)
+      fail(field_path(path, "direction"), "only photoreceptors have a direction", *direction);
+    if (dof) s.dof = integer(*dof, field_path(path, "dof"));
+    if (face) s.face = name_of(*face, field_path(path, "face"), "face", kFaces);
+    if (s.type == SensorType::Photoreceptor)
+      s.direction = vec3(require(j, path, "direction"), field_path(path, "direction"));
     return s;
   }
 
   EffectorGene effector(const json& j, const std::string& path) const {
-    expect_object(j, path, {"dof", "bias", "inputs", "locked"});
+    expect_object(j, path, {"dof", "muscle", "bias", "inputs", "locked"});
     EffectorGene e;
     if (const json* v = find(j, "locked")) e.locked = boolean(*v, field_path(path, "locked"));
     if (const json* v = find(j, "dof")) e.dof = integer(*v, field_path(path, "dof"));
+    if (const json* v = find(j, "muscle")) e.muscle = muscle(*v, field_path(path, "muscle"));
     if (const json* v = find(j, "bias")) e.bias = number(*v, field_path(path, "bias"));
     e.inputs = list(j, path, "inputs", &Reader::source);
     return e;
+  }
+
+  MuscleGene muscle(const json& j, const std::string& path) const {
+    expect_object(j, path, {"parent_dir", "child_dir", "strength"});
+    MuscleGene m;
+    m.parent_dir = vec3(require(j, path, "parent_dir"), field_path(path, "parent_dir"));
+    m.child_dir = vec3(require(j, path, "child_dir"), field_path(path, "child_dir"));
+    m.strength = number(require(j, path, "strength"), field_path(path, "strength"));
+    return m;
   }
 
   EdgeGene edge(const json& j, const std::string& path) const {
@@ -605,7 +622,7 @@ J source_json(const InputGene& in) {
   J o = J::object();
   o["from"] = std::string(to_string(in.place));
   if (in.place == SourcePlace::Child) o["edge"] = in.edge;
-  o[in.kind == SourceKind::Neuron ? "neuron" : "sensor"] = in.index;
+  o[in.kind == SourceKind::Neuron ? "neuron" : in.kind == SourceKind::Sensor ? "sensor" : "muscle"] = in.index;
   o["weight"] = in.weight;
   return o;
 }
@@ -664,6 +681,8 @@ J node_json(const NodeGene& n, NeuronSetId set) {
     so["type"] = std::string(to_string(s.type));
     if (s.type == SensorType::JointAngle)
       so["dof"] = s.dof;
+    else if (s.type == SensorType::Photoreceptor)
+      so["direction"] = vec_json<J>(s.direction);
     else
       so["face"] = std::string(to_string(s.face));
     if (s.locked) so["locked"] = true;
@@ -673,7 +692,15 @@ J node_json(const NodeGene& n, NeuronSetId set) {
   J effectors = J::array();
   for (const EffectorGene& e : n.effectors) {
     J eo = J::object();
-    eo["dof"] = e.dof;
+    if (e.muscle) {
+      J mo = J::object();
+      mo["parent_dir"] = vec_json<J>(e.muscle->parent_dir);
+      mo["child_dir"] = vec_json<J>(e.muscle->child_dir);
+      mo["strength"] = e.muscle->strength;
+      eo["muscle"] = mo;
+    } else {
+      eo["dof"] = e.dof;
+    }
     eo["bias"] = e.bias;
     eo["inputs"] = inputs_json<J>(e.inputs);
     if (e.locked) eo["locked"] = true;

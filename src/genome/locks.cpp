@@ -160,6 +160,8 @@ std::optional<std::string> lock_problem(const Genome& g) {
     if (s.lock & kLockUnits) return true;
     if (in.kind == SourceKind::Neuron)
       return in.index >= 0 && in.index < static_cast<int>(s.neurons.size()) && s.neurons[in.index].locked;
+    if (in.kind == SourceKind::Muscle)  // a muscle's length: its effector
+      return in.index >= 0 && in.index < static_cast<int>(s.effectors.size()) && s.effectors[in.index].locked;
     return in.index >= 0 && in.index < static_cast<int>(s.sensors.size()) && s.sensors[in.index].locked;
   };
   auto source_locked = [&](int owner, const InputGene& in) -> bool {
@@ -189,7 +191,9 @@ std::optional<std::string> lock_problem(const Genome& g) {
       if (!source_locked(owner, ins[k]))
         return path + ".inputs[" + std::to_string(k) + "]: a locked unit reads only locked units (through a " +
                "parent only with in_edges locked, a child only with out_edges locked), got a source from " +
-               std::string(to_string(ins[k].place)) + " " + (ins[k].kind == SourceKind::Neuron ? "neuron " : "sensor ") +
+               std::string(to_string(ins[k].place)) + " " + (ins[k].kind == SourceKind::Neuron   ? "neuron "
+                                                                 : ins[k].kind == SourceKind::Sensor ? "sensor "
+                                                                                                      : "muscle ") +
                std::to_string(ins[k].index);
     return std::nullopt;
   };

@@ -349,7 +349,8 @@ struct GraphMutator {
     j.type = t;
     int dofs = joint_dofs(t);
     j.limits.clear();
-    for (int k = 0; k < dofs; ++k) j.limits.push_back(random_limit(t, k));
+    if (!r.joined_parts_collide)  // lessin2015: collisions limit joints (III-B)
+      for (int k = 0; k < dofs; ++k) j.limits.push_back(random_limit(t, k));
     if ((t == JointType::Universal || t == JointType::Spherical) &&
         norm(cross(j.axis1, j.axis2)) < 1e-3)
       j.axis2 =
@@ -364,6 +365,7 @@ struct GraphMutator {
         bx::remove_sensor(g, i, s, SourceFix::Reassign, &rng);
     }
     auto& efs = g.nodes[i].effectors;
+    if (r.muscle_effectors) return;  // muscles pull across any joint
     for (int k = static_cast<int>(efs.size()) - 1; k >= 0; --k) {
       if (efs[k].dof < dofs) continue;
       if (dofs > 0)
@@ -432,6 +434,8 @@ struct GraphMutator {
       if (all_units || s.locked || !hit()) continue;
       if (s.type == SensorType::JointAngle) {
         if (dofs > 1) s.dof = static_cast<int>(rng.below(dofs));
+      } else if (s.type == SensorType::Photoreceptor) {
+        s.direction = nudge_axis(s.direction);
       } else {
         s.face = static_cast<Face>(rng.below(6));
       }
@@ -439,7 +443,15 @@ struct GraphMutator {
     Range eb = effector_bias_bounds(def, g.dialect);
     for (EffectorGene& ef : g.nodes[i].effectors) {
       if (all_units || ef.locked) continue;
-      if (dofs > 1 && hit()) ef.dof = static_cast<int>(rng.below(dofs));
+      if (ef.muscle) {
+        // lessin2015 III-E: anchors and strength evolve
+        MuscleGene& m = *ef.muscle;
+        if (hit()) m.parent_dir = nudge_axis(m.parent_dir);
+        if (hit()) m.child_dir = nudge_axis(m.child_dir);
+        if (hit()) m.strength = scale(m.strength, def.muscle_strength_range.lo, def.muscle_strength_range.hi);
+      } else if (dofs > 1 && hit()) {
+        ef.dof = static_cast<int>(rng.below(dofs));
+      }
       if (hit()) ef.bias = perturb(ef.bias, eb.lo, eb.hi);
       inputs(i, ef.inputs);
     }
@@ -595,9 +607,14 @@ struct GraphMutator {
         std::find(r.sensors.begin(), r.sensors.end(), SensorType::JointAngle) != r.sensors.end();
     bool contact_ok =
         std::find(r.sensors.begin(), r.sensors.end(), SensorType::Contact) != r.sensors.end();
-    if (!angle_ok && !contact_ok) return;
+    bool photo_ok =
+        std::find(r.sensors.begin(), r.sensors.end(), SensorType::Photoreceptor) != r.sensors.end();
+    if (!angle_ok && !contact_ok && !photo_ok) return;
     SensorGene s;
-    if (angle_ok && (!contact_ok || rng.chance(0.5))) {
+    if (!angle_ok && !contact_ok) {
+      s.type = SensorType::Photoreceptor;  // lessin2015 III-D
+      s.direction = random_direction(rng);
+    } else if (angle_ok && (!contact_ok || rng.chance(0.5))) {
       s.type = SensorType::JointAngle;
       s.dof = static_cast<int>(rng.below(dofs));
     } else {
@@ -625,12 +642,16 @@ struct GraphMutator {
   void add_effector() {
     std::vector<int> cands;
     for (int i = 0; i < n_nodes(); ++i)
-      if (joint_dofs(g.nodes[i].joint.type) > 0 && has_parent(g, i)) cands.push_back(i);
+      if ((r.muscle_effectors || joint_dofs(g.nodes[i].joint.type) > 0) && has_parent(g, i))
+        cands.push_back(i);
     if (cands.empty()) return;
     int i = cands[rng.below(cands.size())];
     Range eb = effector_bias_bounds(def, g.dialect);
     EffectorGene e;
-    e.dof = static_cast<int>(rng.below(joint_dofs(g.nodes[i].joint.type)));
+    if (r.muscle_effectors)
+      e.muscle = random_muscle(def, rng);  // lessin2015 III-E: a new muscle to the parent
+    else
+      e.dof = static_cast<int>(rng.below(joint_dofs(g.nodes[i].joint.type)));
     e.bias = rng.uniform(eb.lo, eb.hi);
     e.inputs = random_inputs(
         g, i,
@@ -644,10 +665,14 @@ struct GraphMutator {
     for (const NodeGene& n : g.nodes) total += static_cast<int>(n.effectors.size());
     if (total == 0) return;
     int x = static_cast<int>(rng.below(total));
-    for (NodeGene& n : g.nodes) {
-      int c = static_cast<int>(n.effectors.size());
+    for (int i = 0; i < n_nodes(); ++i) {
+      int c = static_cast<int>(g.nodes[i].effectors.size());
       if (x < c) {
-        n.effectors.erase(n.effectors.begin() + x);
+        auto& efs = g.nodes[i].effectors;
+        if (r.muscle_effectors)  // a muscle's length may be read: its readers renumbered, reassigned
+          bx::remove_effector(g, i, x, SourceFix::Reassign, &rng);
+        else
+          efs.erase(efs.begin() + x);
         return;
       }
       x -= c;

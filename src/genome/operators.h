@@ -178,6 +178,12 @@ struct OperatorDef {
   double p_effector_per_dof = 0;
   /// Graph dialects: inputs of a random effector. Our choice.
   IntRange effector_inputs_at_creation{};
+  /// Muscle dialects (lessin2015): muscles of a random non-root part, to
+  /// its parent (two make an antagonistic pair). Our choice.
+  IntRange muscles_at_creation{};
+  /// Muscle dialects: a random muscle's strength, log-uniform, and the range
+  /// mutation keeps it in (N/m at full activation; lessin2015 gives none).
+  Range muscle_strength_range{};
   /// Fraction of connection slots filled in a new miconi2006 neuron or
   /// actuator (Table 1: 75%). Positional neurons fill every argument.
   double connection_fraction = 0;
@@ -281,6 +287,14 @@ double normal(Rng& rng);
 Range weight_bounds(const OperatorDef& def, Dialect d);
 Range bias_bounds(const OperatorDef& def, Dialect d);
 Range effector_bias_bounds(const OperatorDef& def, Dialect d);
+
+/// A random unit vector (uniform on the sphere): a photoreceptor's or a
+/// muscle anchor's direction from its part's centre.
+Vec3 random_direction(Rng& rng);
+
+/// A random muscle (lessin2015 III-E): random anchor directions on the
+/// parent and on the part, a strength log-uniform in def.muscle_strength_range.
+MuscleGene random_muscle(const OperatorDef& def, Rng& rng);
 
 /// A random part of `d`'s dialect: shape, size, joint, sensors, effectors
 /// and neurons (without inputs). A root part has no joint-angle sensor and

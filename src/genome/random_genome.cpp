@@ -42,6 +42,10 @@ OperatorDef default_operators(Dialect d) {
   def.sensors_at_creation = {0, 2};
   def.p_effector_per_dof = 0.8;
   def.effector_inputs_at_creation = {1, 2};
+  def.muscles_at_creation = {1, 2};
+  // a 10 cm stretch of a full-strength muscle pulls with 10 N to 2 kN: a 2 kg
+  // part (sizes below, water) weighs 20 N
+  def.muscle_strength_range = {100, 20000};
   def.connection_fraction = 0.75;  // miconi2006 Table 1
   def.connection_slots = 3;        // miconi2006 Table 1
   def.neuron_slots = 6;            // miconi2006 Table 1
@@ -113,6 +117,22 @@ OperatorDef default_operators(Dialect d) {
       def.joint_weights = {{JointType::Hinge, 0.9}, {JointType::Slider, 0.1}};  // 5.1: 1 dof
       def.p_reflect = 0.2;
       def.weight_range = {-1, 1};  // Table I: values in [-1, 1]
+      def.structure = graph;
+      break;
+    case Dialect::Lessin2015:
+      def.max_genes = 20;  // the dialect's bound (our choice)
+      def.size_min = {0.1, 0.05, 0.05};
+      def.size_max = {0.6, 0.4, 0.4};
+      // III-B: boxes, spheres and capsules; a photoreceptor (its only sensor,
+      // III-D) on some parts at creation
+      def.shape_weights = {{Shape::Box, 0.5}, {Shape::Sphere, 0.25}, {Shape::Capsule, 0.25}};
+      def.joint_weights = {{JointType::Hinge, 0.4},  {JointType::Spherical, 0.3},
+                           {JointType::Fixed, 0.1},  {JointType::Slider, 0.1},
+                           {JointType::Cylindrical, 0.1}};
+      def.sensors_at_creation = {0, 1};
+      def.p_reflect = 0.2;
+      def.weight_range = {-1, 1};
+      def.effector_bias_range = {0, 0.5};  // a muscle's resting activation, in the set's [0, 1]
       def.structure = graph;
       break;
   }
@@ -398,6 +418,7 @@ JointGene random_joint(Dialect d, const OperatorDef& def, Rng& rng) {
       break;
   }
   if (dialect_rules(d).hinge_limits_fixed) return j;  // limits fixed by the dialect (miconi2006 Table 1)
+  if (dialect_rules(d).joined_parts_collide) return j;  // limited by collisions (lessin2015 III-B)
   for (int k = 0; k < joint_dofs(j.type); ++k) {
     if (dof_is_angular(j.type, k))
       j.limits.push_back({-rng.uniform(def.angle_limit_min, def.angle_limit_max),
@@ -417,7 +438,11 @@ SensorGene random_sensor(Dialect d, const NodeGene& node, bool has_joint, Rng& r
   bool contact_ok =
       std::find(r.sensors.begin(), r.sensors.end(), SensorType::Contact) != r.sensors.end();
   SensorGene s;
-  if (angle_ok && (!contact_ok || rng.chance(0.5))) {
+  if (!angle_ok && !contact_ok) {
+    // lessin2015: photoreceptors only
+    s.type = SensorType::Photoreceptor;
+    s.direction = random_direction(rng);
+  } else if (angle_ok && (!contact_ok || rng.chance(0.5))) {
     s.type = SensorType::JointAngle;
     s.dof = uniform_int(rng, 0, joint_dofs(node.joint.type) - 1);
   } else {
@@ -443,6 +468,22 @@ Range effector_bias_bounds(const OperatorDef& def, Dialect d) {
 }
 
 // ---------------------------------------------------------------- building blocks
+
+Vec3 random_direction(Rng& rng) {
+  for (;;) {
+    Vec3 d{normal(rng), normal(rng), normal(rng)};
+    if (norm(d) > 1e-6) return normalized(d);
+  }
+}
+
+MuscleGene random_muscle(const OperatorDef& def, Rng& rng) {
+  MuscleGene m;
+  m.parent_dir = random_direction(rng);
+  m.child_dir = random_direction(rng);
+  const Range& k = def.muscle_strength_range;
+  m.strength = k.lo * std::exp(rng.uniform() * std::log(k.hi / k.lo));
+  return m;
+}
 
 NeuronGene random_neuron(Dialect d, const OperatorDef& def, Rng& rng) {
   NeuronSetId set = dialect_rules(d).neuron_set;
@@ -484,7 +525,16 @@ NodeGene random_part(Dialect d, bool root, const OperatorDef& def, Rng& rng) {
   }
   int sensors = uniform_int(rng, def.sensors_at_creation.lo, def.sensors_at_creation.hi);
   for (int i = 0; i < sensors; ++i) n.sensors.push_back(random_sensor(d, n, !root, rng));
-  if (!root) {
+  if (!root && r.muscle_effectors) {
+    // lessin2015 III-E: muscles to the parent, whatever the joint
+    Range b = effector_bias_bounds(def, d);
+    int k = uniform_int(rng, def.muscles_at_creation.lo, def.muscles_at_creation.hi);
+    for (int i = 0; i < k; ++i) {
+      EffectorGene e{0, rng.uniform(b.lo, b.hi), {}};
+      e.muscle = random_muscle(def, rng);
+      n.effectors.push_back(std::move(e));
+    }
+  } else if (!root) {
     Range b = effector_bias_bounds(def, d);
     for (int k = 0; k < joint_dofs(n.joint.type); ++k)
       if (rng.chance(def.p_effector_per_dof))
@@ -679,11 +729,33 @@ void normalize(Genome& g, const OperatorDef& def, Rng& rng) {
       } else {
         sg.dof = 0;
       }
+      if (sg.type == SensorType::Photoreceptor) {
+        sg.face = Face::NegZ;
+        if (!(norm(sg.direction) > 1e-9) || !std::isfinite(norm(sg.direction)))
+          sg.direction = random_direction(rng);
+      } else {
+        sg.direction = SensorGene{}.direction;
+      }
     }
-    // effectors on existing dofs
     auto& efs = g.nodes[i].effectors;
-    for (int k = static_cast<int>(efs.size()) - 1; k >= 0; --k)
-      if (efs[k].dof < 0 || efs[k].dof >= dofs) efs.erase(efs.begin() + k);
+    if (r.muscle_effectors) {
+      // every effector a muscle, with a valid one (lessin2015 III-E)
+      for (EffectorGene& e : efs) {
+        e.dof = 0;
+        if (!e.muscle) e.muscle = random_muscle(def, rng);
+        MuscleGene& m = *e.muscle;
+        auto direction_ok = [](Vec3 d) { return std::isfinite(norm(d)) && norm(d) > 1e-9; };
+        if (!direction_ok(m.parent_dir)) m.parent_dir = random_direction(rng);
+        if (!direction_ok(m.child_dir)) m.child_dir = random_direction(rng);
+        if (!(m.strength > 0)) m.strength = def.muscle_strength_range.lo;
+        m.strength = std::min(m.strength, kMaxMuscleStrength);
+      }
+    } else {
+      // effectors on existing dofs
+      for (EffectorGene& e : efs) e.muscle.reset();
+      for (int k = static_cast<int>(efs.size()) - 1; k >= 0; --k)
+        if (efs[k].dof < 0 || efs[k].dof >= dofs) efs.erase(efs.begin() + k);
+    }
     if (r.limb_io) {
       NodeGene& m = g.nodes[i];
       Range eb = effector_bias_bounds(def, g.dialect);

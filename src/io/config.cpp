@@ -86,7 +86,8 @@ const std::vector<Field>& fields() {
       {"physics", "fudge_factor", Field::Real, 0, 1, {}, [](RunConfig& c) -> void* { return &c.sim.physics.fudge_factor; }, "share of a motor's force allowed at a joint stop (ODE's dParamFudgeFactor)"},
       {"physics", "contact_max_correcting_vel", Field::Real, 0, 1e6, {}, [](RunConfig& c) -> void* { return &c.sim.physics.contact_max_correcting_vel; }, "fastest depenetration of contacts (m/s; 0: unbounded)"},
       {"physics", "contact_surface_layer", Field::Real, 0, 1, {}, [](RunConfig& c) -> void* { return &c.sim.physics.contact_surface_layer; }, "depth contacts may sink before they push back (m)"},
-      {"motor", "model", Field::Choice, 0, 0, {"servo", "saturation", "torque", "pd"}, [](RunConfig& c) -> void* { return &c.sim.motor.model; }, "servo (miconi2006), saturation (chaumont2007 5.3), torque (sims1994), pd (a spring and damper towards a target angle: kp, kd)"},
+      {"motor", "model", Field::Choice, 0, 0, {"servo", "saturation", "torque", "pd", "muscle"}, [](RunConfig& c) -> void* { return &c.sim.motor.model; }, "servo (miconi2006), saturation (chaumont2007 5.3), torque (sims1994), pd (a spring and damper towards a target angle: kp, kd), muscle (lessin2015 III-E: each effector a muscle's activation; the lessin2015 dialect's, and only it)"},
+      {"motor", "muscle_damping", Field::Real, 0, 1e9, {}, [](RunConfig& c) -> void* { return &c.sim.motor.muscle_damping; }, "muscle: damper along each muscle's line, whatever its activation (N s/m)"},
       {"motor", "max_speed", Field::Real, 0, inf, {}, [](RunConfig& c) -> void* { return &c.sim.motor.max_speed; }, "servo: target speed at signal 1; saturation: the fixed high target speed (rad/s or m/s)"},
       {"motor", "max_force", Field::Real, 0, inf, {}, [](RunConfig& c) -> void* { return &c.sim.motor.max_force; }, "servo: torque cap (N m or N)"},
       {"motor", "off_brake", Field::Real, 0, 1, {}, [](RunConfig& c) -> void* { return &c.sim.motor.off_brake; }, "while the task holds the controller off (settling), each motor brakes its joint with this share of its full force (a joint's friction; 0: limp, frictionless)"},
@@ -101,6 +102,8 @@ const std::vector<Field>& fields() {
       {"develop", "max_parts", Field::Int, 0, 100000, {}, [](RunConfig& c) -> void* { return &c.sim.develop.max_parts; }, "most parts after development (0: the dialect's limit)"},
       {"develop", "max_body_length", Field::Real, 0, 1e6, {}, [](RunConfig& c) -> void* { return &c.sim.develop.max_body_length; }, "largest extent of the starting pose (m): longer creatures are not viable (0: no limit)"},
       {"develop", "overlap_margin", Field::Real, 0, 1, {}, [](RunConfig& c) -> void* { return &c.sim.develop.overlap_margin; }, "self-intersection test shrinks parts by this much (m)"},
+      {"develop", "collide_gap", Field::Real, 0, 10, {}, [](RunConfig& c) -> void* { return &c.sim.develop.collide_gap; }, "lessin2015 (joined parts collide): a child starts this share of its half-thickness off its parent (1: a box child turns 45 degrees about its thinner side before meeting it)"},
+      {"develop", "muscle_rest_fraction", Field::Real, 0, 1, {}, [](RunConfig& c) -> void* { return &c.sim.develop.muscle_rest_fraction; }, "lessin2015: a muscle's rest length as a share of its built length (below 1 an active muscle contracts)"},
       {"task", "seconds", Field::Real, 0, 1e6, {}, [](RunConfig& c) -> void* { return &c.sim.task.seconds; }, "evaluation length (s); with the chaumont2007 sequence, the measured phase"},
       {"task", "drop_height", Field::Real, 0, 1e3, {}, [](RunConfig& c) -> void* { return &c.sim.task.drop_height; }, "gap between the lowest part and the ground at the start (m)"},
       {"task", "metric", Field::Choice, 0, 0, {"planar", "x"}, [](RunConfig& c) -> void* { return &c.sim.task.metric; }, "planar: horizontal distance of the centre of mass; x: displacement along +x"},
@@ -130,7 +133,7 @@ const std::vector<Field>& fields() {
       {"throwing", "settle_timeout", Field::Real, 0, 1e4, {}, [](RunConfig& c) -> void* { return &c.sim.throwing.settle.timeout; }, "never settled within this (s): fitness 0"},
       {"replay", "fps", Field::Real, 1e-3, 1e4, {}, [](RunConfig& c) -> void* { return &c.sim.replay_fps; }, "replay frames per simulated second"},
       {"genotype", "kind", Field::Choice, 0, 0, creature_kind_names(), [](RunConfig& c) -> void* { return &c.sim.creature; }, "what a genotype develops into, body and controller: graph (Sims' graph genome, of genome.dialect: it grows its body and brain), or a kind with a fixed body and keys of its own (docs/config.md)"},
-      {"genome", "dialect", Field::Choice, 0, 0, {"sims1994", "miconi2006", "chaumont2007"}, [](RunConfig& c) -> void* { return &c.dialect; }, "sims1994, miconi2006 or chaumont2007: picks every default"},
+      {"genome", "dialect", Field::Choice, 0, 0, {"sims1994", "miconi2006", "chaumont2007", "lessin2015"}, [](RunConfig& c) -> void* { return &c.dialect; }, "sims1994, miconi2006, chaumont2007 or lessin2015: picks every default"},
       {"evolution", "algorithm", Field::Choice, 0, 0, {"generational", "steady_state"}, [](RunConfig& c) -> void* { return &c.evolution.algorithm; }, "generational (chaumont2007) or steady_state (miconi2006)"},
       {"evolution", "population", Field::Int, 3, 1000000, {}, [](RunConfig& c) -> void* { return &c.evolution.population; }, "individuals in the population"},
       {"evolution", "generations", Field::Int, 1, 1000000, {}, [](RunConfig& c) -> void* { return &c.evolution.generations; }, "generational: generations, the random one included"},
@@ -444,7 +447,7 @@ Result<RunConfig> read_run_config(std::string_view text, std::string_view source
       if (auto name = root["genome"]["dialect"].value<std::string>()) {
         auto parsed = parse_dialect(*name);
         if (!parsed)
-          return Error{src + ": genome.dialect: expected one of sims1994, miconi2006, chaumont2007, got \"" +
+          return Error{src + ": genome.dialect: expected one of sims1994, miconi2006, chaumont2007, lessin2015, got \"" +
                        *name + "\""};
         d = *parsed;
       }
@@ -472,6 +475,14 @@ Result<RunConfig> read_run_config(std::string_view text, std::string_view source
                  std::string(to_string(cfg.dialect)) + "\""};
   if (cfg.sim.task_kind == TaskKind::Throwing && !cfg.operators.catapult.enabled)
     return Error{std::string(source) + ": task.kind: \"throwing\" needs catapult.enabled = true"};
+  // muscles are the muscle dialect's effectors, and its effectors are muscles
+  if (cfg.sim.creature == CreatureKind::Graph &&
+      (cfg.sim.motor.model == MotorModel::Muscle) != dialect_rules(cfg.dialect).muscle_effectors)
+    return Error{std::string(source) + ": motor.model: " +
+                 (dialect_rules(cfg.dialect).muscle_effectors
+                      ? "genome.dialect \"" + std::string(to_string(cfg.dialect)) + "\" actuates by muscles only and needs \"muscle\", got another model"
+                      : std::string("\"muscle\" needs a dialect whose effectors are muscles (lessin2015), got genome.dialect \"") +
+                            std::string(to_string(cfg.dialect)) + "\"")};
   // a PD motor's damper is a motor row of its own (docs/physics.md cause 28):
   // ODE's joint motor at a stop would turn its unlimited force into a torque
   if (needs_own_motor_row(cfg.sim.motor.model) && cfg.sim.physics.powered_stops != PoweredStops::Separate)
@@ -529,10 +540,10 @@ std::string config_to_toml(const RunConfig& cfg_in, bool sim_only) {
 
 std::string config_reference_markdown() {
   // one row per key: the dialects' defaults side by side
-  RunConfig d[3] = {default_run_config(Dialect::Sims1994), default_run_config(Dialect::Miconi2006),
-                    default_run_config(Dialect::Chaumont2007)};
+  RunConfig d[4] = {default_run_config(Dialect::Sims1994), default_run_config(Dialect::Miconi2006),
+                    default_run_config(Dialect::Chaumont2007), default_run_config(Dialect::Lessin2015)};
   std::ostringstream ss;
-  ss << "| key | sims1994 | miconi2006 | chaumont2007 | meaning |\n|---|---|---|---|---|\n";
+  ss << "| key | sims1994 | miconi2006 | chaumont2007 | lessin2015 | meaning |\n|---|---|---|---|---|---|\n";
   for (const auto& f : fields()) {
     ss << "| `" << f.section << "." << f.key << "` |";
     for (auto& c : d) {

@@ -1,6 +1,6 @@
 // The world's sensors, a table of kinds (World::Impl::sensor): a joint's
-// angle (scaled to its range), a face's contact or a photoreceptor's light,
-// as the brain reads them.
+// angle (scaled to its range), a face's contact, a photoreceptor's light or a
+// muscle's length, as the brain reads them.
 #include <ode/ode.h>
 
 #include <algorithm>
@@ -62,6 +62,21 @@ const World::Impl::SensorRow& World::Impl::sensor(SensorType type) {
            sum += l.strength * cos / (1 + (d / l.range) * (d / l.range));
          }
          return std::clamp(sum, 0.0, 1.0);
+       }},
+      // a muscle's length (lessin2015 III-E's proprioceptive node): its
+      // anchors' distance over twice its built length, so 0.5 as built; in [0, 1]
+      {SensorType::MuscleLength,
+       [](const Impl& w, const CreatureModel& m, std::size_t i) {
+         const SensorModel& s = m.sensors[i];
+         if (s.muscle < 0 || s.muscle >= static_cast<int>(w.muscles.size())) return 0.0;
+         const MuscleModel& mm = m.muscles[s.muscle];
+         const double unit = mm.length > 0 ? mm.length : mm.rest_length;
+         if (!(unit > 0)) return 0.0;
+         dVector3 a, b;
+         dJointGetDBallAnchor1(w.muscles[s.muscle], a);
+         dJointGetDBallAnchor2(w.muscles[s.muscle], b);
+         const double length = norm(vec(a) - vec(b));
+         return std::clamp(length / (2 * unit), 0.0, 1.0);
        }},
   };
   const SensorRow& row = rows[static_cast<std::size_t>(type)];

@@ -9,15 +9,12 @@
 
 #include "genome/dialect.h"
 #include "genome/genome_json.h"
+#include "support/creatures.h"
 
 namespace bx {
 namespace {
 
-Genome load(const std::string& name) {
-  auto g = load_genome(std::string(BESTIARY_SOURCE_DIR) + "/tests/creatures/" + name);
-  EXPECT_TRUE(g.ok()) << g.error();
-  return g.ok() ? *g : Genome{};
-}
+Genome load(const std::string& name) { return bxtest::load_creature(name); }
 
 CreatureModel grow(const std::string& name) {
   Development d = develop(load(name));

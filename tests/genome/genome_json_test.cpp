@@ -315,7 +315,7 @@ TEST(GenomeJsonErrors, BadEnum) {
       "parent, child, root, global), got \"sibling\"");
   EXPECT_EQ(
       err(edit(kSims, R"("dialect": "sims1994")", R"("dialect": "sims")")),
-      "t.json: dialect: unknown dialect (expected one of sims1994, miconi2006, chaumont2007), "
+      "t.json: dialect: unknown dialect (expected one of sims1994, miconi2006, chaumont2007, lessin2015), "
       "got \"sims\"");
   EXPECT_EQ(
       err(edit(kSims, R"("face": "+x")", R"("face": "+x", "reflect": ["w"])")),
@@ -338,8 +338,8 @@ TEST(GenomeJsonErrors, UnknownField) {
 TEST(GenomeJsonErrors, SourceForm) {
   EXPECT_EQ(err(edit(kSims, R"({"from": "self", "sensor": 0})",
                      R"({"from": "self", "sensor": 0, "neuron": 0})")),
-            "t.json: nodes[0].neurons[0].inputs[0]: a source names exactly one of \"neuron\" and "
-            "\"sensor\", "
+            "t.json: nodes[0].neurons[0].inputs[0]: a source names exactly one of \"neuron\", "
+            "\"sensor\" and \"muscle\", "
             "got {\"from\": \"self\", \"neuron\": 0, \"sensor\": 0}");
   EXPECT_EQ(err(edit(kSims, R"("edge": 0, "neuron": 0)", R"("neuron": 0)")),
             "t.json: nodes[0].neurons[0].inputs[1]: missing required field \"edge\", got "

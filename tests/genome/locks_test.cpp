@@ -119,7 +119,7 @@ TEST_P(Locks, AFullyLockedGenomeNeverChanges) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(GraphDialects, Locks, ::testing::Values(Dialect::Sims1994, Dialect::Chaumont2007),
+INSTANTIATE_TEST_SUITE_P(GraphDialects, Locks, ::testing::Values(Dialect::Sims1994, Dialect::Chaumont2007, Dialect::Lessin2015),
                          [](const auto& info) { return std::string(to_string(info.param)); });
 
 // a two-node chaumont2007 genome: root box with a neuron, one limb on a hinge

@@ -29,6 +29,7 @@ Mix mix_for(Dialect d) {
     case Dialect::Miconi2006: return {0.04, 0.04, 1.0, 4, 1.0 / 3, 1.0 / 3};  // 5.1, 5.2
     case Dialect::Chaumont2007: return {0.10, 0.05, 0.10, 1, 0.4, 0.3};      // 5.7
     case Dialect::Sims1994: break;
+    case Dialect::Lessin2015: return {0.10, 0.05, 0.10, 1, 0.4, 0.3};  // default_evolution's (chaumont2007's)
   }
   return {0.05, 0.05, 1.0, 1, 0.4, 0.3};
 }
@@ -68,7 +69,7 @@ class Operators : public ::testing::TestWithParam<Dialect> {};
 
 INSTANTIATE_TEST_SUITE_P(Dialects, Operators,
                          ::testing::Values(Dialect::Sims1994, Dialect::Miconi2006,
-                                           Dialect::Chaumont2007),
+                                           Dialect::Chaumont2007, Dialect::Lessin2015),
                          [](const auto& info) { return name_of(info.param); });
 
 // ---------------------------------------------------------------- validity
@@ -232,7 +233,7 @@ TEST_P(Operators, JsonRoundTrip) {
 class GraphOperators : public ::testing::TestWithParam<Dialect> {};
 
 INSTANTIATE_TEST_SUITE_P(Dialects, GraphOperators,
-                         ::testing::Values(Dialect::Sims1994, Dialect::Chaumont2007),
+                         ::testing::Values(Dialect::Sims1994, Dialect::Chaumont2007, Dialect::Lessin2015),
                          [](const auto& info) { return name_of(info.param); });
 
 // gives each node a size that names its origin: parent p (1 or 2), position i

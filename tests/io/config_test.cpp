@@ -38,7 +38,7 @@ TEST(Config, BadInputNamesTheKeyAndTheValue) {
   EXPECT_EQ(apply_error("[physics]\nsolver_iterations = 2.5\n"),
             "run.toml: physics.solver_iterations: expected an integer, got 2.5");
   EXPECT_EQ(apply_error("[motor]\nmodel = \"jet\"\n"),
-            "run.toml: motor.model: expected one of servo, saturation, torque, pd, got \"jet\"");
+            "run.toml: motor.model: expected one of servo, saturation, torque, pd, muscle, got \"jet\"");
   EXPECT_EQ(apply_error("[physics]\nself_collision = 1\n"),
             "run.toml: physics.self_collision: expected true or false, got 1");
   EXPECT_EQ(apply_error("physics = 3\n"), "run.toml: physics: expected a table, got 3");
@@ -93,7 +93,7 @@ TEST(Config, RunConfigTakesTheDialectsDefaultsThenTheTextThenTheOverrides) {
   EXPECT_EQ(read_run_config("", "r.toml", {"population=3"}).error(),
             "--set: expected section.key=value, got \"population=3\"");
   EXPECT_EQ(read_run_config("[genome]\ndialect = \"sims\"\n", "r.toml").error(),
-            "r.toml: genome.dialect: expected one of sims1994, miconi2006, chaumont2007, got \"sims\"");
+            "r.toml: genome.dialect: expected one of sims1994, miconi2006, chaumont2007, lessin2015, got \"sims\"");
 }
 
 // A --set is one key: the value was spliced into TOML text, so a newline in
@@ -112,9 +112,9 @@ TEST(Config, AnOverrideSetsItsKeyAndNoOther) {
   // quotes and backslashes in a bare-word value stay inside the string
   EXPECT_EQ(read_run_config("", "r.toml", {"genome.dialect=sims\"1994"}).error(),
             "--set genome.dialect=sims\"1994: genome.dialect: expected one of sims1994, miconi2006, "
-            "chaumont2007, got \"sims\"1994\"");
+            "chaumont2007, lessin2015, got \"sims\"1994\"");
   EXPECT_EQ(read_run_config("", "r.toml", {"genome.dialect=a\\"}).error(),
-            "--set genome.dialect=a\\: genome.dialect: expected one of sims1994, miconi2006, chaumont2007, got \"a\\\"");
+            "--set genome.dialect=a\\: genome.dialect: expected one of sims1994, miconi2006, chaumont2007, lessin2015, got \"a\\\"");
   // spaces around the key and the value are fine, as before
   auto c = read_run_config("", "r.toml", {" physics.gravity = -3.5"});
   ASSERT_TRUE(c.ok()) << c.error();
@@ -125,7 +125,7 @@ TEST(Config, AnOverrideSetsItsKeyAndNoOther) {
 TEST(Config, QuotedStringsStayOnOneLine) {
   RunConfig cfg = default_run_config(Dialect::Sims1994);
   Status s = apply_config_toml(cfg, "[motor]\nmodel = \"a\\nb\"\n", "x.toml");
-  EXPECT_EQ(s.error(), "x.toml: motor.model: expected one of servo, saturation, torque, pd, got \"a\\nb\"");
+  EXPECT_EQ(s.error(), "x.toml: motor.model: expected one of servo, saturation, torque, pd, muscle, got \"a\\nb\"");
   // toml++ quotes the text it stopped at, a newline included (found by fuzz_config)
   s = apply_config_toml(cfg, "metric = [t\n", "x.toml");
   EXPECT_EQ(s.error(), "x.toml:1:12: Error while parsing boolean: expected 'true', saw 't\\n'");

@@ -152,3 +152,38 @@ TEST(Muscle, ABrakeHoldsItAtAShareOfItsStrength) {
 
 }  // namespace
 }  // namespace bx
+
+namespace bx {
+namespace {
+
+// A muscle's length node (SensorType::MuscleLength, lessin2015 III-E): its
+// anchors' distance over twice its built length, so 0.5 as built.
+TEST(Muscle, ItsLengthNodeReadsHalfAsBuiltAndFollowsTheStretch) {
+  PhysicsDef def;
+  def.gravity = 0;
+  World w(def);
+  CreatureModel cm = pair(1, 1, 0.6, 0.3, 400);  // built 0.6 m apart, rest length 0.3 m
+  cm.muscles[0].length = 0.6;
+  SensorModel s;
+  s.type = SensorType::MuscleLength;
+  s.part = 1;
+  s.muscle = 0;
+  cm.sensors.push_back(s);
+  w.add_creature(cm, {{0, 0, 0}, Mat3::identity()});
+  double reading[1] = {-1};
+  w.read_sensors(cm, reading);
+  EXPECT_NEAR(reading[0], 0.5, 1e-12);
+  // fully active, it contracts towards its rest length: the node follows the distance
+  const double full[1] = {1};
+  for (int i = 0; i < 600; ++i) {
+    w.apply_effectors(cm, muscles(20), full);
+    w.step();
+  }
+  w.read_sensors(cm, reading);
+  const double apart = w.part_pose(1).p.x - w.part_pose(0).p.x;
+  EXPECT_NEAR(reading[0], apart / (2 * 0.6), 1e-9);
+  EXPECT_NEAR(reading[0], 0.25, 0.01);  // at its rest length, half as long as built
+}
+
+}  // namespace
+}  // namespace bx

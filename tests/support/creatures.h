@@ -1,0 +1,20 @@
+// The canonical creatures of tests/creatures/, read and developed for a test.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "develop/develop.h"
+#include "genome/genome_json.h"
+
+namespace bxtest {
+
+/// The genome of tests/creatures/NAME (a test failure, and an empty genome, if it does not read).
+inline bx::Genome load_creature(const std::string& name) {
+  auto g = bx::load_genome(std::string(BESTIARY_SOURCE_DIR) + "/tests/creatures/" + name);
+  EXPECT_TRUE(g.ok()) << g.error();
+  return g.ok() ? *g : bx::Genome{};
+}
+
+}  // namespace bxtest
