@@ -25,6 +25,7 @@ struct Instance {
   int via_edge = -1;     // edge index in the parent's node
   Mat3 A;                // local -> creature frame, possibly improper
   Mat3 parent_A;         // the parent's A as this instance's reflections mirror it
+  Mat3 edge_Q;           // the edge's frame in the parent's (x out of its face, then its rotation)
   Vec3 p;
   double scale = 1;
   Vec3 size;             // scaled extents
@@ -216,6 +217,7 @@ class Grower {
     Mat3 AM = par.A * mirror;
     ch.A = AM * Q;
     ch.parent_A = AM;
+    ch.edge_Q = Q;
     ch.p = par.p + AM * centre;
     anchors_.resize(out_.size() + 1);
     anchors_[out_.size()] = par.p + AM * q;
@@ -438,8 +440,11 @@ Development develop(const Genome& g, const DevelopDef& def) {
       for (std::size_t k = 0; k < node.effectors.size(); ++k) {
         const MuscleGene& mg = *node.effectors[k].muscle;
         // points in the (possibly mirrored) local frames: a reflected part's
-        // muscle is mirrored too, on the parent as the reflection mirrors it
-        Vec3 dp = normalized(mg.parent_dir), dc = normalized(mg.child_dir);
+        // muscle is mirrored too, on the parent as the reflection mirrors it.
+        // The parent's end is given in the frame of the edge that grew this
+        // part, so each copy grown by multiple or recursive edges pulls from
+        // its own side of the parent
+        Vec3 dp = inst[i].edge_Q * normalized(mg.parent_dir), dc = normalized(mg.child_dir);
         Vec3 a = par.p + inst[i].parent_A * (surface_distance(g.nodes[par.node].shape, par.size, dp) * dp);
         Vec3 b = inst[i].p + inst[i].A * (surface_distance(node.shape, inst[i].size, dc) * dc);
         MuscleModel mm;

@@ -121,10 +121,13 @@ struct SensorGene {
 /// attachment points on adjacent segments, along with a maximum strength".
 /// Each point is where a direction from its part's centre meets that part's
 /// surface (as a photoreceptor's), so it stays on the surface whatever the
-/// part's size. Development makes it a spring whose stiffness the
-/// activation sets (MuscleModel).
+/// part's size. The parent's direction is given in the frame of the edge
+/// that grows the part (x out of the parent's face, as the child extends),
+/// so every copy grown by multiple, recursive or reflected edges pulls from
+/// its own side of the parent. Development makes it a spring whose
+/// stiffness the activation sets (MuscleModel).
 struct MuscleGene {
-  Vec3 parent_dir{0, 0, 1};  ///< from the parent's centre, parent's frame; not zero
+  Vec3 parent_dir{0, 0, 1};  ///< from the parent's centre, in the growing edge's frame; not zero
   Vec3 child_dir{0, 0, 1};   ///< from this part's centre, its own frame; not zero
   double strength = 100;     ///< N/m: its stiffness at full activation
   friend bool operator==(const MuscleGene&, const MuscleGene&) = default;

@@ -28,14 +28,20 @@ json limits_json(const std::vector<Limit>& limits) {
   return out;
 }
 
-// a sensor as the model has it: a joint angle's joint and dof, a contact's face
+// a sensor as the model has it: a joint angle's joint and dof, a contact's
+// face, a photoreceptor's direction (in its part's frame), a muscle length's muscle
 json sensor_json(const SensorModel& s) {
   json o = {{"type", std::string(to_string(s.type))}, {"part", s.part}};
-  if (s.type == SensorType::JointAngle) {
-    o["joint"] = s.joint;
-    o["dof"] = s.dof;
-  } else {
-    o["face"] = std::string(to_string(s.face));
+  switch (s.type) {
+    case SensorType::JointAngle:
+      o["joint"] = s.joint;
+      o["dof"] = s.dof;
+      break;
+    case SensorType::Contact: o["face"] = std::string(to_string(s.face)); break;
+    case SensorType::Photoreceptor:
+      o["direction"] = {round_to(s.direction.x, 1e-6), round_to(s.direction.y, 1e-6), round_to(s.direction.z, 1e-6)};
+      break;
+    case SensorType::MuscleLength: o["muscle"] = s.muscle; break;
   }
   return o;
 }

@@ -141,3 +141,43 @@ TEST(Lessin2015Develop, AMuscleTooShortToHaveADirectionIsNotViable) {
 
 }  // namespace
 }  // namespace bx
+
+namespace bx {
+namespace {
+
+// Sims' example topologies (lessin2015 Fig. 4) as lessin2015 creatures, each
+// limb with an antagonistic pair of muscles: they grow as the sims1994 ones do
+struct Topology {
+  const char* file;
+  int parts, muscles;
+};
+
+class Lessin2015Topologies : public ::testing::TestWithParam<Topology> {};
+
+TEST_P(Lessin2015Topologies, DevelopAsDrawnWithAPairOfMusclesPerJoint) {
+  CreatureModel m = grow(bxtest::load_creature(GetParam().file));
+  EXPECT_EQ(m.n_parts(), GetParam().parts);
+  EXPECT_EQ(static_cast<int>(m.muscles.size()), GetParam().muscles);
+  for (const MuscleModel& mm : m.muscles) {
+    EXPECT_EQ(m.parts[mm.part_b].parent, mm.part_a);
+    EXPECT_GT(mm.length, 0.01);
+    // each end on its own part's half towards the other: the parent's end was
+    // given in the growing edge's frame, so every copy pulls from its own side
+    const Vec3 towards = m.parts[mm.part_b].pose.p - m.parts[mm.part_a].pose.p;
+    EXPECT_GT(dot(mm.anchor_a - m.parts[mm.part_a].pose.p, towards), 0) << GetParam().file;
+  }
+  for (const JointModel& j : m.joints) EXPECT_TRUE(j.parts_collide);
+}
+
+INSTANTIATE_TEST_SUITE_P(Fig4, Lessin2015Topologies,
+                         ::testing::Values(Topology{"lessin_simple.json", 4, 6},       // (a)
+                                           Topology{"lessin_multi_edge.json", 9, 16},  // (b) four legs, each with a foot
+                                           Topology{"lessin_recursive.json", 6, 8},    // (c) four recursive copies have a parent
+                                           Topology{"lessin_both.json", 9, 16}),       // (d) 2 segments + 6 legs
+                         [](const auto& info) {
+                           std::string s = info.param.file;
+                           return s.substr(0, s.find('.'));
+                         });
+
+}  // namespace
+}  // namespace bx

@@ -241,7 +241,7 @@ Allowed allowed(Dialect d) {
     case Dialect::Chaumont2007: return {11, 9, 7, 0};
     // muscles at rest fraction 0.5 pulling joints whose parts collide, at
     // 1/240 s (at 1/60 s: 56 of 100 joints part, docs/physics.md cause 30)
-    case Dialect::Lessin2015: return {9, 6, 0, 0};
+    case Dialect::Lessin2015: return {7, 7, 0, 0};
   }
   return {};
 }

@@ -7,7 +7,7 @@ const SHAPES = ['box', 'sphere', 'capsule', 'cylinder'];
 /** Degrees of freedom of each joint type, in the order `dof` indices count them. */
 export const JOINT_DOFS = { fixed: 0, hinge: 1, universal: 2, spherical: 3, slider: 1, cylindrical: 2 };
 
-const SENSOR_TYPES = ['joint_angle', 'contact'];
+const SENSOR_TYPES = ['joint_angle', 'contact', 'photoreceptor', 'muscle_length'];
 
 /** An error in the page's data; `message` names the field. */
 export class DataError extends Error {}

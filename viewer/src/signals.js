@@ -34,9 +34,14 @@ export function effectorLabel(e, k) {
   return `${k}: joint ${e.joint} · dof ${e.dof}${hz}`;
 }
 
-/** How a sensor is named: a joint angle's joint and dof, a contact's part and face. */
+/**
+ * How a sensor is named: a joint angle's joint and dof, a contact's part and face, a
+ * photoreceptor's part, a muscle length's muscle (lessin2015).
+ */
 export function sensorLabel(s, k) {
   if (s.type === 'contact') return `${k}: contact · part ${s.part} ${s.face ?? '?'}`;
+  if (s.type === 'photoreceptor') return `${k}: eye · part ${s.part}`;
+  if (s.type === 'muscle_length') return `${k}: muscle ${s.muscle ?? '?'} length · part ${s.part}`;
   if (s.joint < 0) return `${k}: angle · part ${s.part} (root)`;
   return `${k}: angle · joint ${s.joint} · dof ${s.dof}`;
 }

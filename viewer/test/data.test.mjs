@@ -25,7 +25,7 @@ test('errors name the field, what was expected and what was found', () => {
     [(r) => r.frames[4].effectors.push(0), /^replay\.frames\[4\]\.effectors: expected 1 numbers, got \[/],
     [(r) => (r.effectors[0].joint = 3), /^replay\.effectors\[0\]\.joint: no such joint, got 3$/],
     [(r) => (r.effectors[0].hz = '30'), /^replay\.effectors\[0\]\.hz: expected a number, got "30"$/],
-    [(r) => (r.sensors[1].type = 'smell'), /^replay\.sensors\[1\]\.type: expected one of joint_angle, contact, got "smell"$/],
+    [(r) => (r.sensors[1].type = 'smell'), /^replay\.sensors\[1\]\.type: expected one of joint_angle, contact, photoreceptor, muscle_length, got "smell"$/],
     [(r) => r.frames[6].sensors.pop(), /^replay\.frames\[6\]\.sensors: expected 2 numbers, got \[/],
     [(r) => (r.frames[2].joint_angles = [[0.1, 0.2]]), /^replay\.frames\[2\]\.joint_angles\[0\]: expected 1 numbers, got \[0\.1,0\.2\]$/],
     [(r) => (r.frames[2].joint_angles = []), /^replay\.frames\[2\]\.joint_angles: expected 1 joints, got 0$/],

@@ -65,6 +65,11 @@ test('sensors: a joint angle and a contact, on [-1, 1]', () => {
   assert.equal(rangeText(contact), '1.000 .. 1.000');
 });
 
+test("lessin2015's sensors: a photoreceptor and a muscle's length are named by what they read", () => {
+  assert.equal(sensorLabel({ type: 'photoreceptor', part: 2, direction: [0, 1, 1] }, 4), '4: eye · part 2');
+  assert.equal(sensorLabel({ type: 'muscle_length', part: 1, muscle: 3 }, 5), '5: muscle 3 length · part 1');
+});
+
 test('a joint angle in degrees, drawn against its stops with a margin', () => {
   const [a] = jointAngleSeries(makeReplay());
   assert.equal(a.label, 'joint 0 · dof 0 (hinge)');
