@@ -57,6 +57,7 @@
 #include <string>
 #include <vector>
 
+#include "args.h"
 #include "develop/creature_model.h"
 #include "geometry/ode.h"
 #include "physics/physics_def.h"
@@ -490,12 +491,8 @@ int main(int argc, char** argv) {
   int iterations = 20;
   for (int i = 1; i < argc; ++i) {
     std::string a = argv[i];
-    auto value = [&](const char* name) -> double {
-      if (i + 1 >= argc) std::exit(usage((std::string(name) + ": missing value").c_str()));
-      char* end = nullptr;
-      double v = std::strtod(argv[++i], &end);
-      if (*end || !(v >= 1)) std::exit(usage((std::string(name) + ": expected a number >= 1").c_str()));
-      return v;
+    auto value = [&](const char* name) {
+      return bxbench::number_after(i, argc, argv, name, usage, [](double v) { return v >= 1; }, "a number >= 1");
     };
     if (a == "--quick") quick = true;
     else if (a == "--reps") reps = static_cast<int>(value("--reps"));

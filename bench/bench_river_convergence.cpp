@@ -32,6 +32,7 @@
 #include <string>
 #include <vector>
 
+#include "args.h"
 #include "core/rng.h"
 #include "eval/creature.h"
 #include "eval/evaluate.h"
@@ -113,12 +114,8 @@ int main(int argc, char** argv) {
   std::uint64_t seed = 1;
   for (int i = 1; i < argc; ++i) {
     std::string a = argv[i];
-    auto value = [&](const char* name) -> double {
-      if (i + 1 >= argc) std::exit(usage((std::string(name) + ": missing value").c_str()));
-      char* end = nullptr;
-      double v = std::strtod(argv[++i], &end);
-      if (*end || !(v > 0)) std::exit(usage((std::string(name) + ": expected a positive number").c_str()));
-      return v;
+    auto value = [&](const char* name) {
+      return bxbench::number_after(i, argc, argv, name, usage, [](double v) { return v > 0; }, "a positive number");
     };
     if (a == "--n") n = static_cast<int>(value("--n"));
     else if (a == "--seconds") seconds = value("--seconds");
