@@ -412,6 +412,12 @@ Development develop(const Genome& g, const DevelopDef& def) {
     if (j.limits.empty() && j.type == JointType::Hinge && rules.default_hinge_limits)
       j.limits = {*rules.default_hinge_limits};
     j.parts_collide = rules.joined_parts_collide;  // lessin2015 III-B: shapes limit the joint
+    if (j.parts_collide && j.limits.empty() &&
+        (j.type == JointType::Slider || j.type == JointType::Cylindrical)) {
+      // collisions stop only a slide towards the parent (DevelopDef::slide_range)
+      const double r = def.slide_range * half_thickness(g.nodes[in.node].shape, in.size);
+      j.limits = {{-r, r}};
+    }
     joint_of[i] = static_cast<int>(m.joints.size());
     m.joints.push_back(j);
   }

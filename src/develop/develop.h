@@ -35,6 +35,14 @@ struct DevelopDef {
   /// gives none): below 1, an active muscle contracts, so a pair across a
   /// joint moves it; at 1 a muscle could only hold the pose it was built in.
   double muscle_rest_fraction = 0.5;
+  /// Where joined parts collide, a prismatic or cylindrical joint whose gene
+  /// gives no limits slides at most this share of its child's half-thickness
+  /// either way. Collisions stop a child sliding into its parent, never away
+  /// from it: unlimited, a slider lets its child drift off (an evolved
+  /// lessin2015 "walker" spread its parts 3.5 m along free sliders and
+  /// stopped). lessin2015 III-B says "most" limits come from collisions;
+  /// PhysX's prismatic joint, as ODE's, is free unless limited.
+  double slide_range = 1.0;
   /// A muscle shorter than this as built (m) is not viable: its direction,
   /// and so its force, would be undefined.
   double min_muscle_length = 1e-3;

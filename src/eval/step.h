@@ -28,6 +28,7 @@ class WorldObservation : public Observation {
   int n_parts() const override { return m_.n_parts(); }
   Pose part_pose(int i) const override { return w_.part_pose(i); }
   bool touches_part(int i) const override { return w_.touches_part(i); }
+  double muscle_work() const override { return w_.muscle_work(); }
 
  private:
   const CreatureModel& m_;

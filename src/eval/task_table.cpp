@@ -9,7 +9,7 @@ namespace bx {
 namespace {
 
 Result<std::unique_ptr<Task>> make_locomotion(const CreatureModel& m, const SimConfig& cfg, std::uint64_t) {
-  return std::unique_ptr<Task>(new LocomotionTask(cfg.task, cfg.physics.dt, m.n_parts()));
+  return std::unique_ptr<Task>(new LocomotionTask(cfg.task, cfg.physics.dt, m.n_parts(), cfg.physics.gravity));
 }
 
 Result<std::unique_ptr<Task>> make_throwing(const CreatureModel& m, const SimConfig& cfg, std::uint64_t) {

@@ -1,6 +1,6 @@
 // The world's actuators: each effector's signal drives its joint's degree of
 // freedom by the motor model (MotorDef: servo, saturation, torque, PD), after
-// the motors' lag; a brake holds them.
+// the motors' lag; a brake holds them. The muscles' work is metered here.
 #include <ode/ode.h>
 
 #include <algorithm>
@@ -155,6 +155,26 @@ const World::Impl::GainRow& World::Impl::gain(MotorModel model) {
   if (row.model != model) throw std::logic_error("the actuator table's rows are out of MotorModel's order");
   return row;
 }
+
+void World::Impl::meter_muscles() {
+  // a muscle's constraint pushes its two anchors apart or together with equal
+  // and opposite forces: its power is f1 . v1 + f2 . v2 at the anchors'
+  // velocities after the step (the ones the step moved them with)
+  for (std::size_t k = 0; k < muscles.size(); ++k) {
+    if (!dJointIsEnabled(muscles[k])) continue;
+    const dJointFeedback& f = muscle_feedback[k];
+    dVector3 a, b, va, vb;
+    dJointGetDBallAnchor1(muscles[k], a);
+    dJointGetDBallAnchor2(muscles[k], b);
+    dBodyGetPointVel(dJointGetBody(muscles[k], 0), a[0], a[1], a[2], va);
+    dBodyGetPointVel(dJointGetBody(muscles[k], 1), b[0], b[1], b[2], vb);
+    double p = 0;
+    for (int i = 0; i < 3; ++i) p += f.f1[i] * va[i] + f.f2[i] * vb[i];
+    muscle_work += std::abs(p) * def.dt;
+  }
+}
+
+double World::muscle_work() const { return impl_->muscle_work; }
 
 bool needs_own_motor_row(MotorModel m) { return World::Impl::gain(m).own_motor_row; }
 

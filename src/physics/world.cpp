@@ -140,6 +140,8 @@ void World::add_creature(const CreatureModel& m, const Pose& placement) {
   // muscles: soft distance constraints between their anchors, slack until
   // an effector activates them (MotorModel::Muscle)
   w.muscles.clear();
+  w.muscle_feedback.assign(m.muscles.size(), dJointFeedback{});
+  w.muscle_work = 0;
   for (const MuscleModel& mm : m.muscles) {
     dJointID mj = dJointCreateDBall(w.world, nullptr);
     dJointAttach(mj, w.bodies[mm.part_a], w.bodies[mm.part_b]);
@@ -147,6 +149,7 @@ void World::add_creature(const CreatureModel& m, const Pose& placement) {
     dJointSetDBallAnchor1(mj, a.x, a.y, a.z);
     dJointSetDBallAnchor2(mj, b.x, b.y, b.z);
     dJointSetDBallDistance(mj, mm.rest_length);
+    dJointSetFeedback(mj, &w.muscle_feedback[w.muscles.size()]);
     dJointDisable(mj);
     w.muscles.push_back(mj);
   }
@@ -180,6 +183,7 @@ void World::step() {
     w.solver_failure = buf;
   }
   w.remember_contacts();
+  w.meter_muscles();
   dJointGroupEmpty(w.contact_group);
   w.t += w.def.dt;
 }

@@ -143,6 +143,12 @@ class World {
   /// Simulated time (s).
   double time() const;
   const PhysicsDef& def() const;
+  /// The work the creature's muscles have done since it was added (J): the
+  /// sum over steps of |power| x dt, power being each muscle's constraint
+  /// forces on its two anchors times their velocities. Shortening and
+  /// lengthening both cost, as a muscle's metabolism does (its damper
+  /// included). Joint motors are not metered.
+  double muscle_work() const;
 
  private:
   struct Impl;

@@ -242,6 +242,13 @@ struct World::Impl {
   };
   // each muscle's soft distance constraint (MotorModel::Muscle), by CreatureModel::muscles
   std::vector<dJointID> muscles;
+  // the forces each muscle's constraint applied in the last step (ODE fills
+  // them; sized once per creature, so their addresses hold)
+  std::vector<dJointFeedback> muscle_feedback;
+  // J: the muscles' work so far, sum over steps of |power| dt
+  double muscle_work = 0;
+  // adds the last step's muscle work (after each step)
+  void meter_muscles();
   // sets muscle k's spring (N/m) and damper (N s/m) for the coming step
   void set_muscle(std::size_t k, double kp, double kd);
   static const GainRow& gain(MotorModel m);

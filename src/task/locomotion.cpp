@@ -7,16 +7,22 @@
 
 namespace bx {
 
-LocomotionTask::LocomotionTask(const LocomotionDef& def, double dt, int n_parts)
-    : def_(def), dt_(dt), stillness_(def.settle, dt) {
-  phase_ = def.activation == Activation::Chaumont2007 ? Phase::Settle1 : Phase::Measure;
+LocomotionTask::LocomotionTask(const LocomotionDef& def, double dt, int n_parts, double gravity)
+    : def_(def), dt_(dt), gravity_(std::abs(gravity)), stillness_(def.settle, dt) {
+  switch (def.activation) {
+    case Activation::Always: phase_ = Phase::Measure; break;
+    case Activation::Chaumont2007: phase_ = Phase::Settle1; break;
+    case Activation::Settled: phase_ = Phase::Settle2; break;
+  }
   stillness_.start(std::vector<Vec3>(needs_parts() ? n_parts : 0));
 }
 
 long LocomotionTask::max_steps() const {
-  double longest = def_.activation == Activation::Chaumont2007
-                       ? 2 * def_.settle.timeout + def_.burst_seconds + def_.seconds
-                       : def_.seconds;
+  double longest = def_.seconds;
+  if (def_.activation == Activation::Chaumont2007)
+    longest += 2 * def_.settle.timeout + def_.burst_seconds;
+  else if (def_.activation == Activation::Settled)
+    longest += def_.settle.timeout;
   return std::lround(longest / dt_) + 1;
 }
 
@@ -27,9 +33,15 @@ const std::vector<Vec3>& LocomotionTask::parts_of(const Observation& o) {
   return parts_;
 }
 
-void LocomotionTask::begin(const Observation& o) { start(o.centre_of_mass(), parts_of(o)); }
+void LocomotionTask::begin(const Observation& o) {
+  work_ = o.muscle_work();
+  start(o.centre_of_mass(), parts_of(o));
+}
 
-void LocomotionTask::observe(const Observation& o) { observe(o.time(), o.centre_of_mass(), parts_of(o)); }
+void LocomotionTask::observe(const Observation& o) {
+  work_ = o.muscle_work();
+  observe(o.time(), o.centre_of_mass(), parts_of(o));
+}
 
 void LocomotionTask::start(Vec3 com, const std::vector<Vec3>& parts) {
   if (needs_parts()) stillness_.start(parts);
@@ -41,6 +53,10 @@ void LocomotionTask::begin_measure(double t, Vec3 com) {
   measured_ = true;
   start_ = com;
   t_start_ = t;
+  work_start_ = work_;
+  const double end = def_.activation == Activation::Always ? def_.seconds : t + def_.seconds;
+  window_ = (end - t) / std::max(1, def_.windows);
+  marks_.assign(1, com);
 }
 
 // moves on once the parts have been still for settle.seconds, gives up after
@@ -78,8 +94,11 @@ void LocomotionTask::observe(double t, Vec3 com, const std::vector<Vec3>& parts)
     case Phase::Measure: {
       // without the sequence, measuring starts after skip_fraction of the time
       if (!measured_ && t >= def_.skip_fraction * def_.seconds - 1e-9) begin_measure(t, com);
-      double end = def_.activation == Activation::Chaumont2007 ? phase_start_ + def_.seconds
-                                                               : def_.seconds;
+      if (measured_)
+        while (static_cast<int>(marks_.size()) <= def_.windows &&
+               t >= t_start_ + static_cast<double>(marks_.size()) * window_ - 1e-9)
+          marks_.push_back(com);
+      double end = def_.activation == Activation::Always ? def_.seconds : phase_start_ + def_.seconds;
       if (t >= end - 1e-9) phase_ = Phase::Done;
       break;
     }
@@ -88,23 +107,59 @@ void LocomotionTask::observe(double t, Vec3 com, const std::vector<Vec3>& parts)
   last_ = com;
 }
 
-double LocomotionTask::distance() const {
-  if (!measured_) return 0;
-  Vec3 d = last_ - start_;
+double LocomotionTask::displacement(Vec3 from, Vec3 to) const {
+  Vec3 d = to - from;
   return def_.metric == DistanceMetric::AlongX ? d.x : std::hypot(d.x, d.y);
+}
+
+double LocomotionTask::distance() const { return measured_ ? displacement(start_, last_) : 0; }
+
+double LocomotionTask::scored_distance() const {
+  if (def_.windows <= 1) return distance();
+  if (!measured_ || static_cast<int>(marks_.size()) < def_.windows + 1) return 0;
+  double least = displacement(marks_[0], marks_[1]);
+  for (std::size_t i = 2; i < marks_.size(); ++i) least = std::min(least, displacement(marks_[i - 1], marks_[i]));
+  return def_.windows * least;
 }
 
 double LocomotionTask::fitness(const CreatureModel& m) const {
   if (!measured_) return 0;
   switch (def_.fitness) {
-    case LocomotionFitness::Distance: return distance();
+    case LocomotionFitness::Distance: return scored_distance();
     case LocomotionFitness::Speed: {
       double s = measured_seconds();
-      return s > 0 ? distance() / s : 0;
+      return s > 0 ? scored_distance() / s : 0;
     }
-    case LocomotionFitness::Chaumont2007: return distance() * chaumont_size_factor(m, def_.kappa);
+    case LocomotionFitness::Chaumont2007: return scored_distance() * chaumont_size_factor(m, def_.kappa);
+    case LocomotionFitness::Lessin2015:
+      return def_.speed_step * (std::floor(speed() / def_.speed_step) + efficiency(m)) / def_.max_speed;
   }
   return 0;
+}
+
+double LocomotionTask::speed() const {
+  return measured_seconds() > 0 ? scored_distance() / measured_seconds() : 0;
+}
+
+double LocomotionTask::efficiency(const CreatureModel& m) const {
+  return lessin_efficiency(scored_distance(), measured_seconds(), measured_work(), m.total_mass(), gravity_,
+                           def_.basal_power);
+}
+
+TaskScore LocomotionTask::score(const CreatureModel& m) const {
+  TaskScore out{fitness(m), distance(), {}};
+  if (def_.fitness == LocomotionFitness::Lessin2015)
+    out.metrics = {{"speed", speed()}, {"efficiency", efficiency(m)}, {"muscle_work", measured_work()}};
+  return out;
+}
+
+double lessin_efficiency(double distance, double seconds, double work, double mass, double gravity,
+                         double basal_power) {
+  if (!(distance > 0)) return 0;
+  const double weight_distance = mass * gravity * distance;
+  if (!(weight_distance > 0)) return 0;
+  const double spent = std::max(0.0, work) + std::max(0.0, basal_power) * mass * std::max(0.0, seconds);
+  return 1 / (1 + spent / weight_distance);
 }
 
 double chaumont_size_factor(const CreatureModel& m, double kappa) {

@@ -23,12 +23,18 @@ enum class LocomotionFitness {
   Distance,      ///< the distance (miconi2006)
   Speed,         ///< distance over the measured time (sims1994)
   Chaumont2007,  ///< eq. 1: D_w * (C_v / (C_s C_l)) * kappa^N
+  /// lessin2015 V, skill 1: sigma (floor(s / sigma) + eps) / s_max, s the
+  /// speed, sigma the speed step, eps the efficiency (lessin_efficiency)
+  Lessin2015,
 };
 
 /// When the controller drives the motors.
 enum class Activation {
   Always,        ///< from the first step
   Chaumont2007,  ///< 3.3: settle (off), 1 s on, settle (off), then on and measured
+  /// settle (off), then on and measured: a creature that topples or rolls
+  /// out of its built pose has come to rest before its speed counts
+  Settled,
 };
 
 /// A locomotion task.
@@ -47,6 +53,15 @@ struct LocomotionDef {
   SettleDef settle;
   double burst_seconds = 1.0;  ///< the first controller activation (s)
   double kappa = 1.02;         ///< eq. 1's reward per block
+  /// The distance that scores is `windows` times the least distance the
+  /// centre of mass travels in any of that many equal spans of the measured
+  /// time (1: the whole distance). From 2 on, a creature must keep moving
+  /// to score: a fall or one push out of its pose travels in one span only.
+  int windows = 1;
+  /// lessin2015's efficiency: the resting cost beside the muscles' work (W per kg)
+  double basal_power = 1;
+  double speed_step = 0.05;    ///< lessin2015's sigma: speed counts in steps of this (m/s)
+  double max_speed = 1;        ///< lessin2015's s_max: the speed that scores 1 (m/s)
   friend bool operator==(const LocomotionDef&, const LocomotionDef&) = default;
 };
 
@@ -58,7 +73,8 @@ enum class Phase { Settle1, Burst, Settle2, Measure, Done };
 /// start() and observe(t, com, parts) take the values themselves.
 class LocomotionTask : public Task {
  public:
-  LocomotionTask(const LocomotionDef& def, double dt, int n_parts);
+  /// `gravity` (m/s^2, its size counts) prices lessin2015's efficiency.
+  LocomotionTask(const LocomotionDef& def, double dt, int n_parts, double gravity = 9.81);
 
   Scenario scenario() const override { return {def_.drop_height}; }
   /// The whole sequence at its longest (every settling phase timing out), and a step.
@@ -69,7 +85,8 @@ class LocomotionTask : public Task {
   bool controller_on() const override { return phase_ == Phase::Burst || phase_ == Phase::Measure; }
   /// True once the evaluation is over.
   bool done() const override { return phase_ == Phase::Done; }
-  TaskScore score(const CreatureModel& m) const override { return {fitness(m), distance(), {}}; }
+  /// lessin2015's fitness adds its speed, efficiency and muscle work as metrics.
+  TaskScore score(const CreatureModel& m) const override;
   std::string note() const override { return note_; }
   Phase phase() const { return phase_; }
 
@@ -80,29 +97,54 @@ class LocomotionTask : public Task {
 
   /// Distance travelled while measured (0 if measuring never started).
   double distance() const;
+  /// The distance that scores: distance(), or with LocomotionDef::windows
+  /// above 1, windows x the least distance of one window (a window the
+  /// evaluation did not reach counts 0).
+  double scored_distance() const;
   /// Seconds measured.
   double measured_seconds() const { return measured_ ? t_ - t_start_ : 0; }
+  /// The muscles' work while measured (J).
+  double measured_work() const { return measured_ ? work_ - work_start_ : 0; }
+  /// lessin2015's speed (scored_distance over the measured time) and efficiency.
+  double speed() const;
+  double efficiency(const CreatureModel& m) const;
   /// The fitness of the evaluation, given the creature (for eq. 1's block terms).
   double fitness(const CreatureModel& m) const;
   /// Whether the part positions are needed by observe() (else pass an empty vector).
-  bool needs_parts() const { return def_.activation == Activation::Chaumont2007; }
+  bool needs_parts() const { return def_.activation != Activation::Always; }
 
  private:
   void settle(double t, bool still, Phase next);
   // every part's position, from an observation (when needs_parts())
   const std::vector<Vec3>& parts_of(const Observation& o);
   void begin_measure(double t, Vec3 com);
+  double displacement(Vec3 from, Vec3 to) const;
 
   LocomotionDef def_;
   double dt_;
   Phase phase_ = Phase::Measure;
   bool measured_ = false;
   Vec3 start_, last_;
+  std::vector<Vec3> marks_;  // the centre of mass where each window began (and the last ended)
+  double window_ = 0;        // s: each window's length
   double t_ = 0, t_start_ = 0, phase_start_ = 0;
+  double gravity_;
+  double work_ = 0, work_start_ = 0;  // the muscles' work (J): now, and when measuring began
   Stillness stillness_;
   std::vector<Vec3> parts_;
   std::string note_;
 };
+
+/// lessin2015's efficiency eps in [0, 1] of travelling `distance` (m) in
+/// `seconds` with `work` (J) of muscle work, for a creature of `mass` (kg)
+/// under `gravity`, at a resting cost of `basal_power` (W per kg):
+/// 1 / (1 + E / (m g d)) with E = W + basal_power m seconds, E / (m g d)
+/// being the gross cost of transport (0 for no distance). The resting cost
+/// keeps a creature that does nothing from being perfectly efficient: its
+/// eps falls to 0 with its speed (at most g s / (g s + basal_power)).
+/// lessin2015 asks for an efficiency and does not define one; this is ours.
+double lessin_efficiency(double distance, double seconds, double work, double mass, double gravity,
+                         double basal_power);
 
 /// chaumont2007 eq. 1's size factor C_v / (C_s C_l) * kappa^N of a creature's blocks.
 double chaumont_size_factor(const CreatureModel& m, double kappa);

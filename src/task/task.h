@@ -32,6 +32,8 @@ class Observation {
   virtual Pose part_pose(int i) const = 0;
   /// Whether part i touched another part of the creature in the last step.
   virtual bool touches_part(int i) const = 0;
+  /// The work the creature's muscles have done so far (J; World::muscle_work).
+  virtual double muscle_work() const { return 0; }
 };
 
 /// The creature's heading: the angle (rad, from +x towards +y) of its root

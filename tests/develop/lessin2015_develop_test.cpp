@@ -49,6 +49,34 @@ TEST(Lessin2015Develop, AChildStartsItsHalfThicknessOffItsParentAndTheirJointCol
   EXPECT_NEAR(grow(load("lessin_pair.json"), flush).parts[1].pose.p.x, 0.35, 1e-12);
 }
 
+// collisions stop a slide into the parent, never away from it: a slider or
+// a cylindrical joint without limits in its gene slides at most
+// slide_range x its child's half-thickness either way
+TEST(Lessin2015Develop, ASliderWithoutLimitsSlidesAtMostItsChildsHalfThickness) {
+  for (JointType type : {JointType::Slider, JointType::Cylindrical, JointType::Hinge}) {
+    Genome g = load("lessin_pair.json");
+    g.nodes[1].joint.type = type;
+    g.nodes[1].joint.limits.clear();
+    CreatureModel m = grow(g);
+    ASSERT_EQ(m.joints.size(), 2u);
+    for (const JointModel& j : m.joints) {
+      if (type == JointType::Hinge) {
+        EXPECT_TRUE(j.limits.empty());  // collisions limit a turn both ways
+        continue;
+      }
+      ASSERT_EQ(j.limits.size(), 1u) << to_string(type);  // the slide; a cylinder's turn stays free
+      EXPECT_NEAR(j.limits[0].lo, -0.05, 1e-12);  // the limb's 0.1 m thickness, halved
+      EXPECT_NEAR(j.limits[0].hi, 0.05, 1e-12);
+    }
+    DevelopDef wide;
+    wide.slide_range = 3;
+    if (type != JointType::Hinge) EXPECT_NEAR(grow(g, wide).joints[0].limits[0].hi, 0.15, 1e-12);
+    // limits a genome gives are kept
+    g.nodes[1].joint.limits = {{-0.01, 0.02}};
+    if (type != JointType::Hinge) EXPECT_EQ(grow(g).joints[0].limits[0].hi, 0.02);
+  }
+}
+
 TEST(Lessin2015Develop, MusclesJoinTheSurfacePointsOfTheirDirections) {
   CreatureModel m = grow(load("lessin_pair.json"));
   ASSERT_EQ(m.muscles.size(), 4u);

@@ -88,3 +88,46 @@ TEST(Photoreceptor, TwoLightsAddAndTheSumIsHeldAtOne) {
 
 }  // namespace
 }  // namespace bx
+
+#include "support/creatures.h"
+
+namespace bx {
+namespace {
+
+// tests/creatures/lessin_eyes.json: a 0.4 x 0.3 x 0.15 m box with two eyes
+// looking forward, 26.6 degrees to the left (+y) and to the right; their
+// readings under one light at the body's height, the body turned by `yaw`
+std::vector<double> eyes(Vec3 light, double yaw = 0) {
+  Development d = develop(bxtest::load_creature("lessin_eyes.json"), DevelopDef{});
+  EXPECT_TRUE(d.viable()) << d.reason;
+  const CreatureModel& m = *d.model;
+  EXPECT_EQ(m.sensors.size(), 2u);
+  World w(PhysicsDef{});
+  w.add_creature(m, {{0, 0, 0.075 - m.min_z()}, Mat3::rotation({0, 0, 1}, yaw)});
+  w.set_lights({{light}});
+  std::vector<double> out(m.sensors.size());
+  w.read_sensors(m, out);
+  return out;
+}
+
+TEST(Photoreceptor, TwoEyesFacingALightSeeItAlikeAndTellItsSide) {
+  const double z = 0.075;
+  const std::vector<double> ahead = eyes({3, 0, z});
+  EXPECT_GT(ahead[0], 0.05);
+  EXPECT_NEAR(ahead[0], ahead[1], 1e-9);  // straight ahead: both alike
+  // ahead and to the left: the left eye sees more; to the right, the right
+  const std::vector<double> left = eyes({3, 1.5, z}), right = eyes({3, -1.5, z});
+  EXPECT_GT(left[0], left[1] + 0.02);
+  EXPECT_GT(right[1], right[0] + 0.02);
+  EXPECT_NEAR(left[0], right[1], 1e-9);  // mirror images
+  // behind: dark; turned about to face it: it sees it again
+  const std::vector<double> behind = eyes({-3, 0, z});
+  EXPECT_EQ(behind[0], 0.0);
+  EXPECT_EQ(behind[1], 0.0);
+  const std::vector<double> turned = eyes({-3, 0, z}, kPi);
+  EXPECT_NEAR(turned[0], ahead[0], 1e-9);
+  EXPECT_NEAR(turned[1], ahead[1], 1e-9);
+}
+
+}  // namespace
+}  // namespace bx

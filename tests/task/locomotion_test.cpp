@@ -156,3 +156,129 @@ TEST(Heading, IsTheRootsXAxisTurnedOnTheGround) {
 
 }  // namespace
 }  // namespace bx
+
+namespace bx {
+namespace {
+
+TEST(Locomotion, SettledStartsWithTheControllerOffAndMeasuresFromRest) {
+  LocomotionDef def;
+  def.activation = Activation::Settled;
+  def.seconds = 1;
+  const double dt = 0.1;
+  def.settle.seconds = 2 * dt;
+  def.settle.speed = 0.1;
+  def.settle.timeout = 5;
+  LocomotionTask t(def, dt, 1);
+  EXPECT_EQ(t.max_steps(), 61);  // (timeout + seconds) / dt, and a step
+  double time = 0;
+  Vec3 p{0, 0, 1};
+  t.start(p, {p});
+  auto step = [&](Vec3 to) {
+    time += dt;
+    p = to;
+    t.observe(time, p, {p});
+  };
+  EXPECT_FALSE(t.controller_on());
+  step({1, 0, 0.5});  // toppling out of its built pose: not counted
+  step({2, 0, 0});
+  step(p);
+  step(p);
+  EXPECT_EQ(t.phase(), Phase::Measure);
+  EXPECT_TRUE(t.controller_on());
+  for (int i = 0; i < 10; ++i) step({p.x + 0.05, 0, 0});
+  EXPECT_TRUE(t.done());
+  EXPECT_NEAR(t.distance(), 0.5, 1e-9);
+  EXPECT_NEAR(t.measured_seconds(), 1.0, 1e-9);
+}
+
+// the distance that scores with windows: the least span's, times their number
+TEST(Locomotion, WindowsScoreOnlyMotionThatLasts) {
+  auto scored = [](int windows, const std::vector<double>& x_each_second) {
+    LocomotionDef def;
+    def.seconds = 4;
+    def.windows = windows;
+    LocomotionTask t(def, 1.0, 1);
+    t.start({0, 0, 0}, {});
+    for (std::size_t i = 0; i < x_each_second.size(); ++i)
+      t.observe(static_cast<double>(i + 1), {x_each_second[i], 0, 0}, {});
+    EXPECT_EQ(t.done(), x_each_second.size() == 4);
+    return t.scored_distance();
+  };
+  const std::vector<double> steady{1, 2, 3, 4}, fall{2, 2, 2, 2}, slowing{1.5, 3, 3.5, 4};
+  EXPECT_DOUBLE_EQ(scored(1, steady), 4);
+  EXPECT_DOUBLE_EQ(scored(2, steady), 4);
+  EXPECT_DOUBLE_EQ(scored(4, steady), 4);
+  EXPECT_DOUBLE_EQ(scored(1, fall), 2);
+  EXPECT_DOUBLE_EQ(scored(2, fall), 0);  // it fell in the first span and lay still
+  EXPECT_DOUBLE_EQ(scored(2, slowing), 2);  // 3 m, then 1 m: twice the second
+  EXPECT_DOUBLE_EQ(scored(4, slowing), 2);
+  // cut short, the missing span counts 0
+  EXPECT_DOUBLE_EQ(scored(2, {1, 2}), 0);
+}
+
+// an observation of a point moving along x with a muscle-work meter
+struct Meter : Observation {
+  double t = 0, x = 0, work = 0;
+  double time() const override { return t; }
+  Vec3 centre_of_mass() const override { return {x, 0, 0}; }
+  int n_parts() const override { return 1; }
+  Pose part_pose(int) const override { return {{x, 0, 0}, Mat3::identity()}; }
+  bool touches_part(int) const override { return false; }
+  double muscle_work() const override { return work; }
+};
+
+TEST(Locomotion, Lessin2015FitnessIsTheSpeedStepsPlusTheEfficiency) {
+  // 2 kg under g = 10 travel 4 m in 4 s for 80 J of muscle work and
+  // 5 W/kg x 2 kg x 4 s = 40 J at rest: a gross cost of transport
+  // 120 / (2 x 10 x 4) = 1.5, so efficiency 1 / (1 + 1.5) = 0.4; speed
+  // 1 m/s in steps of 0.3 is 3 steps: 0.3 (3 + 0.4) / s_max 2
+  CreatureModel m;
+  PartModel a, b;
+  a.mass = 1.5;
+  b.mass = 0.5;
+  m.parts = {a, b};
+  LocomotionDef def;
+  def.seconds = 4;
+  def.fitness = LocomotionFitness::Lessin2015;
+  def.speed_step = 0.3;
+  def.max_speed = 2;
+  def.basal_power = 5;
+  LocomotionTask t(def, 1.0, 2, -10);
+  Meter o;
+  o.work = 7;  // before measuring: not counted
+  t.begin(o);
+  for (int i = 1; i <= 4; ++i) {
+    o.t = i;
+    o.x = i;
+    o.work = 7 + 20 * i;
+    t.observe(o);
+  }
+  EXPECT_TRUE(t.done());
+  EXPECT_DOUBLE_EQ(t.measured_work(), 80);
+  EXPECT_NEAR(lessin_efficiency(4, 4, 80, 2, 10, 5), 0.4, 1e-15);
+  EXPECT_NEAR(t.fitness(m), 0.3 * 3.4 / 2, 1e-12);
+  const TaskScore s = t.score(m);
+  ASSERT_EQ(s.metrics.size(), 3u);
+  EXPECT_EQ(s.metrics[0].name, "speed");
+  EXPECT_NEAR(s.metrics[0].value, 1, 1e-12);
+  EXPECT_EQ(s.metrics[1].name, "efficiency");
+  EXPECT_NEAR(s.metrics[1].value, 0.4, 1e-12);
+  EXPECT_EQ(s.metrics[2].name, "muscle_work");
+  EXPECT_NEAR(s.metrics[2].value, 80, 1e-12);
+}
+
+TEST(Locomotion, Lessin2015EfficiencyFallsToZeroWithTheSpeed) {
+  // no distance, no efficiency
+  EXPECT_EQ(lessin_efficiency(0, 10, 80, 2, 10, 1), 0);
+  // without a resting cost a creature that drifts 0.1 mm for free would be
+  // perfectly efficient; with one, its efficiency is at most g s / (g s + b)
+  EXPECT_EQ(lessin_efficiency(1e-4, 10, 0, 2, 10, 0), 1);
+  const double s = 1e-5, bound = 10 * s / (10 * s + 1);
+  EXPECT_NEAR(lessin_efficiency(1e-4, 10, 0, 2, 10, 1), bound, 1e-15);
+  EXPECT_LT(bound, 1e-4);
+  // faster for the same work: more efficient
+  EXPECT_LT(lessin_efficiency(1, 10, 50, 2, 10, 1), lessin_efficiency(2, 10, 50, 2, 10, 1));
+}
+
+}  // namespace
+}  // namespace bx
