@@ -100,6 +100,23 @@ std::string replay_to_string(const CreatureModel& m, const Replay& r, const Eval
                       {"limits", limits_json(jm.limits)}});
   }
   j["joints"] = joints;
+  // muscles (lessin2015): each end in its own part's frame at the initial
+  // pose, so a viewer places it with that part's pose in any frame; left out
+  // for a creature without any, whose file stays as it was
+  if (!m.muscles.empty()) {
+    json muscles = json::array();
+    for (const MuscleModel& mm : m.muscles) {
+      const Pose& a = m.parts[mm.part_a].pose;
+      const Pose& b = m.parts[mm.part_b].pose;
+      muscles.push_back({{"part_a", mm.part_a},
+                         {"part_b", mm.part_b},
+                         {"anchor_a", vec_json(a.R.transposed() * (mm.anchor_a - a.p), 1e-6)},
+                         {"anchor_b", vec_json(b.R.transposed() * (mm.anchor_b - b.p), 1e-6)},
+                         {"strength", round_to(mm.strength, 1e-6)},
+                         {"rest_length", round_to(mm.rest_length, 1e-6)}});
+    }
+    j["muscles"] = muscles;
+  }
   // a graph creature's neurons are its brain's; another kind's controller
   // (or one whose frames hold another count) has signals of its own
   // (a controller may hold none before its first step: its frames are
@@ -118,7 +135,10 @@ std::string replay_to_string(const CreatureModel& m, const Replay& r, const Eval
   json effectors = json::array();
   const std::vector<double>& hz = res.diagnostics.effector_hz;
   for (std::size_t e = 0; e < m.effectors.size(); ++e) {
-    json ej = {{"joint", m.effectors[e].joint}, {"dof", m.effectors[e].dof}};
+    // a muscle's (lessin2015) names its muscle, a joint's its joint and dof
+    const EffectorModel& em = m.effectors[e];
+    const bool muscle = em.muscle >= 0;
+    json ej = muscle ? json{{"muscle", em.muscle}} : json{{"joint", em.joint}, {"dof", em.dof}};
     // its signal's dominant frequency over the driven steps (Hz; 0: constant)
     if (e < hz.size()) ej["hz"] = round_to(hz[e], 1e-3);
     effectors.push_back(ej);

@@ -1,7 +1,7 @@
 // The replay writer's sensors and joint angles: one reading per sensor and one
 // position per joint degree of freedom in every frame, the header describing
-// each sensor and each joint's stops, and recording them changes nothing of
-// the evaluation.
+// each sensor and each joint's stops (and a lessin2015 creature's muscles),
+// and recording them changes nothing of the evaluation.
 #include "io/replay_file.h"
 
 #include <gtest/gtest.h>
@@ -192,6 +192,70 @@ TEST(ReplayFile, ACatapultsSceneNamesItsProjectileAndMarksItsRelease) {
   EXPECT_FALSE(simulate("walker.json", 1).j["scene"].contains("record"));
 }
 
+// v rotated by the unit quaternion q = [w, x, y, z] (a replay pose's q)
+Vec3 rotate(const json& pose, Vec3 v) {
+  const double w = pose[3], x = pose[4], y = pose[5], z = pose[6];
+  const Vec3 u{x, y, z}, t = 2.0 * cross(u, v);
+  return v + w * t + cross(u, t);
+}
+
+// a lessin2015 creature's replay lists its muscles, each end in its own
+// part's frame: placed with the parts' poses at development it is the end
+// the model has, and with frame 0's poses its length as built; its effectors
+// name their muscles, its photoreceptors their directions
+TEST(ReplayFile, ALessinCreaturesMusclesComeWithTheirEndsInTheirPartsFrames) {
+  Written w = simulate("lessin_pair.json", 1);
+  ASSERT_EQ(w.m.muscles.size(), 4u);
+  const json& mj = w.j["muscles"];
+  ASSERT_EQ(mj.size(), w.m.muscles.size());
+  for (std::size_t k = 0; k < w.m.muscles.size(); ++k) {
+    SCOPED_TRACE(k);
+    const MuscleModel& mm = w.m.muscles[k];
+    const json& h = mj[k];
+    EXPECT_EQ(h["part_a"], mm.part_a);
+    EXPECT_EQ(h["part_b"], mm.part_b);
+    EXPECT_NE(mm.part_a, mm.part_b);
+    EXPECT_NEAR(h["strength"].get<double>(), mm.strength, 1e-6);
+    EXPECT_NEAR(h["rest_length"].get<double>(), mm.rest_length, 1e-6);
+    const Vec3 la = {h["anchor_a"][0], h["anchor_a"][1], h["anchor_a"][2]};
+    const Vec3 lb = {h["anchor_b"][0], h["anchor_b"][1], h["anchor_b"][2]};
+    const Pose &pa = w.m.parts[mm.part_a].pose, &pb = w.m.parts[mm.part_b].pose;
+    EXPECT_LT(norm(pa.R * la + pa.p - mm.anchor_a), 2e-6);
+    EXPECT_LT(norm(pb.R * lb + pb.p - mm.anchor_b), 2e-6);
+    // on its part's surface, not at its centre
+    EXPECT_GT(norm(la), 0.04);
+    EXPECT_GT(norm(lb), 0.04);
+    // frame 0: the creature dropped where the task puts it, as built
+    const json& poses = w.j["frames"][0]["poses"];
+    const json &qa = poses[mm.part_a], &qb = poses[mm.part_b];
+    const Vec3 wa = rotate(qa, la) + Vec3{qa[0], qa[1], qa[2]};
+    const Vec3 wb = rotate(qb, lb) + Vec3{qb[0], qb[1], qb[2]};
+    EXPECT_NEAR(norm(wb - wa), mm.length, 1e-4);
+  }
+  // each effector drives its muscle, and names no joint
+  ASSERT_EQ(w.j["effectors"].size(), w.m.effectors.size());
+  for (std::size_t e = 0; e < w.m.effectors.size(); ++e) {
+    const json& h = w.j["effectors"][e];
+    ASSERT_GE(w.m.effectors[e].muscle, 0);
+    EXPECT_EQ(h["muscle"], w.m.effectors[e].muscle) << e;
+    EXPECT_FALSE(h.contains("joint") || h.contains("dof")) << h;
+  }
+  int eyes = 0;
+  for (const json& s : w.j["sensors"])
+    if (s["type"] == "photoreceptor") {
+      ++eyes;
+      EXPECT_EQ(s["direction"].size(), 3u);
+    }
+  EXPECT_EQ(eyes, 2);
+  // a creature of joint motors: no muscles, effectors by joint and dof as before
+  const json walker = simulate("walker.json", 1).j;
+  EXPECT_FALSE(walker.contains("muscles"));
+  for (const json& h : walker["effectors"]) {
+    EXPECT_TRUE(h.contains("joint") && h.contains("dof")) << h;
+    EXPECT_FALSE(h.contains("muscle")) << h;
+  }
+}
+
 // a river crossing's replay: the record its task and controller made comes
 // back from the file, its field values to the file's 1e-3
 TEST(ReplayFile, ARiverSceneRoundTripsThroughTheFile) {
@@ -232,6 +296,9 @@ TEST(ReplayFile, ARiverSceneRoundTripsThroughTheFile) {
     }
   }
   EXPECT_GE(fields, 1);
+  // its quadruped's effectors drive joints, whatever index their `muscle` holds
+  EXPECT_FALSE(j.contains("muscles"));
+  for (const json& h : j["effectors"]) EXPECT_TRUE(h.contains("joint") && h.contains("dof") && !h.contains("muscle")) << h;
 }
 
 }  // namespace

@@ -2,7 +2,8 @@
 // Each part is its true shape, coloured by its gene (a part its scene record
 // names, a catapult's projectile, in the record's colour, whatever its
 // gene); joint axes hang on the child part (the replay gives anchor and axes
-// in the child's frame), so they move with it.
+// in the child's frame), so they move with it. A lessin2015 creature's
+// muscles (muscle_view.js) and eyes (eye_view.js) come with it.
 import {
   ArrowHelper, EdgesGeometry, Group, LineBasicMaterial, LineSegments, Mesh, MeshBasicMaterial,
   MeshStandardMaterial, SphereGeometry, Vector3,
@@ -12,6 +13,8 @@ import { recordOf } from './scene_record.js';
 import { shapeGeometry } from './shapes.js';
 import { partPoseAt } from './timeline.js';
 import { propPoseAt, sceneProps } from './props.js';
+import { createMuscles } from './muscle_view.js';
+import { createEyes } from './eye_view.js';
 
 /** Colours of a joint's axes: first degree of freedom red, second green. */
 const AXIS_COLORS = [0xd8342c, 0x2f9e44];
@@ -70,7 +73,9 @@ function jointMarker(joint, partSize) {
 
 /**
  * The creature and props of a replay as one group. `setTime(t)` poses every
- * mesh; `showJoints(on)` toggles the joint markers; `dispose()` frees GPU data.
+ * mesh (and sets each muscle's and eye's activity); `showJoints(on)` toggles
+ * the joint markers; `muscles` and `eyes` are muscle_view.js's and
+ * eye_view.js's views; `dispose()` frees GPU data.
  */
 export function createBodies(replay) {
   const group = new Group();
@@ -89,6 +94,10 @@ export function createBodies(replay) {
     parts[j.child].add(m);
     return m;
   });
+  // muscles between their parts, eyes on theirs
+  const muscles = createMuscles(replay);
+  group.add(muscles.object);
+  const eyes = createEyes(replay, parts);
   // props, from their descriptions
   const props = sceneProps(replay);
   const propMeshes = props.map((p) => {
@@ -101,8 +110,12 @@ export function createBodies(replay) {
     group,
     parts,
     props: propMeshes,
+    muscles,
+    eyes,
     setTime(t) {
       parts.forEach((m, k) => setPose(m, partPoseAt(replay.frames, k, t)));
+      muscles.setTime(t);
+      eyes.setTime(t);
       propMeshes.forEach((m, i) => setPose(m, propPoseAt(replay, props[i], i, t)));
     },
     showJoints(on) {

@@ -64,6 +64,9 @@ export function partShape(v, path) {
  * Frames must have one pose per part, one output per neuron and one signal
  * per effector, in time order; when the replay records them (newer files
  * do), one reading per sensor and one position per joint degree of freedom.
+ * An effector drives a joint's degree of freedom (`joint`, `dof`) or a
+ * muscle (`muscle`, an index into `muscles`, which a file without muscles
+ * leaves out).
  */
 export function parseReplay(r, path = 'replay') {
   obj(r, path);
@@ -92,13 +95,31 @@ export function parseReplay(r, path = 'replay') {
     }
   });
   const joints = r.joints;
-  // effectors and sensors: what drives which joint, what reads what
+  // muscles (lessin2015; files without any have none): two parts, each end
+  // in its own part's frame, a strength (N/m) and a rest length (m)
+  const muscles = arr(r.muscles ?? [], `${path}.muscles`);
+  muscles.forEach((m, i) => {
+    const at = `${path}.muscles[${i}]`;
+    obj(m, at);
+    for (const end of ['a', 'b']) {
+      const k = `part_${end}`;
+      if (int(m[k], `${at}.${k}`, 0) >= parts.length) fail(`${at}.${k}`, 'no such part', m[k]);
+      numbers(m[`anchor_${end}`], 3, `${at}.anchor_${end}`);
+    }
+    num(m.strength, `${at}.strength`);
+    num(m.rest_length, `${at}.rest_length`);
+  });
+  // effectors and sensors: what drives which joint (or muscle), what reads what
   const effectors = arr(r.effectors ?? [], `${path}.effectors`);
   effectors.forEach((e, i) => {
     const at = `${path}.effectors[${i}]`;
     obj(e, at);
-    if (int(e.joint, `${at}.joint`, 0) >= joints.length) fail(`${at}.joint`, 'no such joint', e.joint);
-    int(e.dof, `${at}.dof`, 0);
+    if (e.muscle !== undefined) {
+      if (int(e.muscle, `${at}.muscle`, 0) >= muscles.length) fail(`${at}.muscle`, 'no such muscle', e.muscle);
+    } else {
+      if (int(e.joint, `${at}.joint`, 0) >= joints.length) fail(`${at}.joint`, 'no such joint', e.joint);
+      int(e.dof, `${at}.dof`, 0);
+    }
     if (e.hz !== undefined) num(e.hz, `${at}.hz`);
   });
   const sensors = r.sensors === undefined ? null : arr(r.sensors, `${path}.sensors`);
@@ -107,6 +128,12 @@ export function parseReplay(r, path = 'replay') {
     obj(s, at);
     if (!SENSOR_TYPES.includes(s.type)) fail(`${at}.type`, `expected one of ${SENSOR_TYPES.join(', ')}`, s.type);
     int(s.part, `${at}.part`, 0);
+    // a photoreceptor is drawn on its part, looking along its direction
+    // (files before the direction was written have none: not drawn)
+    if (s.type === 'photoreceptor') {
+      if (s.part >= parts.length) fail(`${at}.part`, 'no such part', s.part);
+      if (s.direction !== undefined) numbers(s.direction, 3, `${at}.direction`);
+    }
   });
   const neurons = arr(r.neurons, `${path}.neurons`);
   neurons.forEach((n, i) => {

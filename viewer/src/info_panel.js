@@ -25,7 +25,8 @@ export function infoRows(entry) {
   const rows = [
     ['genome', r.genome],
     kind,
-    ['body', `${r.parts.length} parts, ${r.joints.length} joints, ${r.neurons.length} ${brain}`],
+    ['body', `${r.parts.length} parts, ${r.joints.length} joints, ` +
+      (r.muscles?.length ? `${r.muscles.length} muscles, ` : '') + `${r.neurons.length} ${brain}`],
     ['seed', String(r.seed)],
     ['simulated', num(res.seconds, seconds)],
   ];

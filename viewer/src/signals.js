@@ -26,11 +26,13 @@ const degrees = (v) => `${v.toFixed(Math.abs(v) >= 99.95 ? 0 : 1)}°`;
 const metres = (v) => `${v.toFixed(3)} m`;
 
 /**
- * How an effector is named: the joint and degree of freedom it drives, and
- * its signal's dominant frequency ("constant" for 0) when the replay has it.
+ * How an effector is named: the joint and degree of freedom it drives (or
+ * the muscle, lessin2015's), and its signal's dominant frequency ("constant"
+ * for 0) when the replay has it.
  */
 export function effectorLabel(e, k) {
   const hz = e.hz === undefined ? '' : ` · ${e.hz > 0 ? hertz(e.hz) : 'constant'}`;
+  if (e.muscle !== undefined) return `${k}: muscle ${e.muscle}${hz}`;
   return `${k}: joint ${e.joint} · dof ${e.dof}${hz}`;
 }
 
@@ -57,13 +59,38 @@ function joining(replay, k) {
   return j ? `joint ${k} (${j.type}, part ${j.child} on part ${j.parent})` : `joint ${k}`;
 }
 
+// what a muscle joins, for a tooltip
+function pulling(replay, k) {
+  const m = (replay.muscles ?? [])[k];
+  return m ? `muscle ${k} (part ${m.part_b} to part ${m.part_a})` : `muscle ${k}`;
+}
+
+// what an effector drives, for a tooltip
+function effectorTitle(replay, e, k) {
+  if (e.muscle !== undefined) return `effector ${k}: activates ${pulling(replay, e.muscle)}, in [0, 1]`;
+  return `effector ${k}: drives dof ${e.dof} of ${joining(replay, e.joint)}`;
+}
+
+// what a sensor reads, for a tooltip
+function sensorTitle(replay, s, k) {
+  switch (s.type) {
+    case 'contact': return `sensor ${k}: contact of part ${s.part}'s ${s.face} face (+1 touching, -1 not)`;
+    case 'photoreceptor': return `sensor ${k}: light seen by an eye on part ${s.part}, in [0, 1]`;
+    case 'muscle_length': return `sensor ${k}: length of ${pulling(replay, s.muscle)} over twice its built length, in [0, 1]`;
+    default:
+      return s.joint < 0
+        ? `sensor ${k}: joint angle of the root part ${s.part}, which has no joint (reads 0)`
+        : `sensor ${k}: angle of dof ${s.dof} of ${joining(replay, s.joint)}, scaled to [-1, 1]`;
+  }
+}
+
 /** One series per effector: its signal, drawn on the fixed range [-1, 1] with a zero line. */
 export function effectorSeries(replay) {
   const frames = replay.frames;
   const from = brainFrom(frames);
   return (replay.effectors ?? []).map((e, k) => fixedRange(makeSeries({
     label: effectorLabel(e, k), kind: 'effector', from,
-    title: `effector ${k}: drives dof ${e.dof} of ${joining(replay, e.joint)}`,
+    title: effectorTitle(replay, e, k),
     values: Float32Array.from(frames, (f) => f.effectors[k]),
   })));
 }
@@ -78,11 +105,7 @@ export function sensorSeries(replay) {
   const from = brainFrom(frames);
   return replay.sensors.map((s, k) => fixedRange(makeSeries({
     label: sensorLabel(s, k), kind: 'sensor', from,
-    title: s.type === 'contact'
-      ? `sensor ${k}: contact of part ${s.part}'s ${s.face} face (+1 touching, -1 not)`
-      : s.joint < 0
-        ? `sensor ${k}: joint angle of the root part ${s.part}, which has no joint (reads 0)`
-        : `sensor ${k}: angle of dof ${s.dof} of ${joining(replay, s.joint)}, scaled to [-1, 1]`,
+    title: sensorTitle(replay, s, k),
     values: Float32Array.from(frames, (f) => f.sensors[k]),
   })));
 }

@@ -2,7 +2,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { parsePageData, parseReplay, parseRun, parseThrow } from '../src/data.js';
-import { makeCatapult, makeReplay, makeRun } from './fixture.mjs';
+import { makeCatapult, makeLessin, makeReplay, makeRun } from './fixture.mjs';
 
 test('a well-formed replay passes unchanged', () => {
   const r = makeReplay();
@@ -52,6 +52,39 @@ test('a replay written before sensors and joint angles were recorded passes', ()
     delete f.joint_angles;
   });
   assert.equal(parseReplay(r), r);
+});
+
+test("a lessin2015 replay's muscles, muscle effectors and eyes' directions are read", () => {
+  const r = makeLessin();
+  assert.equal(parseReplay(r), r);
+  assert.deepEqual(r.muscles[1], { part_a: 0, part_b: 1, anchor_a: [0.15, 0.1, 0], anchor_b: [-0.05, 0.05, 0], strength: 1000, rest_length: 0.04 });
+  // a file without muscles (every other dialect's, and older files) has none
+  assert.equal(parseReplay(makeReplay()).muscles, undefined);
+  const cases = [
+    [(x) => (x.muscles = {}), /^replay\.muscles: expected an array/],
+    [(x) => (x.muscles[1].part_b = 2), /^replay\.muscles\[1\]\.part_b: no such part, got 2$/],
+    [(x) => (x.muscles[0].part_a = -1), /^replay\.muscles\[0\]\.part_a: expected an integer >= 0, got -1$/],
+    [(x) => (x.muscles[0].anchor_b = [0, 0]), /^replay\.muscles\[0\]\.anchor_b: expected 3 numbers, got \[0,0\]$/],
+    [(x) => delete x.muscles[1].strength, /^replay\.muscles\[1\]\.strength: expected a number, got nothing$/],
+    [(x) => (x.muscles[1].rest_length = '0.1'), /^replay\.muscles\[1\]\.rest_length: expected a number, got "0\.1"$/],
+    [(x) => (x.effectors[0].muscle = 2), /^replay\.effectors\[0\]\.muscle: no such muscle, got 2$/],
+    [(x) => delete x.muscles, /^replay\.effectors\[0\]\.muscle: no such muscle, got 1$/],
+    [(x) => (x.effectors[1].muscle = 0.5), /^replay\.effectors\[1\]\.muscle: expected an integer >= 0, got 0\.5$/],
+    [(x) => (x.sensors[0].direction = [0, 1]), /^replay\.sensors\[0\]\.direction: expected 3 numbers, got \[0,1\]$/],
+    [(x) => (x.sensors[0].part = 5), /^replay\.sensors\[0\]\.part: no such part, got 5$/],
+  ];
+  for (const [spoil, message] of cases) {
+    const x = makeLessin();
+    spoil(x);
+    assert.throws(() => parseReplay(x), { message });
+  }
+  // a joint effector still needs its joint and dof; an eye without a direction (older files) passes
+  const x = makeLessin();
+  x.effectors[0] = { dof: 0 };
+  assert.throws(() => parseReplay(x), { message: /^replay\.effectors\[0\]\.joint: expected an integer >= 0, got nothing$/ });
+  const old = makeLessin();
+  delete old.sensors[0].direction;
+  assert.equal(parseReplay(old), old);
 });
 
 test('page data holds labelled replays and an optional run', () => {

@@ -4,7 +4,8 @@
 // neuron and the effector following sin(t), a joint-angle sensor reading the
 // angle over 2 and a contact sensor always touching; a catapult throwing
 // its projectile (makeCatapult), written as before replays held sensors and
-// joint angles; and a river crossing's scene record (makeRiver).
+// joint angles; a river crossing's scene record (makeRiver); and a
+// lessin2015 creature with two muscles and an eye (makeLessin).
 
 /** Quaternion [w, x, y, z] for `angle` radians about z. */
 export function aboutZ(angle) {
@@ -189,5 +190,32 @@ export function makeRiver() {
       { t: 1.5, carry: { part: 0, kind: -1 } },
     ],
   };
+  return r;
+}
+
+/**
+ * The fixture replay (makeReplay, 2 s) as a lessin2015 creature: part 1 a
+ * 0.2 x 0.1 x 0.1 m box; muscle 0 from the root's top (0.15, 0, 0.05) to
+ * part 1's (-0.05, 0, 0.05), 0.1 m long at t = 0; muscle 1 likewise on the
+ * +y sides, (0.15, 0.1, 0) to (-0.05, 0.05, 0); effector 0
+ * activates muscle 1 with 2 sin(t) (so clamped to [0, 1]), effector 1
+ * muscle 0 with t / 2; an eye on part 1 looking along [0, 1, 1] (it reads
+ * t / 4) and muscle 0's length sensor.
+ */
+export function makeLessin() {
+  const r = makeReplay();
+  r.dialect = 'lessin2015';
+  r.parts[1] = { shape: 'box', size: [0.2, 0.1, 0.1], mass: 2, gene: 1, parent: 0, mirrored: false };
+  r.joints[0].anchor = [-0.1, 0, 0];
+  r.muscles = [
+    { part_a: 0, part_b: 1, anchor_a: [0.15, 0, 0.05], anchor_b: [-0.05, 0, 0.05], strength: 2000, rest_length: 0.05 },
+    { part_a: 0, part_b: 1, anchor_a: [0.15, 0.1, 0], anchor_b: [-0.05, 0.05, 0], strength: 1000, rest_length: 0.04 },
+  ];
+  r.effectors = [{ muscle: 1, hz: 0.159 }, { muscle: 0 }];
+  r.sensors = [{ type: 'photoreceptor', part: 1, direction: [0, 1, 1] }, { type: 'muscle_length', part: 1, muscle: 0 }];
+  r.frames.forEach((f) => {
+    f.effectors = [2 * Math.sin(f.t), f.t / 2];
+    f.sensors = [f.t / 4, 0.5];
+  });
   return r;
 }

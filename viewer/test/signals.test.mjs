@@ -8,7 +8,7 @@ import {
   effectorSeries, isLinearDof, jointAngleSeries, jointDofs, sensorLabel, sensorSeries, signalGroups, stopShare,
 } from '../src/signals.js';
 import { rangeText, stats } from '../src/series.js';
-import { makeCatapult, makeReplay } from './fixture.mjs';
+import { makeCatapult, makeLessin, makeReplay } from './fixture.mjs';
 
 test('stats: min, max and spread from a frame on', () => {
   const s = stats([0, -1, -1, -1], 1);
@@ -68,6 +68,16 @@ test('sensors: a joint angle and a contact, on [-1, 1]', () => {
 test("lessin2015's sensors: a photoreceptor and a muscle's length are named by what they read", () => {
   assert.equal(sensorLabel({ type: 'photoreceptor', part: 2, direction: [0, 1, 1] }, 4), '4: eye · part 2');
   assert.equal(sensorLabel({ type: 'muscle_length', part: 1, muscle: 3 }, 5), '5: muscle 3 length · part 1');
+});
+
+test("lessin2015's effectors are named by the muscle they activate", () => {
+  const [e0, e1] = effectorSeries(parseReplay(makeLessin()));
+  assert.equal(e0.label, '0: muscle 1 · 0.159 Hz');
+  assert.equal(e1.label, '1: muscle 0');
+  assert.equal(e0.title, 'effector 0: activates muscle 1 (part 1 to part 0), in [0, 1]');
+  const [eye, length] = sensorSeries(makeLessin());
+  assert.match(eye.title, /light seen by an eye on part 1/);
+  assert.match(length.title, /length of muscle 0 \(part 1 to part 0\)/);
 });
 
 test('a joint angle in degrees, drawn against its stops with a margin', () => {

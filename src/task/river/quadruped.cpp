@@ -85,9 +85,9 @@ CreatureModel make_quadruped(const QuadrupedDef& def) {
     k.limits = {kKneeLimit};
     m.joints.push_back(k);
 
-    m.effectors.push_back({hip_joint(leg), 0, 1});
-    m.effectors.push_back({hip_joint(leg), 1, 1});
-    m.effectors.push_back({knee_joint(leg), 0, 1});
+    m.effectors.push_back({.joint = hip_joint(leg), .dof = 0});
+    m.effectors.push_back({.joint = hip_joint(leg), .dof = 1});
+    m.effectors.push_back({.joint = knee_joint(leg), .dof = 0});
   }
   return m;
 }
