@@ -38,6 +38,10 @@ kick (above 1: something struck it on the ground, as in a drop-kick); and
 the share of the first and last generation's new individuals whose body fires
 the release before the mechanism's delay (each simulated once, seed 1).
 
+For a lessin2015 locomotion run also its best's speed (the scored one: the
+lesser of the measured time's halves, task.windows), efficiency and muscle
+work over the measured time (the task's named metrics).
+
 For a river crossing run (Stanton & Channon 2015) instead of distances: its
 tournaments, best fitness, and per level the share of its final 1000
 tournaments' evaluations that completed the level (the generation_metric
@@ -92,8 +96,15 @@ def row(preset, seed, run_dir):
     cmd = ["simulate"] + re.search(r"exactly: \S+ simulate (.*)$", b.stderr, re.M).group(1).split()
     one = json.loads(sh(cmd + ["--json"]).stdout)
     d1, bl = one["distance"], one["body_length"]
-    return (f"| {preset} | {seed} | {evals} | {best0:.4g} | {best:.4g} | {one['parts']} | {d1:.2f} | "
+    text = (f"| {preset} | {seed} | {evals} | {best0:.4g} | {best:.4g} | {one['parts']} | {d1:.2f} | "
             f"{d1 / bl:.1f} | {failed} | {rejected} |")
+    # lessin2015's fitness measures its speed and efficiency (named metrics)
+    m = one.get("metrics", {})
+    muscles = None
+    if "efficiency" in m:
+        muscles = (f"| {preset} | {seed} | {m['speed']:.4f} | {m['efficiency']:.3f} | {m['muscle_work']:.1f} | "
+                   f"{one['parts']} | {one['fitness']:.4g} |")
+    return text, muscles
 
 
 def check_row(preset, seed, run_dir, check_set=()):
@@ -344,7 +355,7 @@ def main():
                     help="a [check] key for `bestiary check` (repeatable), e.g. check.converge_seeds=5 "
                          "for runs made before their preset set it")
     a = ap.parse_args()
-    rows, throws, checks, rivers = [], [], [], []
+    rows, throws, checks, rivers, speeds = [], [], [], [], []
     for spec in a.runs:
         preset, _, s = spec.partition(":")
         for seed in seeds(s or "1"):
@@ -366,8 +377,12 @@ def main():
                 throws.append(throw_row(preset, seed, run_dir))
                 print("\n".join(throws[-1]), flush=True)
                 continue
-            rows.append(row(preset, seed, run_dir))
+            text, muscles = row(preset, seed, run_dir)
+            rows.append(text)
             print(rows[-1], flush=True)
+            if muscles:
+                speeds.append(muscles)
+                print(muscles, flush=True)
     if throws:
         print("\n| preset | seed | evaluations | best, first generation | best, last | throw (m) | target miss (m) "
               "| median throw, seeds 1-5 (m) | discarded, first generation | discarded, last | discarded, run |")
@@ -392,6 +407,10 @@ def main():
           "| body lengths | failed | rejected |")
     print("|---|---|---|---|---|---|---|---|---|---|")
     print("\n".join(rows))
+    if speeds:
+        print("\n| preset | seed | speed (m/s, the lesser half's) | efficiency | muscle work (J) | parts | fitness |")
+        print("|" + "---|" * 7)
+        print("\n".join(speeds))
 
 
 if __name__ == "__main__":
