@@ -126,10 +126,7 @@ double LocomotionTask::fitness(const CreatureModel& m) const {
   if (!measured_) return 0;
   switch (def_.fitness) {
     case LocomotionFitness::Distance: return scored_distance();
-    case LocomotionFitness::Speed: {
-      double s = measured_seconds();
-      return s > 0 ? scored_distance() / s : 0;
-    }
+    case LocomotionFitness::Speed: return speed();
     case LocomotionFitness::Chaumont2007: return scored_distance() * chaumont_size_factor(m, def_.kappa);
     case LocomotionFitness::Lessin2015:
       return def_.speed_step * (std::floor(speed() / def_.speed_step) + efficiency(m)) / def_.max_speed;

@@ -11,6 +11,19 @@
 namespace bx {
 namespace {
 
+// a one-part creature as a point that moves to a given place each step
+struct PointPath {
+  PointPath(LocomotionTask& task, double dt, Vec3 start) : task(task), dt(dt), p(start) { task.start(p, {p}); }
+  void step(Vec3 to) {
+    time += dt;
+    p = to;
+    task.observe(time, p, {p});
+  }
+  LocomotionTask& task;
+  double dt, time = 0;
+  Vec3 p;
+};
+
 TEST(Locomotion, MiconiCountsDistanceAlongXAfterTheFirstEighth) {
   LocomotionDef def;
   def.seconds = 8;
@@ -48,14 +61,9 @@ TEST(Locomotion, ChaumontSequenceGatesTheControllerAndMeasuresOnlyTheLastPhase) 
   def.settle.seconds = 3 * dt;  // three steps
   def.settle.speed = 0.1;       // 0.01 m per step
   LocomotionTask t(def, dt, 1);
-  double time = 0;
-  Vec3 p{0, 0, 1};
-  t.start(p, {p});
-  auto step = [&](Vec3 to) {
-    time += dt;
-    p = to;
-    t.observe(time, p, {p});
-  };
+  PointPath path(t, dt, {0, 0, 1});
+  Vec3& p = path.p;
+  auto step = [&](Vec3 to) { path.step(to); };
   // falling: not settled, controller off
   step({0, 0, 0.5});
   step({0, 0, 0.0});
@@ -170,14 +178,9 @@ TEST(Locomotion, SettledStartsWithTheControllerOffAndMeasuresFromRest) {
   def.settle.timeout = 5;
   LocomotionTask t(def, dt, 1);
   EXPECT_EQ(t.max_steps(), 61);  // (timeout + seconds) / dt, and a step
-  double time = 0;
-  Vec3 p{0, 0, 1};
-  t.start(p, {p});
-  auto step = [&](Vec3 to) {
-    time += dt;
-    p = to;
-    t.observe(time, p, {p});
-  };
+  PointPath path(t, dt, {0, 0, 1});
+  Vec3& p = path.p;
+  auto step = [&](Vec3 to) { path.step(to); };
   EXPECT_FALSE(t.controller_on());
   step({1, 0, 0.5});  // toppling out of its built pose: not counted
   step({2, 0, 0});
