@@ -5,6 +5,7 @@
 #include <span>
 
 #include "brain/brain_model.h"
+#include "brain/pandemonium.h"
 
 namespace bx {
 
@@ -69,6 +70,10 @@ void brain_step(const BrainModel& m, BrainState& s, double dt) {
 
   // publish all neuron outputs at once (sensor slots belong to the simulation)
   for (int i = n_sensors; i < n_sensors + n_neurons; ++i) s.values[i] = s.next[i];
+
+  // pandemonium: in each group only the largest output passes, before the
+  // effectors (and the next step's neurons) read the values
+  apply_pandemonium(m, s.values);
 
   // effectors from the updated values, so sensor->effector acts this step
   for (int e = 0; e < m.n_effectors(); ++e) {

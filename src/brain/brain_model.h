@@ -27,6 +27,13 @@ struct BrainModel {
   std::vector<std::int32_t> input_src;    ///< value slot, or -1 for "reads 0" (positional hole)
   std::vector<double> input_weight;
 
+  // pandemonium groups (lessin2015 IV-C; brain/pandemonium.h): after each
+  // step only the largest output of a group's members passes, the rest read
+  // 0. Members are neuron indices (not value slots), in the group's order
+  // (ties go to the first); a neuron belongs to one group at most, once.
+  std::vector<std::uint32_t> group_begin;  ///< size n_groups + 1, into group_member; empty: no groups
+  std::vector<std::int32_t> group_member;
+
   // effectors, in CreatureModel effector order
   std::vector<double> effector_bias;
   std::vector<std::uint32_t> effector_input_begin;  ///< size n_effectors + 1
@@ -47,6 +54,7 @@ struct BrainModel {
 
   int n_neurons() const { return static_cast<int>(fn.size()); }
   int n_effectors() const { return static_cast<int>(effector_bias.size()); }
+  int n_groups() const { return group_begin.empty() ? 0 : static_cast<int>(group_begin.size()) - 1; }
   int n_values() const { return n_sensors + n_neurons(); }
   bool has_release() const { return release_delay_src >= 0; }
 };
@@ -66,7 +74,8 @@ BrainState make_brain_state(const BrainModel& m);
 
 /// One brain step of length dt: every neuron computes from the current values
 /// (sensor slots must already hold this step's readings), then all outputs are
-/// published at once and effector signals recomputed.
+/// published at once, each pandemonium group keeps only its largest output
+/// (brain/pandemonium.h), and effector signals are recomputed.
 void brain_step(const BrainModel& m, BrainState& s, double dt);
 
 }  // namespace bx

@@ -312,6 +312,24 @@ void add_neuron(BrainModel& b, const NeuronGene& ng, int part, int owner, Wiring
   b.neuron_part.push_back(part);
 }
 
+// the brain's pandemonium groups (lessin2015 IV-C) from (genome group id,
+// neuron index) pairs in development order: one group per distinct id, by
+// increasing id, its members in development order (the first wins a tie,
+// brain/pandemonium.h). No pairs, no groups: the arrays stay empty.
+void add_groups(BrainModel& b, std::vector<std::pair<int, std::int32_t>> grouped) {
+  if (grouped.empty()) return;
+  // neuron indices rise in development order, so sorting the pairs sorts by
+  // id and keeps that order within a group
+  std::sort(grouped.begin(), grouped.end());
+  b.group_begin = {0};
+  for (std::size_t k = 0; k < grouped.size(); ++k) {
+    if (k > 0 && grouped[k].first != grouped[k - 1].first)
+      b.group_begin.push_back(static_cast<std::uint32_t>(k));
+    b.group_member.push_back(grouped[k].second);
+  }
+  b.group_begin.push_back(static_cast<std::uint32_t>(grouped.size()));
+}
+
 // a neuron of the catapult's fixed mechanism, owned by the arm (part 0), with
 // inputs given as value slots; returns its value slot
 int add_mechanism_neuron(BrainModel& b, std::string_view fn, std::vector<double> params,
@@ -513,19 +531,29 @@ Development develop(const Genome& g, const DevelopDef& def) {
   brain.n_sensors = static_cast<int>(m.sensors.size());
   wiring.global_base = n_neurons;
 
-  // neurons of every part, then the global neurons
+  // neurons of every part, then the global neurons; each copy of a neuron in
+  // a pandemonium group joins it: (group id, neuron index)
   brain.param_begin = {0};
   brain.state_begin = {0};
   brain.input_begin = {0};
+  std::vector<std::pair<int, std::int32_t>> grouped;
+  auto join_group = [&](const NeuronGene& ng) {
+    if (ng.group != NeuronGene::kNoGroup) grouped.push_back({ng.group, brain.n_neurons() - 1});
+  };
   for (int i = 0; i < n; ++i) {
     const NodeGene& node = g.nodes[inst[i].node];
-    for (std::size_t k = 0; k < node.neurons.size(); ++k)
+    for (std::size_t k = 0; k < node.neurons.size(); ++k) {
       add_neuron(brain, node.neurons[k], i, i, wiring,
                  "nodes[" + std::to_string(inst[i].node) + "].neurons[" + std::to_string(k) + "]");
+      join_group(node.neurons[k]);
+    }
   }
-  for (std::size_t k = 0; k < g.global_neurons.size(); ++k)
+  for (std::size_t k = 0; k < g.global_neurons.size(); ++k) {
     add_neuron(brain, g.global_neurons[k], -1, 0, wiring,
                "global_neurons[" + std::to_string(k) + "]");
+    join_group(g.global_neurons[k]);
+  }
+  add_groups(brain, std::move(grouped));
 
   // a catapult's release mechanism (chaumont2007 Fig. 4): a constant through a
   // delay line, so the release fires at brain step delay_steps at the latest

@@ -50,6 +50,7 @@ DialectRules sims1994_rules() {
       .max_sensors_per_part = 0,
       .max_effectors_per_part = 0,
       .global_neurons = true,  // Sims' neurons outside any part
+      .group_fn = "",
       .operators = OperatorScheme::Graph,
       .edge_lattice = false,
       .edge_scale_free = true,
@@ -87,6 +88,7 @@ DialectRules miconi2006_rules() {
       .max_sensors_per_part = 1,            // sec. 3.1: one sensor per limb
       .max_effectors_per_part = 1,          // sec. 3.1: one actuator per limb
       .global_neurons = false,              // sec. 3: sources are adjacent limbs or the root only
+      .group_fn = "",
       .operators = OperatorScheme::LimbTree,  // sec. 5.1
       .edge_lattice = true,                 // sec. 2: a face and two polar angles
       .edge_scale_free = false,             // sec. 2: a limb's size is its own gene
@@ -124,6 +126,7 @@ DialectRules chaumont2007_rules() {
       .max_sensors_per_part = 0,
       .max_effectors_per_part = 0,
       .global_neurons = true,
+      .group_fn = "",
       .operators = OperatorScheme::Graph,  // sec. 3.1: Sims' genome and operators
       .edge_lattice = false,
       .edge_scale_free = true,
@@ -166,6 +169,7 @@ DialectRules lessin2015_rules() {
       .max_sensors_per_part = 0,
       .max_effectors_per_part = 0,
       .global_neurons = true,  // as Sims: the brain is one network of nodes and wires (III-C)
+      .group_fn = "sigma",     // IV-C: pandemonium between skills, each switched by its sigma (IV-B)
       .operators = OperatorScheme::Graph,
       .edge_lattice = false,
       .edge_scale_free = true,
@@ -564,6 +568,19 @@ class Validator {
                          ")",
                      nr.fn);
     std::string fn(spec->name);
+    // a pandemonium group (lessin2015 IV-C): only on the dialect's skill switch
+    if (nr.group != NeuronGene::kNoGroup) {
+      if (nr.group < 0)
+        return problem(path + ".group", "must be >= 0 (" + std::to_string(NeuronGene::kNoGroup) + ": none)",
+                       nr.group);
+      if (r_.group_fn.empty())
+        return problem(path + ".group", "no pandemonium groups" + in_dialect(r_), nr.group);
+      if (fn != r_.group_fn)
+        return problem(path + ".group",
+                       "only a " + std::string(r_.group_fn) + " neuron may belong to a pandemonium group" +
+                           in_dialect(r_) + " (this is a " + fn + ")",
+                       nr.group);
+    }
     // parameters, by the function's order
     if (nr.params.size() != spec->params.size())
       return problem(path + ".params",

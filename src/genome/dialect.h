@@ -53,6 +53,9 @@ struct DialectRules {
   int max_sensors_per_part;
   int max_effectors_per_part;
   bool global_neurons;        ///< global neurons allowed
+  /// The neuron function that may belong to a pandemonium group
+  /// (NeuronGene::group; lessin2015 IV-C: a skill's switch, sigma); empty: no groups.
+  std::string_view group_fn;
   // what only the operators keep (validate() does not require them)
   OperatorScheme operators;
   /// New edges sit on the parent's face lattice (miconi2006 sec. 2: a face and

@@ -85,11 +85,20 @@ struct InputGene {
 /// (by the function's parameter order), a bias (threshold theta of
 /// weighted-sum neurons; 0 for positional ones) and inputs.
 struct NeuronGene {
+  /// No pandemonium group (NeuronGene::group).
+  static constexpr int kNoGroup = -1;
   std::string fn;
   std::vector<double> params;
   double bias = 0;
   std::vector<InputGene> inputs;
   bool locked = false;  ///< no operator changes or removes it (genome/locks.h)
+  /// Pandemonium group (lessin2015 IV-C), or kNoGroup: every developed copy
+  /// of every neuron with the same group id competes, and at each brain step
+  /// only the largest output passes (brain/pandemonium.h). Only a lessin2015
+  /// `sigma` (a skill's switch) may have one. Set by the syllabus, never by
+  /// an operator: mutation, crossover and random genomes copy it or leave it
+  /// out.
+  int group = kNoGroup;
   friend bool operator==(const NeuronGene&, const NeuronGene&) = default;
 };
 

@@ -276,9 +276,11 @@ class Reader {
   }
 
   NeuronGene neuron(const json& j, const std::string& path) const {
-    expect_object(j, path, {"fn", "bias", "params", "inputs", "locked"});
+    expect_object(j, path, {"fn", "bias", "params", "inputs", "group", "locked"});
     NeuronGene n;
     if (const json* v = find(j, "locked")) n.locked = boolean(*v, field_path(path, "locked"));
+    // a pandemonium group (validate() checks which neurons may have one)
+    if (const json* v = find(j, "group")) n.group = integer(*v, field_path(path, "group"));
     std::string fn_path = field_path(path, "fn");
     const json& fn = require(j, path, "fn");
     n.fn = str(fn, fn_path);
@@ -653,6 +655,8 @@ J neuron_json(const NeuronGene& n, NeuronSetId set) {
   }
   o["params"] = ps;
   o["inputs"] = inputs_json<J>(n.inputs);
+  // written only when set, so a genome without groups reads as it did before them
+  if (n.group != NeuronGene::kNoGroup) o["group"] = n.group;
   if (n.locked) o["locked"] = true;
   return o;
 }

@@ -577,6 +577,9 @@ struct GraphMutator {
     int owner, k;
     if (!pick_neuron(owner, k)) return;
     NeuronGene& nr = owner < 0 ? g.global_neurons[k] : g.nodes[owner].neurons[k];
+    // a pandemonium member stays what its group needs (DialectRules::group_fn):
+    // groups are the syllabus's, and no operator changes one
+    if (nr.group != NeuronGene::kNoGroup) return;
     std::vector<std::string_view> names = neuron_fn_names(r.neuron_set);
     std::vector<std::string_view> others;
     for (auto nm : names)
