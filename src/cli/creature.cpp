@@ -18,6 +18,7 @@
 #include "genome/genotype_file.h"
 #include "genome/graph_genotype.h"
 #include "io/run_store.h"
+#include "io/syllabus.h"
 
 namespace bx {
 
@@ -103,13 +104,28 @@ Result<Subject> from_run(const RunTarget& t, const CreatureFlags& f) {
   }
   auto text = (*store)->config_text();
   if (!text) return Error{text.error()};
-  auto cfg = read_run_config(*text, run_db_path(t.dir) + " (the run's config)", f.set);
-  if (!cfg) return Error{cfg.error()};
+  // the config of its stage (a run of one stage: the run's)
+  const std::string source = run_db_path(t.dir) + " (the run's config)";
+  auto syl = read_syllabus(*text, source, f.set);
+  if (!syl) return Error{syl.error()};
+  const StageRow stage = stage_of((*store)->stages(), ind->id);
+  if (stage.index >= static_cast<int>(syl->stages.size()))
+    return Error{t.dir + ": individual " + std::to_string(ind->id) + " is of stage " + std::to_string(stage.index + 1) +
+                 ", but the run's config has " + std::to_string(syl->stages.size())};
+  const RunConfig* cfg = &syl->stages[stage.index].cfg;
   Subject c;
   c.genotype = ind->genotype;
   c.cfg = *cfg;
   c.seed = ind->seed;
-  c.label = t.dir + " individual " + std::to_string(ind->id) + " (generation " + std::to_string(ind->generation) + ")";
+  c.label = t.dir + " individual " + std::to_string(ind->id) + " (generation " + std::to_string(ind->generation) +
+            (syl->staged() ? ", stage \"" + stage.name + "\"" : "") + ")";
+  c.run_config_text = *text;
+  if (syl->staged()) {
+    auto plain = read_syllabus(*text, source);
+    if (!plain) return Error{plain.error()};
+    c.run_config_text = "# Stage \"" + stage.name + "\" of the run " + t.dir + "\n" +
+                        config_to_toml(plain->stages[stage.index].cfg);
+  }
   c.stored_fitness = ind->fitness;
   c.evaluations = ind->evaluations;
   c.individual = *ind;
@@ -117,8 +133,8 @@ Result<Subject> from_run(const RunTarget& t, const CreatureFlags& f) {
   // --set keys that change no evaluation (check's gates) keep it as scored
   bool same = f.set.empty();
   if (!same) {
-    auto plain = read_run_config(*text, run_db_path(t.dir) + " (the run's config)", {});
-    same = plain && evaluates_alike(*plain, *cfg);
+    auto plain = read_syllabus(*text, source, {});
+    same = plain && evaluates_alike(plain->stages[stage.index].cfg, *cfg);
   }
   c.scored_settings = same && !f.seconds;
   c.settings = c.scored_settings

@@ -55,6 +55,9 @@ struct Subject {
   int evaluations = 1;
   std::optional<Individual> individual; ///< a run's individual, as stored
   std::string run_dir;                  ///< its run, if any
+  /// Its run's config as a genome file's provenance carries it: the stored
+  /// text, or for a multi-stage run its stage's config (every key).
+  std::string run_config_text;
   /// Where the settings come from, and whether they are the scored ones; one
   /// line for the user (empty when there is nothing to say).
   std::string settings;

@@ -21,6 +21,7 @@
 #include "io/config.h"
 #include "io/presets.h"
 #include "io/run_store.h"
+#include "io/syllabus.h"
 
 namespace bx {
 
@@ -74,7 +75,7 @@ int finish(const std::string& dir, const Status& s) {
     if (!gens.empty())
       std::printf("best fitness %.6g (generation 0: %.6g)\n", gens.back().best, gens.front().best);
     if (auto text = (*store)->config_text(); text)
-      if (auto cfg = read_run_config(*text, run_db_path(dir)); cfg) body = has_body(cfg->sim.creature);
+      if (auto syl = read_syllabus(*text, run_db_path(dir)); syl) body = has_body(syl->stages.front().cfg.sim.creature);
   }
   std::printf("its genome: %s best %s --out best.json\n", program().c_str(), dir.c_str());
   if (body)
@@ -97,21 +98,23 @@ struct RunArgs {
 int cmd_run(const RunArgs& a) {
   auto src = config_source(a.config);
   if (!src) return fail(src.error());
-  auto cfg = read_run_config(src->second, a.config, a.set);
-  if (!cfg) return fail(cfg.error());
+  auto syl = read_syllabus(src->second, a.config, a.set);
+  if (!syl) return fail(syl.error());
+  const RunConfig* cfg = &syl->stages.front().cfg;
   if (a.workers < 0) return fail("--workers: expected 0 or more, got " + std::to_string(a.workers));
   std::string dir = a.out;
   if (dir.empty()) {
     dir = "runs/" + src->first + "-" + timestamp();
     for (int k = 2; fs::exists(dir); ++k) dir = "runs/" + src->first + "-" + timestamp() + "-" + std::to_string(k);
   }
-  if (Status s = create_run(dir, *cfg, src->second, a.config, a.seed); !s) return fail(s.error());
+  if (Status s = create_run(dir, *syl, src->second, a.config, a.seed); !s) return fail(s.error());
   // what it evolves: a graph genome's dialect, or another creature kind's name
   const std::string what = cfg->sim.creature == CreatureKind::Graph
                                ? std::string(to_string(cfg->dialect))
                                : std::string(creature_kind_row(cfg->sim.creature).name) + " creatures";
-  if (!a.quiet) std::printf("run %s: %s, seed %llu, %d workers -> %s\n", src->first.c_str(), what.c_str(),
-                            static_cast<unsigned long long>(a.seed), a.workers, dir.c_str());
+  const std::string stages = syl->staged() ? ", " + std::to_string(syl->stages.size()) + " stages" : "";
+  if (!a.quiet) std::printf("run %s: %s%s, seed %llu, %d workers -> %s\n", src->first.c_str(), what.c_str(),
+                            stages.c_str(), static_cast<unsigned long long>(a.seed), a.workers, dir.c_str());
   catch_interrupts(dir);
   return finish(dir, drive_run(dir, {a.workers, a.quiet, a.stop_after}));
 }
@@ -146,9 +149,7 @@ int cmd_best(const std::string& target, const CreatureFlags& flags, const std::s
   // the genotype (a graph genome's file, or another kind's genotype file)
   // with where it came from: the run's config and the seed that scored it
   // travel with it, so `simulate/show/render/check FILE` replay that evaluation
-  auto store = RunStore::open(run_db_path(c->run_dir));
-  if (!store) return fail(store.error());
-  std::string text = genotype_file_string(*c->genotype, provenance_json(*c, (*store)->meta("config")));
+  std::string text = genotype_file_string(*c->genotype, provenance_json(*c, c->run_config_text));
   if (out.empty()) {
     std::printf("%s", text.c_str());
     return 0;

@@ -33,6 +33,7 @@
 #include "io/replay_file.h"
 #include "io/run_page.h"
 #include "io/run_store.h"
+#include "io/syllabus.h"
 #include "run/run.h"
 
 extern char** environ;
@@ -92,8 +93,14 @@ int cmd_show_run(WatchArgs a) {
   if (!store) return fail(store.error());
   auto text = (*store)->config_text();
   if (!text) return fail(text.error());
-  auto cfg = read_run_config(*text, run_db_path(dir) + " (the run's config)");
-  if (!cfg) return fail(cfg.error());
+  auto syl = read_syllabus(*text, run_db_path(dir) + " (the run's config)");
+  if (!syl) return fail(syl.error());
+  if (syl->staged())
+    return fail(dir + ": a run of " + std::to_string(syl->stages.size()) +
+                " stages has no run page yet: show its creatures one at a time (`" + program() + " show " + dir +
+                ":ID`, `best " + dir + "` names the last stage's best), its curves with `" + program() + " plot " + dir +
+                " --out fitness.svg`");
+  const RunConfig* cfg = &syl->stages.front().cfg;
   if (!has_body(cfg->sim.creature))
     return fail(no_body(cfg->sim.creature, "no creature to show (its curves: `" + program() + " plot " + dir +
                                               " --out fitness.svg`, and --metric NAME)"));
@@ -412,9 +419,9 @@ int cmd_plot(const WatchArgs& a) {
     // a steady state's report intervals count tournaments
     auto text = (*store)->config_text();
     if (!text) return fail(text.error());
-    auto cfg = read_run_config(*text, run_db_path(dir) + " (its config)");
-    if (!cfg) return fail(cfg.error());
-    const EvolutionDef& e = cfg->evolution;
+    auto syl = read_syllabus(*text, run_db_path(dir) + " (its config)");
+    if (!syl) return fail(syl.error());
+    const EvolutionDef& e = syl->stages.front().cfg.evolution;
     const bool steady = e.algorithm == Algorithm::SteadyState;
     const double per = steady ? static_cast<double>(e.report_every > 0 ? e.report_every : e.population) : 1.0;
     svg = metric_svg(gens, names, per, steady ? "tournaments" : "generation", title, a.width, a.height);

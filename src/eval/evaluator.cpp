@@ -14,6 +14,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <deque>
+#include <stdexcept>
 #include <nlohmann/json.hpp>
 #include <thread>
 
@@ -76,10 +77,19 @@ double repeated_genotype_fitness(const Genotype& g, const SimConfig& cfg, std::u
   return score;
 }
 
+SerialEvaluator::SerialEvaluator(const std::vector<SimConfig>& tasks) {
+  for (const SimConfig& c : tasks) steps_.emplace_back(c);
+}
+
 std::vector<EvalOutcome> SerialEvaluator::evaluate(const std::vector<EvalJob>& jobs) {
   std::vector<EvalOutcome> out;
   out.reserve(jobs.size());
-  for (const auto& j : jobs) out.push_back(evaluate_genotype(*j.genotype, steps_.at(j.step_divisor), j.seed));
+  for (const auto& j : jobs) {
+    if (j.task < 0 || j.task >= static_cast<int>(steps_.size()))
+      throw std::logic_error("evaluation job of task " + std::to_string(j.task) + " given to an evaluator of " +
+                             std::to_string(steps_.size()));
+    out.push_back(evaluate_genotype(*j.genotype, steps_[j.task].at(j.step_divisor), j.seed));
+  }
   return out;
 }
 
@@ -125,8 +135,9 @@ bool receive_message(int fd, std::string& s) {
 }
 
 // the worker's life: read a job, evaluate it, answer; until the pipe closes
-[[noreturn]] void worker_main(int in, int out, const SimConfig& cfg, const WorkerJob& work) {
-  const DividedSteps steps(cfg);
+[[noreturn]] void worker_main(int in, int out, const std::vector<SimConfig>& tasks, const WorkerJob& work) {
+  std::vector<DividedSteps> steps;
+  for (const SimConfig& c : tasks) steps.emplace_back(c);
   std::string msg;
   while (receive_message(in, msg)) {
     // text that is not JSON parses to a discarded value, which the reader refuses
@@ -135,8 +146,12 @@ bool receive_message(int fd, std::string& s) {
     if (!job) {
       o.result.failed = true;
       o.result.failure = "worker could not read its job: " + job.error();
+    } else if (job->task >= static_cast<int>(steps.size())) {
+      o.result.failed = true;
+      o.result.failure = "worker has no task " + std::to_string(job->task) + " (it has " +
+                         std::to_string(steps.size()) + ")";
     } else {
-      o = work(*job->genotype, steps.at(job->step_divisor), job->seed);
+      o = work(*job->genotype, steps[job->task].at(job->step_divisor), job->seed);
     }
     if (!send_message(out, outcome_to_json(o).dump())) break;
   }
@@ -153,7 +168,7 @@ struct ProcessPoolEvaluator::Impl {
     std::chrono::steady_clock::time_point deadline;
   };
 
-  SimConfig cfg;
+  std::vector<SimConfig> tasks;
   WorkerJob work;
   double timeout;
   std::vector<Worker> workers;
@@ -188,7 +203,7 @@ struct ProcessPoolEvaluator::Impl {
       ::sigprocmask(SIG_SETMASK, &was, nullptr);
       ::prctl(PR_SET_PDEATHSIG, SIGKILL);
       if (::getppid() != parent) ::_exit(0);  // the parent died before prctl
-      worker_main(in, out, cfg, work);
+      worker_main(in, out, tasks, work);
     }
     ::close(jobs[0]);
     ::close(results[1]);
@@ -214,11 +229,11 @@ struct ProcessPoolEvaluator::Impl {
   }
 };
 
-ProcessPoolEvaluator::ProcessPoolEvaluator(SimConfig cfg, int workers, double timeout_seconds,
+ProcessPoolEvaluator::ProcessPoolEvaluator(std::vector<SimConfig> tasks, int workers, double timeout_seconds,
                                            WorkerJob work)
     : impl_(std::make_unique<Impl>()) {
   ::signal(SIGPIPE, SIG_IGN);  // a dead worker shows as a failed write, not a dead parent
-  impl_->cfg = std::move(cfg);
+  impl_->tasks = std::move(tasks);
   impl_->work = work ? std::move(work) : WorkerJob(evaluate_genotype);
   impl_->timeout = timeout_seconds;
   impl_->workers.resize(std::max(workers, 1));
@@ -326,9 +341,9 @@ std::vector<EvalOutcome> ProcessPoolEvaluator::evaluate(const std::vector<EvalJo
   return out;
 }
 
-std::unique_ptr<Evaluator> make_evaluator(const SimConfig& cfg, int workers, double timeout_seconds) {
-  if (workers <= 0) return std::make_unique<SerialEvaluator>(cfg);
-  return std::make_unique<ProcessPoolEvaluator>(cfg, workers, timeout_seconds);
+std::unique_ptr<Evaluator> make_evaluator(const std::vector<SimConfig>& tasks, int workers, double timeout_seconds) {
+  if (workers <= 0) return std::make_unique<SerialEvaluator>(tasks);
+  return std::make_unique<ProcessPoolEvaluator>(tasks, workers, timeout_seconds);
 }
 
 }  // namespace bx

@@ -25,6 +25,9 @@ struct EvalJob {
   /// Step at physics.dt / step_divisor (divided_step_config: 1, 2 or 4): an
   /// elite evaluated again so (evolution.elite_half_step, elite_quarter_step).
   int step_divisor = 1;
+  /// Which of the evaluator's tasks (its configs, one per stage of a
+  /// multi-stage run: io/syllabus.h) it is evaluated on.
+  int task = 0;
 };
 
 /// What came of one job.
@@ -51,7 +54,10 @@ EvalOutcome evaluate_genotype(const Genotype& g, const SimConfig& cfg, std::uint
 double repeated_genotype_fitness(const Genotype& g, const SimConfig& cfg, std::uint64_t seed, const Repeats& r,
                                  const EvalOutcome& first, std::vector<double>* each = nullptr);
 
-/// Evaluates batches of jobs; results come back in job order.
+/// Evaluates batches of jobs; results come back in job order. An evaluator
+/// holds a task table: the configs its jobs name by EvalJob::task (as
+/// pagmo's batch evaluator receives the problem with each batch), so one
+/// batch may mix tasks.
 class Evaluator {
  public:
   virtual ~Evaluator() = default;
@@ -63,12 +69,14 @@ class Evaluator {
 /// Evaluates in this process, one job after another.
 class SerialEvaluator : public Evaluator {
  public:
-  explicit SerialEvaluator(const SimConfig& cfg) : steps_(cfg) {}
+  explicit SerialEvaluator(const std::vector<SimConfig>& tasks);
+  explicit SerialEvaluator(const SimConfig& cfg) : SerialEvaluator(std::vector<SimConfig>{cfg}) {}
   std::vector<EvalOutcome> evaluate(const std::vector<EvalJob>& jobs) override;
   int workers() const override { return 1; }
 
  private:
-  DividedSteps steps_;  ///< the config at its step, half and a quarter of it (EvalJob::step_divisor)
+  /// each task's config at its step, half and a quarter of it (EvalJob::step_divisor)
+  std::vector<DividedSteps> steps_;
 };
 
 /// Evaluates in K worker processes, one creature at a time each (ODE's random
@@ -82,7 +90,9 @@ class SerialEvaluator : public Evaluator {
 using WorkerJob = std::function<EvalOutcome(const Genotype&, const SimConfig&, std::uint64_t seed)>;
 class ProcessPoolEvaluator : public Evaluator {
  public:
-  ProcessPoolEvaluator(SimConfig cfg, int workers, double timeout_seconds, WorkerJob work = {});
+  ProcessPoolEvaluator(std::vector<SimConfig> tasks, int workers, double timeout_seconds, WorkerJob work = {});
+  ProcessPoolEvaluator(SimConfig cfg, int workers, double timeout_seconds, WorkerJob work = {})
+      : ProcessPoolEvaluator(std::vector<SimConfig>{std::move(cfg)}, workers, timeout_seconds, std::move(work)) {}
   ~ProcessPoolEvaluator() override;
   std::vector<EvalOutcome> evaluate(const std::vector<EvalJob>& jobs) override;
   int workers() const override;
@@ -94,6 +104,9 @@ class ProcessPoolEvaluator : public Evaluator {
 
 /// A process pool of `workers` processes; 0 evaluates in this process (no
 /// protection from crashes: for debugging).
-std::unique_ptr<Evaluator> make_evaluator(const SimConfig& cfg, int workers, double timeout_seconds);
+std::unique_ptr<Evaluator> make_evaluator(const std::vector<SimConfig>& tasks, int workers, double timeout_seconds);
+inline std::unique_ptr<Evaluator> make_evaluator(const SimConfig& cfg, int workers, double timeout_seconds) {
+  return make_evaluator(std::vector<SimConfig>{cfg}, workers, timeout_seconds);
+}
 
 }  // namespace bx

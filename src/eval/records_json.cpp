@@ -82,6 +82,7 @@ json job_to_json(const EvalJob& job) {
   // the seed as a number: nlohmann keeps 64-bit unsigned integers exact
   json j = {{"seed", job.seed}, {"kind", std::string(job.genotype->kind())}, {"genotype", job.genotype->to_json()}};
   if (job.step_divisor != 1) j["step_divisor"] = job.step_divisor;
+  if (job.task != 0) j["task"] = job.task;
   return j;
 }
 
@@ -97,6 +98,11 @@ Result<ReadJob> job_from_json(const json& j) {
       job.step_divisor = get<int>(j, "step_divisor");
       if (job.step_divisor != 1 && job.step_divisor != 2 && job.step_divisor != 4)
         throw std::runtime_error("step_divisor is " + std::to_string(job.step_divisor) + ", not 1, 2 or 4");
+    }
+    if (j.contains("task")) {
+      if (!j["task"].is_number_integer() || get<int>(j, "task") < 0)
+        throw std::runtime_error("task is not a task table index");
+      job.task = get<int>(j, "task");
     }
     auto g = read_genotype(get<std::string>(j, "kind"), field(j, "genotype"), "job");
     if (!g) throw std::runtime_error(g.error());

@@ -19,6 +19,7 @@ struct ReadJob {
   std::unique_ptr<Genotype> genotype;
   std::uint64_t seed = 0;
   int step_divisor = 1;  ///< EvalJob::step_divisor
+  int task = 0;          ///< EvalJob::task
 };
 
 nlohmann::json job_to_json(const EvalJob& job);

@@ -18,13 +18,7 @@ namespace {
 // purposes of the random streams, so no two uses share one
 enum Stream : std::uint64_t { kInitial = 1, kBreed = 2, kTournament = 3, kEvaluation = 4 };
 
-// better first; equal fitness: older first (deterministic); one not yet
-// evaluated (tournament_evaluates = all) after every evaluated one
-bool better(const Individual& a, const Individual& b) {
-  if ((a.evaluations == 0) != (b.evaluations == 0)) return b.evaluations == 0;
-  if (a.fitness != b.fitness) return a.fitness > b.fitness;
-  return a.id < b.id;
-}
+bool better(const Individual& a, const Individual& b) { return ranks_before(a, b); }
 
 // the fitness an evaluation gives, failures at `failed_fitness` and counted
 double outcome_fitness(const EvalOutcome& o, double failed_fitness, long& failed) {
@@ -36,6 +30,14 @@ double outcome_fitness(const EvalOutcome& o, double failed_fitness, long& failed
 }
 
 }  // namespace
+
+// better first; equal fitness: older first (deterministic); one not yet
+// evaluated (tournament_evaluates = all) after every evaluated one
+bool ranks_before(const Individual& a, const Individual& b) {
+  if ((a.evaluations == 0) != (b.evaluations == 0)) return b.evaluations == 0;
+  if (a.fitness != b.fitness) return a.fitness > b.fitness;
+  return a.id < b.id;
+}
 
 std::size_t select_survivor(const std::vector<Individual>& survivors, Selection how, Rng& rng) {
   std::size_t n = survivors.size();
@@ -71,15 +73,15 @@ Status check_breeding(const EvolutionDef& evo, const GenotypeOps& ops) {
 }
 
 Evolution::Evolution(std::shared_ptr<const GenotypeOps> ops, EvolutionDef evo, std::uint64_t seed,
-                     TrialScore fold)
-    : ops_(std::move(ops)), evo_(evo), seed_(seed), fold_(fold) {
+                     TrialScore fold, int task, std::vector<Individual> founders)
+    : ops_(std::move(ops)), evo_(evo), seed_(seed), fold_(fold), task_(task), founders_(std::move(founders)) {
   assert(ops_ && check_breeding(evo_, *ops_).ok());
 }
 
 bool Evolution::finished(const EvolutionDef& evo, const EvolutionState& s) {
   if (evo.algorithm == Algorithm::Generational) return s.generation + 1 >= evo.generations;
   // the budget counts creatures born (tournaments); elites evaluated again cost extra
-  return s.generation >= 0 && s.next_id >= evo.population + evo.evaluations;
+  return s.generation >= 0 && s.next_id - s.first_id >= evo.population + evo.evaluations;
 }
 
 int Evolution::total_generations() const { return bx::total_generations(evo_); }
@@ -96,6 +98,17 @@ Evolution::Child Evolution::viable(Child c, Rng& rng, long& rejected,
   for (int tries = 0; !ops_->viable(*c.genotype); ++tries) {
     ++rejected;
     c = tries < evo_.max_regenerations ? remake(rng) : random_child(rng, rejected);
+  }
+  return c;
+}
+
+// the algorithm's asexual child of `a`
+Evolution::Child Evolution::mutant(const Individual& a, Rng& r) const {
+  Child c{a.genotype, a.id, -1, "mutation"};
+  if (evo_.algorithm == Algorithm::Generational) {
+    c.genotype = ops_->mutate(*a.genotype, evo_.asexual_rate, r);
+  } else {
+    for (int m = 0; m < evo_.asexual_mutations; ++m) c.genotype = ops_->mutate(*c.genotype, evo_.mutation_rate, r);
   }
   return c;
 }
@@ -130,7 +143,7 @@ std::vector<Individual> Evolution::evaluate(std::vector<Child> children, Evoluti
   for (std::size_t k = 0; k < children.size(); ++k) {
     born[k] = unevaluated(std::move(children[k]), s);
     born[k].evaluations = 1;
-    jobs[k] = {born[k].genotype.get(), born[k].seed};
+    jobs[k] = {born[k].genotype.get(), born[k].seed, 1, task_};
   }
   std::vector<EvalOutcome> out = eval.evaluate(jobs);
   for (std::size_t k = 0; k < born.size(); ++k) {
@@ -196,7 +209,7 @@ std::vector<Individual> Evolution::reevaluate_elite(EvolutionState& s, Evaluator
     for (auto [i, count] : due) {
       const Individual& ind = s.population[i];
       for (int e = ind.evaluations; e < ind.evaluations + count; ++e)
-        jobs.push_back({ind.genotype.get(), repeat_seed(ind.seed, e), repeat_step_divisor(repeats, e)});
+        jobs.push_back({ind.genotype.get(), repeat_seed(ind.seed, e), repeat_step_divisor(repeats, e), task_});
     }
     std::vector<EvalOutcome> out = eval.evaluate(jobs);
     std::size_t at = 0;
@@ -248,9 +261,18 @@ GenerationResult Evolution::step(EvolutionState& s, Evaluator& eval) const {
 GenerationResult Evolution::initial(EvolutionState& s, Evaluator& eval) const {
   long rejected = 0, failed = 0;
   std::vector<Child> children;
+  const int n = static_cast<int>(founders_.size());
   for (int k = 0; k < evo_.population; ++k) {
     Rng rng(stream_seed({seed_, kInitial, static_cast<std::uint64_t>(k)}));
-    children.push_back(random_child(rng, rejected));
+    if (n == 0) {
+      children.push_back(random_child(rng, rejected));
+      continue;
+    }
+    const Individual& f = founders_[k % n];
+    auto make = [&](Rng& r) { return mutant(f, r); };
+    // a founder as it is (a stage's tasks may refuse a body the last took: then its mutants)
+    children.push_back(k < n ? viable(Child{f.genotype, f.id, -1, "copy"}, rng, rejected, make)
+                             : viable(make(rng), rng, rejected, make));
   }
   GenerationResult res;
   MetricTally tally;
@@ -316,7 +338,7 @@ void Evolution::tournaments(EvolutionState& s, Evaluator& eval, std::vector<int>
   std::vector<EvalJob> jobs;
   for (int i : members) {
     const Individual& ind = s.population[i];
-    jobs.push_back({ind.genotype.get(), repeat_seed(ind.seed, ind.evaluations)});
+    jobs.push_back({ind.genotype.get(), repeat_seed(ind.seed, ind.evaluations), 1, task_});
   }
   std::vector<EvalOutcome> out = eval.evaluate(jobs);
   fresh.assign(s.population.size(), 0.0);
@@ -339,7 +361,7 @@ void Evolution::tournaments(EvolutionState& s, Evaluator& eval, std::vector<int>
 
 GenerationResult Evolution::steady_state(EvolutionState& s, Evaluator& eval) const {
   const long every = evo_.report_every > 0 ? evo_.report_every : evo_.population;
-  const long total = evo_.population + evo_.evaluations;
+  const long total = s.first_id + evo_.population + evo_.evaluations;
   // creatures born so far: the budget and the intervals count tournaments, so
   // that elites evaluated again (elite_evaluations) do not shift them
   const long until = std::min(total, static_cast<long>(s.next_id) + every);

@@ -61,7 +61,11 @@ struct GenerationStats {
 struct EvolutionState {
   int generation = -1;    ///< last completed generation
   long evaluations = 0;   ///< cumulative evaluations, elites evaluated again included
-  std::int64_t next_id = 0;  ///< also the count of creatures born: a steady-state budget counts these
+  std::int64_t next_id = 0;  ///< the next individual's id
+  /// The id of its first individual: a stage of a multi-stage run (io/syllabus.h)
+  /// continues the run's ids, and a steady-state budget counts the creatures
+  /// born in it, next_id - first_id.
+  std::int64_t first_id = 0;
   std::vector<Individual> population;
 };
 
@@ -80,6 +84,10 @@ struct GenerationResult {
 /// n - i), fitness-proportionately (shifted so the worst keeps 1% of the
 /// range) or uniformly.
 std::size_t select_survivor(const std::vector<Individual>& survivors, Selection how, Rng& rng);
+
+/// Whether `a` ranks before `b`: evaluated before not yet evaluated, then
+/// the fitter, then the older (so ties break the same way every time).
+bool ranks_before(const Individual& a, const Individual& b);
 
 /// The evaluation seed of individual `id` of a run with master seed `seed`.
 std::uint64_t evaluation_seed(std::uint64_t seed, std::int64_t id);
@@ -102,8 +110,14 @@ class Evolution {
   /// `fold` is how an elite's evaluations make its fitness: the run's
   /// task.trial_score, so an elite evaluated again is scored as one creature
   /// evaluated over as many trials (fold_score).
+  ///
+  /// `task` is the evaluator's task its jobs name (EvalJob::task: a stage's
+  /// index). Without `founders` the first generation is random genotypes;
+  /// with them (a stage that starts from the last one's population, best
+  /// first), its k-th child is founder k mod n, as it is for k < n and a
+  /// mutant of it (the algorithm's asexual mutation) after that.
   Evolution(std::shared_ptr<const GenotypeOps> ops, EvolutionDef evo, std::uint64_t seed,
-            TrialScore fold = TrialScore::Mean);
+            TrialScore fold = TrialScore::Mean, int task = 0, std::vector<Individual> founders = {});
 
   /// True when the run has done all its generations or evaluations.
   bool finished(const EvolutionState& s) const { return finished(evo_, s); }
@@ -122,6 +136,7 @@ class Evolution {
     std::string op;
   };
   Child random_child(Rng& rng, long& rejected) const;
+  Child mutant(const Individual& a, Rng& rng) const;
   Child viable(Child c, Rng& rng, long& rejected, const std::function<Child(Rng&)>& remake) const;
   std::vector<Individual> evaluate(std::vector<Child> children, EvolutionState& s, Evaluator& eval,
                                    long& failed, MetricTally& tally) const;
@@ -140,6 +155,8 @@ class Evolution {
   EvolutionDef evo_;
   std::uint64_t seed_;
   TrialScore fold_;
+  int task_;
+  std::vector<Individual> founders_;
 };
 
 }  // namespace bx

@@ -437,15 +437,20 @@ Status apply_config_toml(RunConfig& cfg, std::string_view text, std::string_view
 
 Result<RunConfig> read_run_config(std::string_view text, std::string_view source,
                                   const std::vector<std::string>& overrides) {
-  // the dialect and the creature kind decide the defaults, so they are read first
-  Dialect d = Dialect::Sims1994;
-  std::optional<CreatureKind> kind;
-  std::vector<std::pair<std::string, std::string>> layers = {{std::string(text), std::string(source)}};
+  return read_run_config({{std::string(text), std::string(source)}}, overrides);
+}
+
+Result<RunConfig> read_run_config(std::vector<ConfigLayer> layers, const std::vector<std::string>& overrides) {
+  if (layers.empty()) return Error{"no config"};
+  const std::string source = layers.front().source;  // the config's name in messages about the whole
   for (const auto& o : overrides) {
     auto line = override_toml(o);
     if (!line) return Error{line.error()};
     layers.push_back({*line, "--set " + o});
   }
+  // the dialect and the creature kind decide the defaults, so they are read first
+  Dialect d = Dialect::Sims1994;
+  std::optional<CreatureKind> kind;
   for (const auto& [t, src] : layers) {
     try {
       toml::table root = toml::parse(t, src);
@@ -473,7 +478,7 @@ Result<RunConfig> read_run_config(std::string_view text, std::string_view source
   // the creature kinds' own rules between their keys
   for (const CreatureKindRow& row : creature_kind_rows())
     if (row.check)
-      if (Status s = row.check(cfg.sim); !s) return Error{std::string(source) + ": " + s.error()};
+      if (Status s = row.check(cfg.sim); !s) return Error{source + ": " + s.error()};
   // catapults are chaumont2007's, and a throwing run needs them
   if (cfg.operators.catapult.enabled && cfg.dialect != Dialect::Chaumont2007)
     return Error{std::string(source) + ": catapult.enabled: catapults need genome.dialect = \"chaumont2007\", got \"" +

@@ -43,6 +43,17 @@ Status apply_config_toml(RunConfig& cfg, std::string_view text, std::string_view
 Result<RunConfig> read_run_config(std::string_view text, std::string_view source,
                                   const std::vector<std::string>& overrides = {});
 
+/// One layer of a config: TOML text and its name in messages.
+struct ConfigLayer {
+  std::string text;
+  std::string source;
+};
+
+/// read_run_config of several layers of TOML text overlaid in order (a
+/// multi-stage run's stage on its base, io/syllabus.h), then the overrides;
+/// the first layer's source names the whole in messages about it.
+Result<RunConfig> read_run_config(std::vector<ConfigLayer> layers, const std::vector<std::string>& overrides = {});
+
 /// Reads a TOML file onto a simulation config (a run config works too: its
 /// other sections are checked and ignored).
 Status apply_config_file(SimConfig& cfg, const std::string& path);

@@ -33,6 +33,7 @@ CREATE TABLE generation_metric (
   gen INTEGER NOT NULL, name TEXT NOT NULL, mean REAL NOT NULL, nonzero REAL NOT NULL,
   PRIMARY KEY (gen, name));
 CREATE TABLE checkpoint (id INTEGER PRIMARY KEY CHECK (id = 1), gen INTEGER NOT NULL, state TEXT NOT NULL);
+CREATE TABLE stage (idx INTEGER PRIMARY KEY, name TEXT NOT NULL, first_gen INTEGER NOT NULL, first_id INTEGER NOT NULL);
 )";
 
 // a prepared statement, finalized on scope exit
@@ -159,6 +160,11 @@ Result<std::unique_ptr<RunStore>> RunStore::open(const std::string& path) {
     store->metric_table_ = writable && exec(*db, "CREATE TABLE generation_metric (gen INTEGER NOT NULL, "
                                                  "name TEXT NOT NULL, mean REAL NOT NULL, nonzero REAL NOT NULL, "
                                                  "PRIMARY KEY (gen, name))").ok();
+  // and before a run could have stages
+  Stmt has_stage(*db, "SELECT count(*) FROM sqlite_schema WHERE type = 'table' AND name = 'stage'");
+  if (has_stage.ok() && has_stage.step() == SQLITE_ROW && has_stage.i64(0) == 0)
+    store->stage_table_ = writable && exec(*db, "CREATE TABLE stage (idx INTEGER PRIMARY KEY, name TEXT NOT NULL, "
+                                                "first_gen INTEGER NOT NULL, first_id INTEGER NOT NULL)").ok();
   return store;
 }
 
@@ -270,9 +276,19 @@ Status RunStore::write_generation(const GenerationStats& st, const std::vector<I
       m.reset();
     }
   }
+  // the stage it belongs to, stored with its first generation
+  if (cp.generation == cp.stage.first_gen) {
+    Stmt g(db_, "INSERT INTO stage (idx, name, first_gen, first_id) VALUES (?, ?, ?, ?)");
+    g.bind(1, static_cast<std::int64_t>(cp.stage.index)).bind(2, cp.stage.name)
+        .bind(3, static_cast<std::int64_t>(cp.stage.first_gen)).bind(4, cp.stage.first_id);
+    if (g.step() != SQLITE_DONE) return rollback("storing stage " + std::to_string(cp.stage.index));
+  }
   // and the checkpoint that resumes after it
   {
     json state = {{"evaluations", cp.evaluations}, {"next_id", cp.next_id}, {"population", cp.population}};
+    if (cp.stage.index != 0 || cp.stage.first_gen != 0 || cp.stage.first_id != 0)
+      state["stage"] = {{"index", cp.stage.index}, {"name", cp.stage.name}, {"first_gen", cp.stage.first_gen},
+                        {"first_id", cp.stage.first_id}};
     Stmt c(db_, "INSERT INTO checkpoint (id, gen, state) VALUES (1, ?, ?) "
                 "ON CONFLICT(id) DO UPDATE SET gen = excluded.gen, state = excluded.state");
     c.bind(1, static_cast<std::int64_t>(cp.generation)).bind(2, state.dump());
@@ -311,7 +327,44 @@ Result<std::optional<Checkpoint>> RunStore::checkpoint() const {
     cp.population.push_back(id.get<std::int64_t>());
   }
   if (cp.generation < 0 || cp.population.empty()) return Error{where + "is empty (generation " + std::to_string(cp.generation) + ")"};
+  if (auto st = state.find("stage"); st != state.end()) {
+    if (!st->is_object()) return Error{where + "has a \"stage\" that is not an object"};
+    std::int64_t index = 0, first_gen = 0;
+    auto read = [&](const char* key, std::int64_t& out) -> Status {
+      auto it = st->find(key);
+      if (it == st->end() || !it->is_number_integer() || it->get<std::int64_t>() < 0)
+        return Error{where + "stage lacks \"" + key + "\" (a whole number)"};
+      out = it->get<std::int64_t>();
+      return Ok{};
+    };
+    if (Status t = read("index", index); !t) return Error{t.error()};
+    if (Status t = read("first_gen", first_gen); !t) return Error{t.error()};
+    if (Status t = read("first_id", cp.stage.first_id); !t) return Error{t.error()};
+    auto name = st->find("name");
+    if (name == st->end() || !name->is_string()) return Error{where + "stage lacks \"name\" (a string)"};
+    cp.stage.index = static_cast<int>(index);
+    cp.stage.first_gen = static_cast<int>(first_gen);
+    cp.stage.name = name->get<std::string>();
+    if (cp.stage.first_gen > cp.generation || cp.stage.first_id > cp.next_id)
+      return Error{where + "stage begins after the checkpoint (generation " + std::to_string(cp.stage.first_gen) + ")"};
+  }
   return std::optional<Checkpoint>(std::move(cp));
+}
+
+StageRow stage_of(const std::vector<StageRow>& stages, std::int64_t id) {
+  StageRow out;
+  for (const StageRow& s : stages)
+    if (s.first_id <= id) out = s;
+  return out;
+}
+
+std::vector<StageRow> RunStore::stages() const {
+  std::vector<StageRow> out;
+  if (!stage_table_) return out;
+  Stmt s(db_, "SELECT idx, name, first_gen, first_id FROM stage ORDER BY idx");
+  while (s.step() == SQLITE_ROW)
+    out.push_back({static_cast<int>(s.i64(0)), s.text(1), static_cast<int>(s.i64(2)), s.i64(3)});
+  return out;
 }
 
 std::vector<GenerationStats> RunStore::generations() const {
@@ -388,7 +441,11 @@ Result<Individual> RunStore::individual(std::int64_t id) const {
 
 Result<Individual> RunStore::best_individual() const {
   std::optional<Individual> best;
+  // a run of several stages: its last stage's (their fitnesses measure different tasks)
+  const std::vector<StageRow> st = stages();
+  const int from = st.empty() ? 0 : st.back().first_gen;
   for (const auto& g : generations()) {
+    if (g.generation < from) continue;
     auto ind = individual(g.best_id);
     if (!ind) return Error{path_ + ": generation " + std::to_string(g.generation) + "'s best: " + ind.error()};
     if (!best || ind->fitness > best->fitness) best = std::move(*ind);

@@ -19,12 +19,25 @@ struct sqlite3;
 
 namespace bx {
 
+/// A stage of a multi-stage run (io/syllabus.h) as the database has it:
+/// where its generations and individuals begin (every run has stage 0).
+struct StageRow {
+  int index = 0;
+  std::string name;        ///< "" for a plain config's single stage
+  int first_gen = 0;       ///< the run's generation number of its generation 0
+  std::int64_t first_id = 0;  ///< the id of its first individual
+};
+
+/// The stage that individual `id` was born in, from a run's stages (none: stage 0).
+StageRow stage_of(const std::vector<StageRow>& stages, std::int64_t id);
+
 /// What a checkpoint holds besides the individuals (which the database has).
 struct Checkpoint {
-  int generation = -1;
+  int generation = -1;     ///< the run's generation number (stages number on)
   long evaluations = 0;
   std::int64_t next_id = 0;
   std::vector<std::int64_t> population;  ///< ids, in population order
+  StageRow stage;          ///< the stage it is in
 };
 
 /// An open run database.
@@ -46,6 +59,8 @@ class RunStore {
   /// The last checkpoint, if any generation was stored; an error names a
   /// malformed one.
   Result<std::optional<Checkpoint>> checkpoint() const;
+  /// The stages begun so far, in order (an older database: none).
+  std::vector<StageRow> stages() const;
   /// Statistics of every stored generation, in order.
   std::vector<GenerationStats> generations() const;
   /// One individual by id; an error says it is missing, or names the field
@@ -80,6 +95,7 @@ class RunStore {
   bool kind_column_ = true;  ///< false: one without individual.kind (its genotypes are graph genomes)
   bool metric_table_ = true;  ///< false: an older database opened read-only, without generation_metric
   bool evaluations_column_ = true;  ///< false: one without individual.evaluations (each was evaluated once)
+  bool stage_table_ = true;  ///< false: an older database opened read-only, without stage
 };
 
 }  // namespace bx

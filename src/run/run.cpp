@@ -19,6 +19,7 @@
 #include "eval/evaluator.h"
 #include "evolve/evolution.h"
 #include "io/run_store.h"
+#include "io/syllabus.h"
 
 namespace bx {
 
@@ -67,7 +68,7 @@ void sync_dir(const fs::path& dir) {
 
 }  // namespace
 
-Status create_run(const std::string& dir, const RunConfig& cfg, const std::string& config_text,
+Status create_run(const std::string& dir, const Syllabus& stages, const std::string& config_text,
                   const std::string& name, std::uint64_t seed) {
   if (fs::exists(dir))
     return Error{dir + ": already exists (resume it with `bestiary resume " + dir +
@@ -89,7 +90,7 @@ Status create_run(const std::string& dir, const RunConfig& cfg, const std::strin
     return Status(Error{why});
   };
   // the resolved config: every key, as this run will use it
-  std::string resolved = "# Resolved config of this run (from " + name + ")\n" + config_to_toml(cfg);
+  std::string resolved = "# Resolved config of this run (from " + name + ")\n" + syllabus_to_toml(stages);
   if (Status s = write_file_atomic(run_config_path(tmp.string()), resolved); !s)
     return fail(dir + ": " + s.error());
   {
@@ -116,7 +117,7 @@ namespace {
 // run needs is refused with what it lacks, never run with defaults
 struct OpenRun {
   std::unique_ptr<RunStore> store;
-  RunConfig cfg;
+  Syllabus syllabus;  ///< its stages (a plain config's run: one)
   std::uint64_t seed = 0;
 };
 
@@ -125,11 +126,45 @@ Result<OpenRun> open_run(const std::string& dir, const std::vector<std::string>&
   if (!store) return Error{store.error()};
   auto text = (*store)->config_text();
   if (!text) return Error{text.error()};
-  auto cfg = read_run_config(*text, run_db_path(dir) + " (the run's config)", overrides);
-  if (!cfg) return Error{cfg.error()};
+  auto syl = read_syllabus(*text, run_db_path(dir) + " (the run's config)", overrides);
+  if (!syl) return Error{syl.error()};
   auto seed = (*store)->master_seed();
   if (!seed) return Error{seed.error()};
-  return OpenRun{std::move(*store), std::move(*cfg), *seed};
+  return OpenRun{std::move(*store), std::move(*syl), *seed};
+}
+
+// the seed of stage k's evolution: the run's own for the first, so a run of
+// one stage is as it was before runs had stages
+std::uint64_t stage_seed(std::uint64_t seed, int k) {
+  constexpr std::uint64_t kStage = 0x5747;  // a stream purpose of its own
+  return k == 0 ? seed : stream_seed({seed, kStage, static_cast<std::uint64_t>(k)});
+}
+
+// where a run stands: its stage and that stage's evolution state, read from
+// the checkpoint (generations numbered within the stage), or the start
+struct Standing {
+  StageRow stage;
+  EvolutionState state;
+};
+
+Result<Standing> standing(const std::string& dir, RunStore& store, bool load_population) {
+  Standing s;
+  auto cp = store.checkpoint();
+  if (!cp) return Error{cp.error()};
+  if (!*cp) return s;
+  const Checkpoint& c = **cp;
+  s.stage = c.stage;
+  s.state.generation = c.generation - c.stage.first_gen;
+  s.state.evaluations = c.evaluations;
+  s.state.next_id = c.next_id;
+  s.state.first_id = c.stage.first_id;
+  if (!load_population) return s;
+  for (std::int64_t id : c.population) {
+    auto ind = store.individual(id);
+    if (!ind) return Error{run_db_path(dir) + ": the checkpoint's " + ind.error()};
+    s.state.population.push_back(std::move(*ind));
+  }
+  return s;
 }
 
 // what the run breeds: the genotypes its creature kind develops, with their operators
@@ -145,19 +180,15 @@ Result<RunProgress> run_progress(const std::string& dir) {
   auto run = open_run(dir);
   if (!run) return Error{run.error()};
   if (Status s = run->store->check_integrity(); !s) return Error{s.error()};
+  auto at = standing(dir, *run->store, false);
+  if (!at) return Error{at.error()};
+  const auto& stages = run->syllabus.stages;
   RunProgress p;
-  EvolutionState state;
-  auto cp = run->store->checkpoint();
-  if (!cp) return Error{cp.error()};
-  if (*cp) {
-    state.generation = (*cp)->generation;
-    state.evaluations = (*cp)->evaluations;
-    state.next_id = (*cp)->next_id;
-  }
-  p.generations_done = state.generation + 1;
-  p.generations_total = total_generations(run->cfg.evolution);
-  p.evaluations = state.evaluations;
-  p.complete = Evolution::finished(run->cfg.evolution, state);
+  p.generations_done = at->stage.first_gen + at->state.generation + 1;
+  for (const StageDef& st : stages) p.generations_total += total_generations(st.cfg.evolution);
+  p.evaluations = at->state.evaluations;
+  p.complete = at->stage.index + 1 == static_cast<int>(stages.size()) &&
+               Evolution::finished(stages.back().cfg.evolution, at->state);
   return p;
 }
 
@@ -166,7 +197,9 @@ Status extend_run(const std::string& dir, const std::vector<std::string>& overri
   if (!run) return Error{run.error()};
   if (run->store->read_only()) return Error{dir + ": read-only here (permission denied): cannot lengthen the run"};
   RunStore* store = run->store.get();
-  const RunConfig* old = &run->cfg;
+  if (run->syllabus.staged())
+    return Error{dir + ": a run of several stages cannot be lengthened (yet): its stages' budgets are its syllabus'"};
+  const RunConfig* old = &run->syllabus.stages.front().cfg;
   const bool generational = old->evolution.algorithm == Algorithm::Generational;
   const std::string allowed = generational ? "evolution.generations" : "evolution.evaluations";
   for (const auto& o : overrides)
@@ -223,10 +256,11 @@ Status drive_run(const std::string& dir, const RunOptions& opt) {
   RunStore& store = *run->store;
   if (store.read_only()) return Error{dir + ": read-only here (permission denied): cannot continue the run"};
   if (Status s = store.check_integrity(); !s) return s;
-  const RunConfig& cfg = run->cfg;
-  auto ops = genotype_ops(cfg);
-  if (Status s = check_breeding(cfg.evolution, *ops); !s) return s;
-  Evolution evo(ops, cfg.evolution, run->seed, cfg.sim.trial_score);
+  const std::vector<StageDef>& stages = run->syllabus.stages;
+  const int n_stages = static_cast<int>(stages.size());
+  for (const StageDef& st : stages)
+    if (Status s = check_breeding(st.cfg.evolution, *genotype_ops(st.cfg)); !s)
+      return run->syllabus.staged() ? Error{"stage \"" + st.name + "\": " + s.error()} : s;
   // config.toml is the run's config for people to read: the stored one rules
   std::string note;
   const std::string stored = *store.config_text();
@@ -240,65 +274,101 @@ Status drive_run(const std::string& dir, const RunOptions& opt) {
   if (!note.empty()) std::fprintf(stderr, "note: %s\n", note.c_str());
 
   // where it stands: the last checkpoint, or the start
-  EvolutionState state;
-  auto cp = store.checkpoint();
-  if (!cp) return Error{cp.error()};
-  if (*cp) {
-    state.generation = (*cp)->generation;
-    state.evaluations = (*cp)->evaluations;
-    state.next_id = (*cp)->next_id;
-    for (std::int64_t id : (*cp)->population) {
-      auto ind = store.individual(id);
-      if (!ind) return Error{run_db_path(dir) + ": the checkpoint's " + ind.error()};
-      state.population.push_back(std::move(*ind));
-    }
-  }
-  if (evo.finished(state)) return Ok{};
+  auto at = standing(dir, store, true);
+  if (!at) return Error{at.error()};
+  StageRow stage = at->stage;
+  EvolutionState state = std::move(at->state);
+  if (stage.index >= n_stages)
+    return Error{run_db_path(dir) + ": the checkpoint is in stage " + std::to_string(stage.index + 1) +
+                 ", but the run's config has " + std::to_string(n_stages)};
+  stage.name = stages[stage.index].name;
+  auto finished_stage = [&] { return Evolution::finished(stages[stage.index].cfg.evolution, state); };
+  if (stage.index + 1 == n_stages && finished_stage()) return Ok{};
 
-  auto evaluator = make_evaluator(cfg.sim, opt.workers, cfg.evolution.evaluation_timeout);
+  // one evaluator for every stage: its task table holds each stage's config
+  std::vector<SimConfig> tasks;
+  double timeout = 0;
+  for (const StageDef& st : stages) {
+    tasks.push_back(st.cfg.sim);
+    timeout = std::max(timeout, st.cfg.evolution.evaluation_timeout);
+  }
+  auto evaluator = make_evaluator(tasks, opt.workers, timeout);
   std::ofstream log(run_log_path(dir), std::ios::app);
   const bool tty = !opt.quiet && ::isatty(STDOUT_FILENO);
-  const int total = evo.total_generations();
   auto t0 = std::chrono::steady_clock::now();
   long evals_this_session = 0;
-  double first_step = 0;  // seconds
   if (!note.empty()) log << "note: " << note << std::endl;
-  log << "session: resuming at generation " << state.generation + 1 << " with " << evaluator->workers()
-      << " workers" << std::endl;
+  log << "session: resuming at generation " << stage.first_gen + state.generation + 1;
+  if (run->syllabus.staged()) log << " (stage " << stage.index + 1 << " of " << n_stages << ", " << stages[stage.index].name << ")";
+  log << " with " << evaluator->workers() << " workers" << std::endl;
 
-  for (int done = 0; !evo.finished(state); ++done) {
-    if (opt.stop_after > 0 && done >= opt.stop_after) break;
-    const long evaluations_before = state.evaluations;
-    GenerationResult res = evo.step(state, *evaluator);
-    Checkpoint cp{state.generation, state.evaluations, state.next_id, {}};
-    for (const auto& ind : state.population) cp.population.push_back(ind.id);
-    if (Status s = store.write_generation(res.stats, res.born, res.reevaluated, cp); !s)
-      return Error{run_db_path(dir) + ": " + s.error()};
-
-    // progress: one updating line on a terminal, else a line per generation
-    evals_this_session += state.evaluations - evaluations_before;  // elites evaluated again too
-    double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    double rate = elapsed > 0 ? evals_this_session / elapsed : 0;
-    int gens_left = total - 1 - state.generation;
-    // time per report interval from the intervals after this session's
-    // first, which may be a cheaper one (the steady state's first is its
-    // initial population: 150 river evaluations against 600 after it)
-    if (done == 0) first_step = elapsed;
-    double per_gen = done == 0 ? elapsed : (elapsed - first_step) / done;
-    char line[256];
-    const auto& st = res.stats;
-    std::snprintf(line, sizeof line,
-                  "gen %d/%d  evals %ld  best %.5g  mean %.5g  median %.5g  rejected %ld  failed %ld  %.1f evals/s  left %s",
-                  st.generation, total - 1, st.evaluations, st.best, st.mean, st.median, st.rejected,
-                  st.failed, rate, duration(gens_left * per_gen).c_str());
-    log << line << std::endl;
-    if (tty) {
-      std::printf("\r\033[K%s", line);
-      std::fflush(stdout);
-    } else if (!opt.quiet) {
-      std::printf("%s\n", line);
-      std::fflush(stdout);
+  for (int done = 0;;) {
+    if (finished_stage()) {
+      if (stage.index + 1 == n_stages) break;
+      // the next stage starts from this one's final population, best first
+      std::vector<Individual> last = std::move(state.population);
+      std::stable_sort(last.begin(), last.end(), ranks_before);
+      const StageDef& next = stages[stage.index + 1];
+      if (next.start == StageStart::Best) last.resize(1);
+      if (next.start == StageStart::Random) last.clear();
+      stage = {stage.index + 1, next.name, stage.first_gen + state.generation + 1, state.next_id};
+      EvolutionState fresh;
+      fresh.evaluations = state.evaluations;
+      fresh.next_id = fresh.first_id = state.next_id;
+      state = std::move(fresh);
+      state.population = std::move(last);  // the founders, until the stage's first generation replaces them
     }
+    if (opt.stop_after > 0 && done >= opt.stop_after) break;
+    const StageDef& st = stages[stage.index];
+    const std::vector<Individual> founders = state.generation < 0 ? state.population : std::vector<Individual>{};
+    Evolution evo(genotype_ops(st.cfg), st.cfg.evolution, stage_seed(run->seed, stage.index), st.cfg.sim.trial_score,
+                  stage.index, founders);
+    const int total = evo.total_generations();
+    double first_step = 0;  // seconds
+    int done_in_stage = 0;
+    for (; !evo.finished(state); ++done, ++done_in_stage) {
+      if (opt.stop_after > 0 && done >= opt.stop_after) break;
+      const long evaluations_before = state.evaluations;
+      GenerationResult res = evo.step(state, *evaluator);
+      // the database numbers generations through the stages
+      res.stats.generation += stage.first_gen;
+      for (Individual& ind : res.born) ind.generation += stage.first_gen;
+      Checkpoint cp{stage.first_gen + state.generation, state.evaluations, state.next_id, {}, stage};
+      for (const auto& ind : state.population) cp.population.push_back(ind.id);
+      if (Status s = store.write_generation(res.stats, res.born, res.reevaluated, cp); !s)
+        return Error{run_db_path(dir) + ": " + s.error()};
+
+      // progress: one updating line on a terminal, else a line per generation
+      evals_this_session += state.evaluations - evaluations_before;  // elites evaluated again too
+      double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      double rate = elapsed > 0 ? evals_this_session / elapsed : 0;
+      int gens_left = total - 1 - state.generation;
+      for (int k = stage.index + 1; k < n_stages; ++k) gens_left += total_generations(stages[k].cfg.evolution);
+      // time per report interval from the intervals after this session's
+      // first, which may be a cheaper one (the steady state's first is its
+      // initial population: 150 river evaluations against 600 after it)
+      if (done_in_stage == 0) first_step = elapsed;
+      double per_gen = done_in_stage == 0 ? elapsed : (elapsed - first_step) / done_in_stage;
+      char line[320];
+      const auto& gs = res.stats;
+      std::string where = run->syllabus.staged()
+                              ? "stage " + std::to_string(stage.index + 1) + "/" + std::to_string(n_stages) + " " +
+                                    st.name + "  "
+                              : "";
+      std::snprintf(line, sizeof line,
+                    "%sgen %d/%d  evals %ld  best %.5g  mean %.5g  median %.5g  rejected %ld  failed %ld  %.1f evals/s  left %s",
+                    where.c_str(), state.generation, total - 1, gs.evaluations, gs.best, gs.mean, gs.median,
+                    gs.rejected, gs.failed, rate, duration(gens_left * per_gen).c_str());
+      log << line << std::endl;
+      if (tty) {
+        std::printf("\r\033[K%s", line);
+        std::fflush(stdout);
+      } else if (!opt.quiet) {
+        std::printf("%s\n", line);
+        std::fflush(stdout);
+      }
+    }
+    if (opt.stop_after > 0 && done >= opt.stop_after) break;
   }
   if (tty) std::printf("\n");
   return Ok{};

@@ -9,6 +9,7 @@
 
 #include "core/result.h"
 #include "io/config.h"
+#include "io/syllabus.h"
 
 namespace bx {
 
@@ -39,8 +40,13 @@ Status extend_run(const std::string& dir, const std::vector<std::string>& overri
 
 /// Creates the run directory `dir` (which must not exist) for `cfg` and
 /// `seed`, with `name` (the preset or config file) recorded.
-Status create_run(const std::string& dir, const RunConfig& cfg, const std::string& config_text,
+Status create_run(const std::string& dir, const Syllabus& stages, const std::string& config_text,
                   const std::string& name, std::uint64_t seed);
+/// A run of one stage.
+inline Status create_run(const std::string& dir, const RunConfig& cfg, const std::string& config_text,
+                         const std::string& name, std::uint64_t seed) {
+  return create_run(dir, Syllabus{{StageDef{"", {}, "", StageStart::Random, cfg}}}, config_text, name, seed);
+}
 
 /// Runs (or resumes) the run in `dir` until it is finished. Safe to call on a
 /// run killed at any moment: it continues from the last checkpoint and ends

@@ -1,0 +1,177 @@
+#include "io/syllabus.h"
+
+#include <toml++/toml.h>
+
+#include <set>
+#include <sstream>
+
+#include "core/text.h"
+
+namespace bx {
+
+namespace {
+
+constexpr std::string_view kStartNames[] = {"random", "best", "population"};
+
+// a TOML table as text that toml::parse reads back to it
+std::string table_text(const toml::table& t) {
+  std::ostringstream ss;
+  ss << toml::toml_formatter(t);
+  return ss.str();
+}
+
+std::string in_quotes(std::string_view s) { return "\"" + one_line(s, 100) + "\""; }
+
+// a stage's own keys (name, uses, group, start) from its table, which then
+// keeps its config sections only
+Status read_stage_keys(toml::table& t, StageDef& st, const std::string& where, bool first) {
+  auto name = t["name"].value<std::string>();
+  if (!name || name->empty())
+    return Error{where + ".name: every stage needs a name (a non-empty string)"};
+  st.name = *name;
+  if (auto* node = t.get("uses")) {
+    auto* arr = node->as_array();
+    if (!arr) return Error{where + ".uses: expected an array of stage names"};
+    for (auto& u : *arr) {
+      auto v = u.value<std::string>();
+      if (!v) return Error{where + ".uses: expected an array of stage names"};
+      st.uses.push_back(*v);
+    }
+  }
+  if (auto* node = t.get("group")) {
+    auto v = node->value<std::string>();
+    if (!v) return Error{where + ".group: expected a string (its pandemonium group)"};
+    st.group = *v;
+  }
+  st.start = first ? StageStart::Random : StageStart::Best;
+  if (auto* node = t.get("start")) {
+    auto v = node->value<std::string>();
+    int found = -1;
+    for (int i = 0; v && i < 3; ++i)
+      if (*v == kStartNames[i]) found = i;
+    if (found < 0)
+      return Error{where + ".start: expected one of random, best, population, got " +
+                   (v ? in_quotes(*v) : std::string("something else than a string"))};
+    st.start = static_cast<StageStart>(found);
+    if (first && st.start != StageStart::Random)
+      return Error{where + ".start: the first stage has no stage before it to start from; it starts \"random\", got " +
+                   in_quotes(*v)};
+  }
+  for (const char* k : {"name", "uses", "group", "start"}) t.erase(k);
+  for (auto&& [key, node] : t)
+    if (!node.is_table())
+      return Error{where + "." + one_line(key.str(), 100) +
+                   ": unknown stage key (a stage has name, uses, group, start and config sections)"};
+  return Ok{};
+}
+
+}  // namespace
+
+std::string_view stage_start_name(StageStart s) { return kStartNames[static_cast<int>(s)]; }
+
+int Syllabus::find(std::string_view name) const {
+  for (std::size_t i = 0; i < stages.size(); ++i)
+    if (stages[i].name == name) return static_cast<int>(i);
+  return -1;
+}
+
+Result<Syllabus> read_syllabus(std::string_view text, std::string_view source,
+                               const std::vector<std::string>& overrides) {
+  const std::string src(source);
+  toml::table root;
+  try {
+    root = toml::parse(text, source);
+  } catch (const toml::parse_error&) {
+    // read_run_config reports it with its position
+    auto cfg = read_run_config(text, source, overrides);
+    if (!cfg) return Error{cfg.error()};
+    return Error{src + ": not TOML"};
+  }
+  Syllabus out;
+  toml::node* stages_node = root.get("stage");
+  if (!stages_node) {
+    auto cfg = read_run_config(text, source, overrides);
+    if (!cfg) return Error{cfg.error()};
+    out.stages.push_back({"", {}, "", StageStart::Random, std::move(*cfg)});
+    return out;
+  }
+  toml::array* stages = stages_node->as_array();
+  if (!stages || stages->empty() || !stages->is_array_of_tables())
+    return Error{src + ": stage: expected [[stage]] tables, one per stage"};
+  toml::table base = root;
+  base.erase("stage");
+  const std::string base_text = table_text(base);
+  for (std::size_t i = 0; i < stages->size(); ++i) {
+    toml::table t = *(*stages)[i].as_table();
+    StageDef st;
+    std::string where = src + ": stage " + std::to_string(i + 1);
+    if (Status s = read_stage_keys(t, st, where, i == 0); !s) return Error{s.error()};
+    where = src + ": stage " + in_quotes(st.name);
+    if (out.find(st.name) >= 0) return Error{where + ".name: given to two stages"};
+    for (const std::string& u : st.uses) {
+      if (u == st.name) return Error{where + ".uses: " + in_quotes(u) + " is this stage (a stage cannot use itself)"};
+      if (out.find(u) >= 0) continue;
+      bool later = false;
+      for (std::size_t j = i + 1; j < stages->size(); ++j)
+        if (auto n = (*(*stages)[j].as_table())["name"].value<std::string>(); n && *n == u) later = true;
+      if (later) return Error{where + ".uses: " + in_quotes(u) + " is learned after it (a stage uses only earlier ones)"};
+      std::vector<std::string> names;
+      for (const auto& s : out.stages) names.push_back(s.name);
+      return Error{where + ".uses: " + in_quotes(u) + ": no earlier stage has this name" + did_you_mean(u, names)};
+    }
+    auto cfg = read_run_config({{base_text, src}, {table_text(t), where}}, overrides);
+    if (!cfg) return Error{cfg.error()};
+    st.cfg = std::move(*cfg);
+    if (i > 0) {
+      const RunConfig& first = out.stages.front().cfg;
+      if (st.cfg.dialect != first.dialect)
+        return Error{where + ": genome.dialect: every stage evolves the first stage's dialect (" +
+                     std::string(to_string(first.dialect)) + "), got " + std::string(to_string(st.cfg.dialect))};
+      if (st.cfg.sim.creature != first.sim.creature)
+        return Error{where + ": genotype.kind: every stage evolves the first stage's creature kind (" +
+                     evolved_name(first) + "), got " + evolved_name(st.cfg)};
+    }
+    out.stages.push_back(std::move(st));
+  }
+  return out;
+}
+
+std::string syllabus_to_toml(const Syllabus& s) {
+  const std::string base = config_to_toml(s.stages.front().cfg);
+  if (!s.staged()) return base;
+  // config_to_toml writes every key in one order: a stage's table is the
+  // lines in which its config's text differs from the first's, under their sections
+  auto lines = [](const std::string& text) {
+    std::vector<std::string> out;
+    std::istringstream in(text);
+    for (std::string l; std::getline(in, l);) out.push_back(l);
+    return out;
+  };
+  const std::vector<std::string> b = lines(base);
+  std::ostringstream ss;
+  ss << base;
+  for (const StageDef& st : s.stages) {
+    ss << "\n[[stage]]\nname = " << toml::value<std::string>(st.name);
+    if (!st.uses.empty()) {
+      toml::array uses;
+      for (const auto& u : st.uses) uses.push_back(u);
+      ss << "\nuses = " << uses;
+    }
+    if (!st.group.empty()) ss << "\ngroup = " << toml::value<std::string>(st.group);
+    ss << "\nstart = \"" << stage_start_name(st.start) << "\"\n";
+    const std::vector<std::string> own = lines(config_to_toml(st.cfg));
+    std::string section, written;
+    for (std::size_t k = 0; k < own.size() && k < b.size(); ++k) {
+      if (!own[k].empty() && own[k].front() == '[') section = own[k].substr(1, own[k].size() - 2);
+      if (own[k] == b[k]) continue;
+      if (section != written) {
+        ss << "[stage." << section << "]\n";
+        written = section;
+      }
+      ss << own[k] << "\n";
+    }
+  }
+  return ss.str();
+}
+
+}  // namespace bx

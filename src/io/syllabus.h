@@ -1,0 +1,78 @@
+// Multi-stage runs: a config whose [[stage]] tables make a run a sequence of
+// stages, each evolving its own population on its own task and constants,
+// the next starting from what the last one left (lessin2015's syllabus, where
+// a stage is a skill; or shaping, where it is a schedule of constants). A
+// config without [[stage]] tables is a run of one stage.
+//
+//   [genome]              # the base config: every stage's defaults
+//   dialect = "lessin2015"
+//
+//   [[stage]]
+//   name = "forward"
+//   [stage.task]          # the stage's own keys, on the base
+//   kind = "locomotion"
+//
+//   [[stage]]
+//   name = "left turn"
+//   start = "best"        # random | best | population (default: best)
+//   uses = ["forward"]    # stages whose skills it builds on: learned before it
+//   group = "turn"        # its pandemonium group
+//   [stage.evolution]
+//   generations = 20
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/result.h"
+#include "io/config.h"
+
+namespace bx {
+
+/// What a stage's first generation is made of.
+enum class StageStart {
+  Random,      ///< random genotypes (the first stage's only choice)
+  Best,        ///< the last stage's best: once as it is, the rest of the population its mutants
+  Population,  ///< the last stage's final population, best first, each once as it is
+};
+
+/// One stage of a run.
+struct StageDef {
+  std::string name;               ///< unique in the run; "" for a plain config's single stage
+  std::vector<std::string> uses;  ///< earlier stages whose skills it builds on
+  std::string group;              ///< its pandemonium group ("": none)
+  StageStart start = StageStart::Random;
+  RunConfig cfg;                  ///< the base config with the stage's tables (and --set) overlaid
+  friend bool operator==(const StageDef&, const StageDef&) = default;
+};
+
+/// A run's stages, in order: at least one.
+struct Syllabus {
+  std::vector<StageDef> stages;
+  /// Made from [[stage]] tables (a plain config's run has one stage, unnamed).
+  bool staged() const { return stages.size() != 1 || !stages.front().name.empty(); }
+  /// The index of the stage named `name`, or -1.
+  int find(std::string_view name) const;
+  friend bool operator==(const Syllabus&, const Syllabus&) = default;
+};
+
+/// The stages of a config text: its [[stage]] tables, each on the base (the
+/// rest of the text), then the overrides (which every stage gets); without
+/// them, one stage of read_run_config(text, source, overrides). Errors name
+/// the stage and the key: an unknown stage in `uses`, one used before it is
+/// learned, a name given twice, a stage of another dialect or creature kind
+/// than the first's (its population could not start from the last's).
+Result<Syllabus> read_syllabus(std::string_view text, std::string_view source,
+                               const std::vector<std::string>& overrides = {});
+
+/// A syllabus as TOML that read_syllabus reads back to it exactly: the first
+/// stage's config with every key, then each stage's table with the keys in
+/// which its config differs from the first's. A plain config's single stage
+/// is config_to_toml of it.
+std::string syllabus_to_toml(const Syllabus& s);
+
+/// The names of StageStart's values, in order.
+std::string_view stage_start_name(StageStart s);
+
+}  // namespace bx

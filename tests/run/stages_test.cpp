@@ -1,0 +1,255 @@
+// Multi-stage runs (io/syllabus.h): a config's [[stage]] tables, read and
+// refused with the stage and key named; a run of several stages in one
+// folder, each stage starting from the last one's population, numbered on
+// through the database, and, stopped at any generation (inside a stage or
+// between two) and resumed, ending exactly as a run never stopped.
+#include "io/syllabus.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "eval/evaluator.h"
+#include "develop/graph_ops.h"
+#include "genome/genotype.h"
+#include "io/run_store.h"
+#include "run/run.h"
+#include "support/run_command.h"
+
+namespace bx {
+namespace {
+
+namespace fs = std::filesystem;
+
+// three stages: the base's task, then a longer one from the first's best,
+// then the same from the second's whole population, a smaller one
+const char* kStaged = R"(
+[genome]
+dialect = "sims1994"
+[evolution]
+algorithm = "generational"
+population = 8
+generations = 2
+[task]
+seconds = 1
+
+[[stage]]
+name = "short"
+
+[[stage]]
+name = "longer"
+uses = ["short"]
+group = "g"
+[stage.task]
+seconds = 1.5
+[stage.evolution]
+generations = 3
+
+[[stage]]
+name = "again"
+start = "population"
+uses = ["short", "longer"]
+[stage.evolution]
+population = 6
+)";
+
+std::string error_of(const std::string& text) {
+  auto s = read_syllabus(text, "s.toml");
+  return s ? std::string("(read)") : s.error();
+}
+
+TEST(Syllabus, APlainConfigIsOneUnnamedStage) {
+  auto s = read_syllabus("[task]\nseconds = 2\n", "plain.toml");
+  ASSERT_TRUE(s.ok()) << s.error();
+  ASSERT_EQ(s->stages.size(), 1u);
+  EXPECT_FALSE(s->staged());
+  EXPECT_EQ(s->stages[0].cfg, *read_run_config("[task]\nseconds = 2\n", "plain.toml"));
+  EXPECT_EQ(syllabus_to_toml(*s), config_to_toml(s->stages[0].cfg));
+}
+
+TEST(Syllabus, StagesOverlayTheBaseThenTheOverrides) {
+  auto s = read_syllabus(kStaged, "s.toml", {"physics.dt=0.005"});
+  ASSERT_TRUE(s.ok()) << s.error();
+  ASSERT_EQ(s->stages.size(), 3u);
+  EXPECT_TRUE(s->staged());
+  const auto& a = s->stages[0], &b = s->stages[1], &c = s->stages[2];
+  EXPECT_EQ(a.name, "short");
+  EXPECT_EQ(a.start, StageStart::Random);
+  EXPECT_EQ(b.start, StageStart::Best);  // the default after the first
+  EXPECT_EQ(c.start, StageStart::Population);
+  EXPECT_EQ(b.uses, (std::vector<std::string>{"short"}));
+  EXPECT_EQ(b.group, "g");
+  EXPECT_DOUBLE_EQ(a.cfg.sim.task.seconds, 1);
+  EXPECT_DOUBLE_EQ(b.cfg.sim.task.seconds, 1.5);
+  EXPECT_DOUBLE_EQ(c.cfg.sim.task.seconds, 1);  // the base's, not the last stage's
+  EXPECT_EQ(b.cfg.evolution.generations, 3);
+  EXPECT_EQ(c.cfg.evolution.population, 6);
+  for (const auto& st : s->stages) EXPECT_DOUBLE_EQ(st.cfg.sim.physics.dt, 0.005);
+  EXPECT_EQ(s->find("longer"), 1);
+  EXPECT_EQ(s->find("none"), -1);
+}
+
+TEST(Syllabus, WrittenOutItReadsBackTheSame) {
+  auto s = read_syllabus(kStaged, "s.toml", {"physics.dt=0.005", "evolution.generations=1"});
+  ASSERT_TRUE(s.ok()) << s.error();
+  const std::string text = syllabus_to_toml(*s);
+  auto back = read_syllabus(text, "resolved.toml");
+  ASSERT_TRUE(back.ok()) << back.error() << "\n" << text;
+  EXPECT_EQ(*back, *s) << text;
+  EXPECT_EQ(syllabus_to_toml(*back), text);
+}
+
+TEST(Syllabus, ErrorsNameTheStageAndTheKey) {
+  const std::string base = "[genome]\ndialect = \"sims1994\"\n";
+  auto staged = [&](const std::string& stages) { return error_of(base + stages); };
+  EXPECT_EQ(staged("[[stage]]\nname = \"a\"\n[[stage]]\nname = \"b\"\nuses = [\"c\"]\n"),
+            "s.toml: stage \"b\".uses: \"c\": no earlier stage has this name (did you mean \"a\"?)");
+  EXPECT_EQ(staged("[[stage]]\nname = \"a\"\nuses = [\"b\"]\n[[stage]]\nname = \"b\"\n"),
+            "s.toml: stage \"a\".uses: \"b\" is learned after it (a stage uses only earlier ones)");
+  EXPECT_EQ(staged("[[stage]]\nname = \"a\"\nuses = [\"a\"]\n"),
+            "s.toml: stage \"a\".uses: \"a\" is this stage (a stage cannot use itself)");
+  EXPECT_EQ(staged("[[stage]]\nname = \"a\"\n[[stage]]\nname = \"a\"\n"), "s.toml: stage \"a\".name: given to two stages");
+  EXPECT_EQ(staged("[[stage]]\nuses = []\n"), "s.toml: stage 1.name: every stage needs a name (a non-empty string)");
+  EXPECT_EQ(staged("[[stage]]\nname = \"a\"\nstart = \"best\"\n"),
+            "s.toml: stage 1.start: the first stage has no stage before it to start from; it starts \"random\", got \"best\"");
+  EXPECT_EQ(staged("[[stage]]\nname = \"a\"\n[[stage]]\nname = \"b\"\nstart = \"worst\"\n"),
+            "s.toml: stage 2.start: expected one of random, best, population, got \"worst\"");
+  EXPECT_EQ(staged("[[stage]]\nname = \"a\"\nskill = 3\n"),
+            "s.toml: stage 1.skill: unknown stage key (a stage has name, uses, group, start and config sections)");
+  // a stage's config key is checked as the config's own, and named with its stage
+  EXPECT_EQ(staged("[[stage]]\nname = \"a\"\n[stage.task]\nsecond = 2\n"),
+            "s.toml: stage \"a\": task.second: unknown key (did you mean \"seconds\"?)");
+  EXPECT_EQ(staged("[[stage]]\nname = \"a\"\n[[stage]]\nname = \"b\"\n[stage.genome]\ndialect = \"miconi2006\"\n"),
+            "s.toml: stage \"b\": genome.dialect: every stage evolves the first stage's dialect (sims1994), got miconi2006");
+  EXPECT_EQ(error_of("stage = 3\n" + base), "s.toml: stage: expected [[stage]] tables, one per stage");
+}
+
+class Stages : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    root = fs::temp_directory_path() /
+           ("bx_stages_" + std::to_string(::getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(root);
+    fs::create_directories(root);
+  }
+  void TearDown() override { fs::remove_all(root); }
+  std::string make(const std::string& name) {
+    auto s = read_syllabus(kStaged, "test.toml");
+    EXPECT_TRUE(s.ok()) << s.error();
+    std::string dir = (root / name).string();
+    Status st = create_run(dir, *s, kStaged, "test.toml", 5);
+    EXPECT_TRUE(st.ok()) << st.error();
+    return dir;
+  }
+  static std::string dump(const std::string& dir) {
+    std::string out;
+    for (const char* q : {"SELECT * FROM generation ORDER BY gen", "SELECT * FROM individual ORDER BY id",
+                          "SELECT * FROM stage ORDER BY idx", "SELECT gen, state FROM checkpoint"})
+      out += bxtest::query(run_db_path(dir), q);
+    return out;
+  }
+  fs::path root;
+};
+
+TEST_F(Stages, EachStageStartsFromTheLastAndNumbersOn) {
+  std::string dir = make("run");
+  ASSERT_TRUE(drive_run(dir, {0, true, 0}).ok());
+  auto store = RunStore::open(run_db_path(dir));
+  ASSERT_TRUE(store.ok()) << store.error();
+  // 2 + 3 + 2 generations, numbered on; 8 + 8 x 3 + 6 x 2 individuals, ids on
+  auto stages = (*store)->stages();
+  ASSERT_EQ(stages.size(), 3u);
+  EXPECT_EQ(stages[0].name, "short");
+  EXPECT_EQ(stages[1].first_gen, 2);
+  EXPECT_EQ(stages[2].first_gen, 5);
+  auto gens = (*store)->generations();
+  ASSERT_EQ(gens.size(), 7u);
+  for (int g = 0; g < 7; ++g) EXPECT_EQ(gens[g].generation, g);
+  // the second stage begins with the first's best as it was, then its mutants
+  auto first_best = (*store)->individual(gens[1].best_id);
+  ASSERT_TRUE(first_best.ok());
+  auto copy = (*store)->individual(stages[1].first_id);
+  ASSERT_TRUE(copy.ok()) << copy.error();
+  EXPECT_EQ(copy->op, "copy");
+  EXPECT_EQ(copy->parent1, first_best->id);
+  EXPECT_EQ(copy->genotype->to_json(), first_best->genotype->to_json());
+  EXPECT_EQ(copy->generation, 2);
+  auto mutant = (*store)->individual(stages[1].first_id + 1);
+  ASSERT_TRUE(mutant.ok());
+  EXPECT_EQ(mutant->op, "mutation");
+  EXPECT_EQ(mutant->parent1, first_best->id);
+  // the third begins with the second's final population, best first, each as it was
+  for (std::int64_t id = stages[2].first_id; id < stages[2].first_id + 6; ++id) {
+    auto ind = (*store)->individual(id);
+    ASSERT_TRUE(ind.ok());
+    EXPECT_EQ(ind->op, "copy");
+    auto parent = (*store)->individual(ind->parent1);
+    ASSERT_TRUE(parent.ok());
+    EXPECT_GE(parent->generation, 2);
+    EXPECT_LT(parent->generation, 5);
+  }
+  // the run's best is its last stage's
+  auto best = (*store)->best_individual();
+  ASSERT_TRUE(best.ok());
+  EXPECT_GE(best->id, stages[2].first_id);
+  auto progress = run_progress(dir);
+  ASSERT_TRUE(progress.ok());
+  EXPECT_TRUE(progress->complete);
+  EXPECT_EQ(progress->generations_done, 7);
+  EXPECT_EQ(progress->generations_total, 7);
+}
+
+TEST_F(Stages, StoppedAnywhereAndResumedEndsTheSame) {
+  std::string whole = make("whole");
+  ASSERT_TRUE(drive_run(whole, {0, true, 0}).ok());
+  const std::string expected = dump(whole);
+  // inside the first stage, at its end, inside the second, at its end
+  for (int stop : {1, 2, 4, 5}) {
+    std::string dir = make("stop" + std::to_string(stop));
+    ASSERT_TRUE(drive_run(dir, {0, true, stop}).ok());
+    auto progress = run_progress(dir);
+    ASSERT_TRUE(progress.ok()) << progress.error();
+    EXPECT_EQ(progress->generations_done, stop);
+    EXPECT_FALSE(progress->complete);
+    EXPECT_NE(dump(dir), expected);
+    ASSERT_TRUE(drive_run(dir, {2, true, 0}).ok());  // with workers, too
+    EXPECT_EQ(dump(dir), expected) << "stopped after " << stop << " generations";
+  }
+}
+
+TEST_F(Stages, ARunOfStagesIsNotLengthened) {
+  std::string dir = make("run");
+  Status s = extend_run(dir, {"evolution.generations=9"});
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.error().find("cannot be lengthened"), std::string::npos) << s.error();
+}
+
+// an evaluator's task table: a batch that mixes tasks gives each job its own
+// task's evaluation, in this process and in workers
+TEST(TaskTable, AJobIsEvaluatedOnItsOwnTask) {
+  auto s = read_syllabus(kStaged, "s.toml");
+  ASSERT_TRUE(s.ok()) << s.error();
+  std::vector<SimConfig> tasks;
+  for (const auto& st : s->stages) tasks.push_back(st.cfg.sim);
+  auto ops = [&] {
+    const RunConfig& c = s->stages[0].cfg;
+    return GraphOps(c.dialect, c.operators, c.sim.develop);
+  }();
+  Rng rng(3);
+  auto g = ops.random(rng);
+  std::vector<EvalJob> jobs = {{g.get(), 7, 1, 0}, {g.get(), 7, 1, 1}};
+  SerialEvaluator serial(tasks);
+  auto out = serial.evaluate(jobs);
+  ASSERT_EQ(out.size(), 2u);
+  EXPECT_EQ(out[0].result.fitness, SerialEvaluator(tasks[0]).evaluate({{g.get(), 7}})[0].result.fitness);
+  EXPECT_EQ(out[1].result.fitness, SerialEvaluator(tasks[1]).evaluate({{g.get(), 7}})[0].result.fitness);
+  // 1 s against 1.5 s of the same creature
+  EXPECT_LT(out[0].result.steps, out[1].result.steps);
+  auto pooled = ProcessPoolEvaluator(tasks, 2, 60).evaluate(jobs);
+  ASSERT_EQ(pooled.size(), 2u);
+  for (int k = 0; k < 2; ++k) EXPECT_EQ(pooled[k].result.fitness, out[k].result.fitness);
+}
+
+}  // namespace
+}  // namespace bx
