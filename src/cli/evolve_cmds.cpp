@@ -70,15 +70,36 @@ int finish(const std::string& dir, const Status& s) {
   if (!s) return fail(s.error());
   std::printf("run in %s (config.toml, run.sqlite, run.log)\n", dir.c_str());
   bool body = true;  // a kind without a body has no creature to watch
+  std::int64_t staged_best = -1;  // a run of several stages: its last stage's best
   if (auto store = RunStore::open(run_db_path(dir)); store) {
     auto gens = (*store)->generations();
-    if (!gens.empty())
+    auto stages = (*store)->stages();
+    if (stages.size() > 1 || (stages.size() == 1 && !stages.front().name.empty())) {
+      // each stage's curve from its own generation 0: their fitnesses measure different tasks
+      for (std::size_t k = 0; k < stages.size(); ++k) {
+        const int from = stages[k].first_gen, to = k + 1 < stages.size() ? stages[k + 1].first_gen : 1 << 30;
+        const GenerationStats *first = nullptr, *last = nullptr;
+        for (const auto& g : gens) {
+          if (g.generation < from || g.generation >= to) continue;
+          if (!first) first = &g;
+          last = &g;
+        }
+        if (first)
+          std::printf("stage %zu %s: best fitness %.6g (its generation 0: %.6g)\n", k + 1, stages[k].name.c_str(),
+                      last->best, first->best);
+      }
+      if (auto best = (*store)->best_individual(); best) staged_best = best->id;
+    } else if (!gens.empty()) {
       std::printf("best fitness %.6g (generation 0: %.6g)\n", gens.back().best, gens.front().best);
+    }
     if (auto text = (*store)->config_text(); text)
       if (auto syl = read_syllabus(*text, run_db_path(dir)); syl) body = has_body(syl->stages.front().cfg.sim.creature);
   }
   std::printf("its genome: %s best %s --out best.json\n", program().c_str(), dir.c_str());
-  if (body)
+  if (body && staged_best >= 0)
+    std::printf("watch its best: %s show %s:%lld  (a run of several stages has no run page yet)\n", program().c_str(),
+                dir.c_str(), static_cast<long long>(staged_best));
+  else if (body)
     std::printf("watch the run: %s show %s  (writes %s/view.html)\n", program().c_str(), dir.c_str(), dir.c_str());
   else
     std::printf("its curves: %s plot %s --out %s/fitness.svg  (--metric NAME: its measures)\n", program().c_str(),

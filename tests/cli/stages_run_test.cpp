@@ -1,0 +1,89 @@
+// A run of several stages from the command line: run prints each stage's
+// progress and best; an individual of a later stage is re-simulated on its
+// own stage's config, bit for bit, and so is the genome file `best --out`
+// writes; the commands not yet made for several stages refuse with a line.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+#include "support/run_command.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using bxtest::bestiary;
+using bxtest::Outcome;
+
+// two stages whose task lengths differ: an individual simulated on the wrong
+// one's config would not give its stored fitness
+const char* kTwoStages = R"(
+[genome]
+dialect = "sims1994"
+[evolution]
+population = 6
+generations = 2
+[task]
+seconds = 1
+
+[[stage]]
+name = "short"
+
+[[stage]]
+name = "long"
+start = "population"
+[stage.task]
+seconds = 2
+)";
+
+class StagesRun : public bxtest::InTempDir {};
+
+TEST_F(StagesRun, EachStageIsRunAndReplayedOnItsOwnConfig) {
+  const fs::path cfg = write("staged.toml", kTwoStages), run = dir / "r";
+  Outcome r = bestiary("run " + cfg.string() + " --workers 0 --out " + run.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("2 stages"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("stage 2/2 long  gen 1/1"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("stage 1 short: best fitness"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("stage 2 long: best fitness"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("watch its best: "), std::string::npos) << r.out;
+  // the second stage's first individual (id 12: 6 + 6 before it) is a copy of
+  // the first stage's best, scored on 2 s
+  const std::string row = bxtest::query(run / "run.sqlite", "SELECT operator FROM individual WHERE id = 12");
+  EXPECT_EQ(row, "copy|\n");
+  for (const char* id : {"3", "12", "17"}) {
+    Outcome s = bestiary("simulate " + run.string() + ":" + id);
+    ASSERT_EQ(s.code, 0) << s.err;
+    EXPECT_NE(s.out.find("(the stored fitness, bit for bit)"), std::string::npos) << id << ": " << s.out;
+    EXPECT_NE(s.out.find(std::string(id == std::string("3") ? "simulated 1" : "simulated 2")), std::string::npos)
+        << id << ": " << s.out;
+  }
+  // its best, as a genome file that carries its stage's config
+  const fs::path best = dir / "best.json";
+  Outcome b = bestiary("best " + run.string() + " --out " + best.string());
+  ASSERT_EQ(b.code, 0) << b.err;
+  EXPECT_NE(b.err.find("best so far: individual 1"), std::string::npos) << b.err;  // of the second stage: ids 12-23
+  Outcome s = bestiary("simulate " + best.string());
+  ASSERT_EQ(s.code, 0) << s.err;
+  EXPECT_NE(s.out.find("(the stored fitness, bit for bit)"), std::string::npos) << s.out;
+  // not yet for several stages: the run page, lengthening
+  Outcome page = bestiary("show " + run.string());
+  EXPECT_EQ(page.code, 2);
+  EXPECT_NE(page.err.find("a run of 2 stages has no run page yet"), std::string::npos) << page.err;
+  Outcome longer = bestiary("resume " + run.string() + " --set evolution.generations=5");
+  EXPECT_EQ(longer.code, 2);
+  EXPECT_NE(longer.err.find("cannot be lengthened"), std::string::npos) << longer.err;
+}
+
+TEST_F(StagesRun, ABadStageIsRefusedWithItsNameAndKeyAndLeavesNothing) {
+  std::string text = kTwoStages;
+  text += "\n[[stage]]\nname = \"third\"\nuses = [\"fourth\"]\n";
+  const fs::path cfg = write("bad.toml", text), run = dir / "r";
+  Outcome r = bestiary("run " + cfg.string() + " --workers 0 --out " + run.string());
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(bxtest::count_lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("stage \"third\".uses: \"fourth\": no earlier stage has this name"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(run));
+}
+
+}  // namespace
