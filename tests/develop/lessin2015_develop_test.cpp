@@ -70,10 +70,14 @@ TEST(Lessin2015Develop, ASliderWithoutLimitsSlidesAtMostItsChildsHalfThickness) 
     }
     DevelopDef wide;
     wide.slide_range = 3;
-    if (type != JointType::Hinge) EXPECT_NEAR(grow(g, wide).joints[0].limits[0].hi, 0.15, 1e-12);
+    if (type != JointType::Hinge) {
+      EXPECT_NEAR(grow(g, wide).joints[0].limits[0].hi, 0.15, 1e-12);
+    }
     // limits a genome gives are kept
     g.nodes[1].joint.limits = {{-0.01, 0.02}};
-    if (type != JointType::Hinge) EXPECT_EQ(grow(g).joints[0].limits[0].hi, 0.02);
+    if (type != JointType::Hinge) {
+      EXPECT_EQ(grow(g).joints[0].limits[0].hi, 0.02);
+    }
   }
 }
 
