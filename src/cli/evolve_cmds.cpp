@@ -122,6 +122,7 @@ int cmd_run(const RunArgs& a) {
   auto syl = read_syllabus(src->second, a.config, a.set);
   if (!syl) return fail(syl.error());
   const RunConfig* cfg = &syl->stages.front().cfg;
+  if (Status s = check_run(*syl); !s) return fail(s.error());
   if (a.workers < 0) return fail("--workers: expected 0 or more, got " + std::to_string(a.workers));
   std::string dir = a.out;
   if (dir.empty()) {

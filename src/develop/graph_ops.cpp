@@ -29,6 +29,12 @@ std::unique_ptr<Genotype> GraphOps::mutate(const Genotype& g, double rate, Rng& 
   return wrap(std::move(child));
 }
 
+std::unique_ptr<Genotype> GraphOps::with_body_locked(const Genotype& g) const {
+  Genome locked = genome_of(g);
+  for (NodeGene& n : locked.nodes) n.lock |= kLockBody | kLockJoint | kLockInEdges | kLockOutEdges;
+  return wrap(std::move(locked));
+}
+
 std::unique_ptr<Genotype> GraphOps::crossover(const Genotype& a, const Genotype& b, Rng& rng) const {
   return wrap(bx::crossover(genome_of(a), genome_of(b), ops_, rng));
 }

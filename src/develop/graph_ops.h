@@ -25,6 +25,10 @@ class GraphOps : public GenotypeOps {
   std::unique_ptr<Genotype> graft(const Genotype& trunk, const Genotype& branch, Rng& rng) const override;
   /// The genome file's form; the genome must be of this dialect.
   Result<std::unique_ptr<Genotype>> from_json(const nlohmann::json& j) const override;
+  bool can_lock_body() const override { return true; }
+  /// Every node's body, joint and edges locked (genome/locks.h): no part
+  /// grows, goes or changes; neurons, sensors and effectors stay free.
+  std::unique_ptr<Genotype> with_body_locked(const Genotype& g) const override;
 
  private:
   Dialect dialect_;

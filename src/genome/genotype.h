@@ -67,6 +67,15 @@ class GenotypeOps {
   }
   /// Reads what Genotype::to_json wrote; an error names the field and the value.
   virtual Result<std::unique_ptr<Genotype>> from_json(const nlohmann::json& j) const = 0;
+  /// Whether with_body_locked() exists for this kind (one with a body).
+  virtual bool can_lock_body() const { return false; }
+  /// Only when can_lock_body(): a copy whose body no operator may change
+  /// (lessin2015's Fast ESP, IV-D: the skeleton is locked after the first
+  /// skill), while its units (neurons, sensors, muscles) stay free.
+  virtual std::unique_ptr<Genotype> with_body_locked(const Genotype&) const {
+    assert(!"with_body_locked() on a genotype kind without a body");
+    return nullptr;
+  }
 };
 
 }  // namespace bx

@@ -57,11 +57,20 @@ Status read_stage_keys(toml::table& t, StageDef& st, const std::string& where, b
       return Error{where + ".start: the first stage has no stage before it to start from; it starts \"random\", got " +
                    in_quotes(*v)};
   }
-  for (const char* k : {"name", "uses", "group", "start"}) t.erase(k);
+  if (auto* node = t.get("body")) {
+    auto v = node->value<std::string>();
+    if (!v || (*v != "free" && *v != "locked"))
+      return Error{where + ".body: expected \"free\" or \"locked\", got " +
+                   (v ? in_quotes(*v) : std::string("something else than a string"))};
+    st.lock_body = *v == "locked";
+    if (first && st.lock_body)
+      return Error{where + ".body: the first stage starts from random genotypes: it has no body to lock yet, got \"locked\""};
+  }
+  for (const char* k : {"name", "uses", "group", "start", "body"}) t.erase(k);
   for (auto&& [key, node] : t)
     if (!node.is_table())
       return Error{where + "." + one_line(key.str(), 100) +
-                   ": unknown stage key (a stage has name, uses, group, start and config sections)"};
+                   ": unknown stage key (a stage has name, uses, group, start, body and config sections)"};
   return Ok{};
 }
 
@@ -92,7 +101,7 @@ Result<Syllabus> read_syllabus(std::string_view text, std::string_view source,
   if (!stages_node) {
     auto cfg = read_run_config(text, source, overrides);
     if (!cfg) return Error{cfg.error()};
-    out.stages.push_back({"", {}, "", StageStart::Random, std::move(*cfg)});
+    out.stages.push_back({"", {}, "", StageStart::Random, false, std::move(*cfg)});
     return out;
   }
   toml::array* stages = stages_node->as_array();
@@ -159,6 +168,7 @@ std::string syllabus_to_toml(const Syllabus& s) {
     }
     if (!st.group.empty()) ss << "\ngroup = " << toml::value<std::string>(st.group);
     ss << "\nstart = \"" << stage_start_name(st.start) << "\"\n";
+    if (st.lock_body) ss << "body = \"locked\"\n";
     const std::vector<std::string> own = lines(config_to_toml(st.cfg));
     std::string section, written;
     for (std::size_t k = 0; k < own.size() && k < b.size(); ++k) {

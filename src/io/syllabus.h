@@ -17,6 +17,7 @@
 //   start = "best"        # random | best | population (default: best)
 //   uses = ["forward"]    # stages whose skills it builds on: learned before it
 //   group = "turn"        # its pandemonium group
+//   body = "locked"       # free | locked: its founders' bodies locked (Fast ESP)
 //   [stage.evolution]
 //   generations = 20
 #pragma once
@@ -43,6 +44,10 @@ struct StageDef {
   std::vector<std::string> uses;  ///< earlier stages whose skills it builds on
   std::string group;              ///< its pandemonium group ("": none)
   StageStart start = StageStart::Random;
+  /// The body is locked from this stage on (lessin2015's Fast ESP, IV-D):
+  /// the stage's founders get their body locked, so no operator changes it;
+  /// muscles, photoreceptors and neurons may still be added.
+  bool lock_body = false;
   RunConfig cfg;                  ///< the base config with the stage's tables (and --set) overlaid
   friend bool operator==(const StageDef&, const StageDef&) = default;
 };

@@ -176,6 +176,17 @@ std::shared_ptr<const GenotypeOps> genotype_ops(const RunConfig& cfg) {
 
 }  // namespace
 
+Status check_run(const Syllabus& syl) {
+  for (const StageDef& st : syl.stages) {
+    const std::string where = syl.staged() ? "stage \"" + st.name + "\": " : "";
+    auto ops = genotype_ops(st.cfg);
+    if (Status s = check_breeding(st.cfg.evolution, *ops); !s) return Error{where + s.error()};
+    if (st.lock_body && !ops->can_lock_body())
+      return Error{where + "body: \"locked\": genotypes of kind " + std::string(ops->kind()) + " have no body to lock"};
+  }
+  return Ok{};
+}
+
 Result<RunProgress> run_progress(const std::string& dir) {
   auto run = open_run(dir);
   if (!run) return Error{run.error()};
@@ -258,9 +269,7 @@ Status drive_run(const std::string& dir, const RunOptions& opt) {
   if (Status s = store.check_integrity(); !s) return s;
   const std::vector<StageDef>& stages = run->syllabus.stages;
   const int n_stages = static_cast<int>(stages.size());
-  for (const StageDef& st : stages)
-    if (Status s = check_breeding(st.cfg.evolution, *genotype_ops(st.cfg)); !s)
-      return run->syllabus.staged() ? Error{"stage \"" + st.name + "\": " + s.error()} : s;
+  if (Status s = check_run(run->syllabus); !s) return s;
   // config.toml is the run's config for people to read: the stored one rules
   std::string note;
   const std::string stored = *store.config_text();
@@ -311,6 +320,10 @@ Status drive_run(const std::string& dir, const RunOptions& opt) {
       const StageDef& next = stages[stage.index + 1];
       if (next.start == StageStart::Best) last.resize(1);
       if (next.start == StageStart::Random) last.clear();
+      if (next.lock_body) {
+        auto ops = genotype_ops(next.cfg);
+        for (Individual& f : last) f.genotype = ops->with_body_locked(*f.genotype);
+      }
       stage = {stage.index + 1, next.name, stage.first_gen + state.generation + 1, state.next_id};
       EvolutionState fresh;
       fresh.evaluations = state.evaluations;

@@ -45,8 +45,13 @@ Status create_run(const std::string& dir, const Syllabus& stages, const std::str
 /// A run of one stage.
 inline Status create_run(const std::string& dir, const RunConfig& cfg, const std::string& config_text,
                          const std::string& name, std::uint64_t seed) {
-  return create_run(dir, Syllabus{{StageDef{"", {}, "", StageStart::Random, cfg}}}, config_text, name, seed);
+  return create_run(dir, Syllabus{{StageDef{"", {}, "", StageStart::Random, false, cfg}}}, config_text, name, seed);
 }
+
+/// Whether every stage's breeding suits its genotypes (check_breeding) and
+/// a stage that locks the body evolves creatures with one; the error names
+/// the stage and the key. `run` checks before it creates the run folder.
+Status check_run(const Syllabus& stages);
 
 /// Runs (or resumes) the run in `dir` until it is finished. Safe to call on a
 /// run killed at any moment: it continues from the last checkpoint and ends

@@ -11,6 +11,7 @@
 
 #include "eval/evaluator.h"
 #include "develop/graph_ops.h"
+#include "genome/graph_genotype.h"
 #include "genome/genotype.h"
 #include "io/run_store.h"
 #include "run/run.h"
@@ -115,7 +116,7 @@ TEST(Syllabus, ErrorsNameTheStageAndTheKey) {
   EXPECT_EQ(staged("[[stage]]\nname = \"a\"\n[[stage]]\nname = \"b\"\nstart = \"worst\"\n"),
             "s.toml: stage 2.start: expected one of random, best, population, got \"worst\"");
   EXPECT_EQ(staged("[[stage]]\nname = \"a\"\nskill = 3\n"),
-            "s.toml: stage 1.skill: unknown stage key (a stage has name, uses, group, start and config sections)");
+            "s.toml: stage 1.skill: unknown stage key (a stage has name, uses, group, start, body and config sections)");
   // a stage's config key is checked as the config's own, and named with its stage
   EXPECT_EQ(staged("[[stage]]\nname = \"a\"\n[stage.task]\nsecond = 2\n"),
             "s.toml: stage \"a\": task.second: unknown key (did you mean \"seconds\"?)");
@@ -216,6 +217,63 @@ TEST_F(Stages, StoppedAnywhereAndResumedEndsTheSame) {
     ASSERT_TRUE(drive_run(dir, {2, true, 0}).ok());  // with workers, too
     EXPECT_EQ(dump(dir), expected) << "stopped after " << stop << " generations";
   }
+}
+
+// Fast ESP (lessin2015 IV-D): from a stage with body = "locked" on, no
+// operator changes the body its founder had; its units still evolve
+TEST_F(Stages, ALockedBodyStaysTheFoundersWhileItsBrainEvolves) {
+  const std::string text = std::string(kStaged).replace(std::string(kStaged).find("group = \"g\""), 11,
+                                                        "group = \"g\"\nbody = \"locked\"");
+  auto syl = read_syllabus(text, "test.toml");
+  ASSERT_TRUE(syl.ok()) << syl.error();
+  ASSERT_TRUE(syl->stages[1].lock_body);
+  EXPECT_EQ(*read_syllabus(syllabus_to_toml(*syl), "resolved"), *syl);
+  const std::string dir = (root / "run").string();
+  ASSERT_TRUE(create_run(dir, *syl, text, "test.toml", 5).ok());
+  ASSERT_TRUE(drive_run(dir, {0, true, 0}).ok());
+  auto store = RunStore::open(run_db_path(dir));
+  ASSERT_TRUE(store.ok());
+  auto stages = (*store)->stages();
+  ASSERT_EQ(stages.size(), 3u);
+  auto founder = (*store)->individual(stages[1].first_id);
+  ASSERT_TRUE(founder.ok());
+  const Genome& f = *graph_genome(*founder->genotype);
+  for (const NodeGene& n : f.nodes) EXPECT_EQ(n.lock, unsigned{kLockBody | kLockJoint | kLockInEdges | kLockOutEdges});
+  int brains_changed = 0;
+  for (std::int64_t id = stages[1].first_id + 1;; ++id) {
+    auto ind = (*store)->individual(id);
+    if (!ind) break;
+    const Genome& g = *graph_genome(*ind->genotype);
+    ASSERT_GE(g.nodes.size(), f.nodes.size()) << "individual " << id;
+    for (std::size_t k = 0; k < f.nodes.size(); ++k) {
+      const NodeGene &a = f.nodes[k], &b = g.nodes[k];
+      EXPECT_EQ(a.shape, b.shape) << id;
+      EXPECT_EQ(a.size, b.size) << id;
+      EXPECT_EQ(a.density, b.density) << id;
+      EXPECT_EQ(a.joint, b.joint) << id;
+      EXPECT_EQ(a.recursive_limit, b.recursive_limit) << id;
+      EXPECT_EQ(a.edges, b.edges) << id;
+      EXPECT_EQ(a.lock, b.lock) << id;
+      brains_changed += a.neurons != b.neurons || a.effectors != b.effectors || a.sensors != b.sensors;
+    }
+  }
+  EXPECT_GT(brains_changed, 0);
+}
+
+TEST(Syllabus, OnlyABodyAfterTheFirstStageCanBeLocked) {
+  const std::string base = "[genome]\ndialect = \"sims1994\"\n";
+  EXPECT_EQ(error_of(base + "[[stage]]\nname = \"a\"\nbody = \"locked\"\n"),
+            "s.toml: stage 1.body: the first stage starts from random genotypes: it has no body to lock yet, got \"locked\"");
+  EXPECT_EQ(error_of(base + "[[stage]]\nname = \"a\"\n[[stage]]\nname = \"b\"\nbody = \"rigid\"\n"),
+            "s.toml: stage 2.body: expected \"free\" or \"locked\", got \"rigid\"");
+  // a creature kind without a body (the motif) has none to lock
+  auto motif = read_syllabus("[genotype]\nkind = \"motif\"\n[evolution]\np_asexual = 0.5\np_crossover = 0.5\np_graft = 0\n"
+                             "[[stage]]\nname = \"a\"\n[[stage]]\nname = \"b\"\nbody = \"locked\"\n",
+                             "m.toml");
+  ASSERT_TRUE(motif.ok()) << motif.error();
+  Status s = check_run(*motif);
+  ASSERT_FALSE(s.ok());
+  EXPECT_EQ(s.error(), "stage \"b\": body: \"locked\": genotypes of kind floats have no body to lock");
 }
 
 TEST_F(Stages, ARunOfStagesIsNotLengthened) {
