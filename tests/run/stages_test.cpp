@@ -276,6 +276,55 @@ TEST(Syllabus, OnlyABodyAfterTheFirstStageCanBeLocked) {
   EXPECT_EQ(s.error(), "stage \"b\": body: \"locked\": genotypes of kind floats have no body to lock");
 }
 
+// the steady state's budget counts the creatures born in each stage
+TEST_F(Stages, SteadyStateStagesCountTheirOwnBudgetsAndResumeTheSame) {
+  const char* text = R"(
+[genome]
+dialect = "miconi2006"
+[evolution]
+algorithm = "steady_state"
+population = 9
+evaluations = 6
+batch = 3
+report_every = 3
+[task]
+seconds = 1
+
+[[stage]]
+name = "one"
+
+[[stage]]
+name = "two"
+[stage.evolution]
+evaluations = 9
+)";
+  auto syl = read_syllabus(text, "test.toml");
+  ASSERT_TRUE(syl.ok()) << syl.error();
+  auto make = [&](const std::string& name) {
+    const std::string dir = (root / name).string();
+    EXPECT_TRUE(create_run(dir, *syl, text, "test.toml", 3).ok());
+    return dir;
+  };
+  const std::string whole = make("whole");
+  ASSERT_TRUE(drive_run(whole, {0, true, 0}).ok());
+  auto store = RunStore::open(run_db_path(whole));
+  ASSERT_TRUE(store.ok());
+  // 1 + 2 report intervals, then 1 + 3; 9 + 6 creatures, then 9 + 9
+  auto stages = (*store)->stages();
+  ASSERT_EQ(stages.size(), 2u);
+  EXPECT_EQ(stages[1].first_gen, 3);
+  EXPECT_EQ(stages[1].first_id, 15);
+  EXPECT_EQ((*store)->generations().size(), 7u);
+  EXPECT_EQ(bxtest::query(run_db_path(whole), "SELECT count(*) FROM individual"), "33|\n");
+  const std::string expected = dump(whole);
+  for (int stop : {2, 3, 5}) {
+    const std::string dir = make("stop" + std::to_string(stop));
+    ASSERT_TRUE(drive_run(dir, {0, true, stop}).ok());
+    ASSERT_TRUE(drive_run(dir, {2, true, 0}).ok());
+    EXPECT_EQ(dump(dir), expected) << "stopped after " << stop;
+  }
+}
+
 TEST_F(Stages, ARunOfStagesIsNotLengthened) {
   std::string dir = make("run");
   Status s = extend_run(dir, {"evolution.generations=9"});
