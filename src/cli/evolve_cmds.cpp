@@ -70,7 +70,6 @@ int finish(const std::string& dir, const Status& s) {
   if (!s) return fail(s.error());
   std::printf("run in %s (config.toml, run.sqlite, run.log)\n", dir.c_str());
   bool body = true;  // a kind without a body has no creature to watch
-  std::int64_t staged_best = -1;  // a run of several stages: its last stage's best
   if (auto store = RunStore::open(run_db_path(dir)); store) {
     auto gens = (*store)->generations();
     auto stages = (*store)->stages();
@@ -88,7 +87,6 @@ int finish(const std::string& dir, const Status& s) {
           std::printf("stage %zu %s: best fitness %.6g (its generation 0: %.6g)\n", k + 1, stages[k].name.c_str(),
                       last->best, first->best);
       }
-      if (auto best = (*store)->best_individual(); best) staged_best = best->id;
     } else if (!gens.empty()) {
       std::printf("best fitness %.6g (generation 0: %.6g)\n", gens.back().best, gens.front().best);
     }
@@ -96,10 +94,7 @@ int finish(const std::string& dir, const Status& s) {
       if (auto syl = read_syllabus(*text, run_db_path(dir)); syl) body = has_body(syl->stages.front().cfg.sim.creature);
   }
   std::printf("its genome: %s best %s --out best.json\n", program().c_str(), dir.c_str());
-  if (body && staged_best >= 0)
-    std::printf("watch its best: %s show %s:%lld  (a run of several stages has no run page yet)\n", program().c_str(),
-                dir.c_str(), static_cast<long long>(staged_best));
-  else if (body)
+  if (body)
     std::printf("watch the run: %s show %s  (writes %s/view.html)\n", program().c_str(), dir.c_str(), dir.c_str());
   else
     std::printf("its curves: %s plot %s --out %s/fitness.svg  (--metric NAME: its measures)\n", program().c_str(),

@@ -95,25 +95,26 @@ int cmd_show_run(WatchArgs a) {
   if (!text) return fail(text.error());
   auto syl = read_syllabus(*text, run_db_path(dir) + " (the run's config)");
   if (!syl) return fail(syl.error());
-  if (syl->staged())
-    return fail(dir + ": a run of " + std::to_string(syl->stages.size()) +
-                " stages has no run page yet: show its creatures one at a time (`" + program() + " show " + dir +
-                ":ID`, `best " + dir + "` names the last stage's best), its curves with `" + program() + " plot " + dir +
-                " --out fitness.svg`");
   const RunConfig* cfg = &syl->stages.front().cfg;
   if (!has_body(cfg->sim.creature))
     return fail(no_body(cfg->sim.creature, "no creature to show (its curves: `" + program() + " plot " + dir +
                                               " --out fitness.svg`, and --metric NAME)"));
   auto seed = (*store)->master_seed();
   if (!seed) return fail(seed.error());
-  SimConfig sim = cfg->sim;
-  if (Status s = set_seconds(sim, a.flags.seconds); !s) return fail(s.error());
+  // each stage's creatures simulated on its own config
+  std::vector<SimConfig> sims;
+  for (const StageDef& st : syl->stages) {
+    sims.push_back(st.cfg.sim);
+    if (Status s = set_seconds(sims.back(), a.flags.seconds); !s) return fail(s.error());
+  }
   if (a.out.empty()) a.out = (fs::path(dir) / "view.html").string();
   if (Status s = make_parent_dir("--out", a.out); !s) return fail(s.error());
 
   // the overall best, the lineages and the generations' bests (io/run_page.h)
-  auto page = gather_run_page(**store, dir, *cfg, sim, *seed);
+  auto page = gather_run_page(**store, dir, *cfg, sims, *seed);
   if (!page) return fail(dir + ": " + page.error());
+  for (std::size_t k = 1; k < syl->stages.size(); ++k)
+    page->run.planned_generations += total_generations(syl->stages[k].cfg.evolution);
   if (Status s = save_view_html(a.out, page->replays, page->run); !s) return fail(s.error());
   const RunView& run = page->run;
   auto best = std::find_if(run.members.begin(), run.members.end(), [&](const RunMember& m) { return m.id == run.best_id; });

@@ -55,7 +55,15 @@ std::vector<std::int64_t> replay_choice(std::int64_t best, const std::vector<std
 
 Result<RunPage> gather_run_page(const RunStore& store, const std::string& source, const RunConfig& cfg,
                                 const SimConfig& sim, std::uint64_t master, int cap) {
+  return gather_run_page(store, source, cfg, std::vector<SimConfig>{sim}, master, cap);
+}
+
+Result<RunPage> gather_run_page(const RunStore& store, const std::string& source, const RunConfig& cfg,
+                                const std::vector<SimConfig>& stage_sims, std::uint64_t master, int cap) {
   auto gens = store.generations();
+  const std::vector<StageRow> stages = store.stages();
+  const bool staged = stage_sims.size() > 1;
+  const int last_stage_gen = stages.empty() ? 0 : stages.back().first_gen;
   if (gens.empty()) return Error{"no generation finished yet"};
   RunPage page;
   RunView& run = page.run;
@@ -70,12 +78,14 @@ Result<RunPage> gather_run_page(const RunStore& store, const std::string& source
   run.planned_generations = total_generations(cfg.evolution);
   run.replay_cap = cap;
   // the overall best: the fittest generation best, the earliest on a tie
-  const GenerationStats* top = &gens.front();
+  // (of the last stage's generations: a stage's fitness is its own task's)
+  const GenerationStats* top = nullptr;
   for (const auto& g : gens) {
     run.generations.push_back({g.generation, g.best, g.mean, g.median, g.best_id, g.evaluations, g.rejected,
                                g.failed});
-    if (g.best > top->best) top = &g;
+    if (g.generation >= last_stage_gen && (!top || g.best > top->best)) top = &g;
   }
+  if (!top) top = &gens.back();
   run.best_id = top->best_id;
 
   // the members: each generation's best and its first parents back to
@@ -116,6 +126,11 @@ Result<RunPage> gather_run_page(const RunStore& store, const std::string& source
   std::map<std::int64_t, int> replay_of;
   for (std::int64_t id : replay_choice(run.best_id, *best_line, bests, others, cap)) {
     const Individual& ind = members.at(id);
+    const StageRow stage = stage_of(stages, id);
+    if (stage.index >= static_cast<int>(stage_sims.size()))
+      return Error{"individual " + std::to_string(id) + " is of stage " + std::to_string(stage.index + 1) +
+                   ", but the run's config has " + std::to_string(stage_sims.size())};
+    const SimConfig& sim = stage_sims[stage.index];
     auto creature = develop_creature(*ind.genotype, sim);
     if (!creature) continue;  // not viable
     Replay replay;
@@ -124,7 +139,8 @@ Result<RunPage> gather_run_page(const RunStore& store, const std::string& source
     ReplayInfo info{source + " individual " + std::to_string(id), seed, sim.physics.dt, sim.physics.friction,
                     replay_creature(sim)};
     replay_of[id] = static_cast<int>(page.replays.size());
-    page.replays.push_back({"individual " + std::to_string(id) + ", generation " + std::to_string(ind.generation),
+    page.replays.push_back({"individual " + std::to_string(id) + ", generation " + std::to_string(ind.generation) +
+                                (staged ? ", stage " + stage.name : ""),
                             replay_to_string(*creature->body, replay, res, info), genotype_text(*ind.genotype)});
   }
   if (!replay_of.count(run.best_id))

@@ -45,4 +45,13 @@ std::vector<std::int64_t> replay_choice(std::int64_t best, const std::vector<std
 Result<RunPage> gather_run_page(const RunStore& store, const std::string& source, const RunConfig& cfg,
                                 const SimConfig& sim, std::uint64_t master, int cap = kRunPageReplays);
 
+/// The same for a run of several stages (io/syllabus.h): each creature is
+/// simulated with its own stage's `stage_sims[k]` (the stage its id was
+/// born in), the page's best is the last stage's (their fitnesses measure
+/// different tasks), and each replay's label names its stage. `cfg` is the
+/// first stage's, for the page's context.
+Result<RunPage> gather_run_page(const RunStore& store, const std::string& source, const RunConfig& cfg,
+                                const std::vector<SimConfig>& stage_sims, std::uint64_t master,
+                                int cap = kRunPageReplays);
+
 }  // namespace bx
