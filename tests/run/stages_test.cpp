@@ -125,38 +125,30 @@ TEST(Syllabus, ErrorsNameTheStageAndTheKey) {
   EXPECT_EQ(error_of("stage = 3\n" + base), "s.toml: stage: expected [[stage]] tables, one per stage");
 }
 
-class Stages : public ::testing::Test {
+// runs in a fresh folder of their own (bxtest::InTempDir's `dir`)
+class Stages : public bxtest::InTempDir {
  protected:
-  void SetUp() override {
-    root = fs::temp_directory_path() /
-           ("bx_stages_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(root);
-    fs::create_directories(root);
-  }
-  void TearDown() override { fs::remove_all(root); }
   std::string make(const std::string& name) {
     auto s = read_syllabus(kStaged, "test.toml");
     EXPECT_TRUE(s.ok()) << s.error();
-    std::string dir = (root / name).string();
-    Status st = create_run(dir, *s, kStaged, "test.toml", 5);
+    std::string run = (dir / name).string();
+    Status st = create_run(run, *s, kStaged, "test.toml", 5);
     EXPECT_TRUE(st.ok()) << st.error();
-    return dir;
+    return run;
   }
-  static std::string dump(const std::string& dir) {
+  static std::string dump(const std::string& run) {
     std::string out;
     for (const char* q : {"SELECT * FROM generation ORDER BY gen", "SELECT * FROM individual ORDER BY id",
                           "SELECT * FROM stage ORDER BY idx", "SELECT gen, state FROM checkpoint"})
-      out += bxtest::query(run_db_path(dir), q);
+      out += bxtest::query(run_db_path(run), q);
     return out;
   }
-  fs::path root;
 };
 
 TEST_F(Stages, EachStageStartsFromTheLastAndNumbersOn) {
-  std::string dir = make("run");
-  ASSERT_TRUE(drive_run(dir, {0, true, 0}).ok());
-  auto store = RunStore::open(run_db_path(dir));
+  std::string run = make("run");
+  ASSERT_TRUE(drive_run(run, {0, true, 0}).ok());
+  auto store = RunStore::open(run_db_path(run));
   ASSERT_TRUE(store.ok()) << store.error();
   // 2 + 3 + 2 generations, numbered on; 8 + 8 x 3 + 6 x 2 individuals, ids on
   auto stages = (*store)->stages();
@@ -194,7 +186,7 @@ TEST_F(Stages, EachStageStartsFromTheLastAndNumbersOn) {
   auto best = (*store)->best_individual();
   ASSERT_TRUE(best.ok());
   EXPECT_GE(best->id, stages[2].first_id);
-  auto progress = run_progress(dir);
+  auto progress = run_progress(run);
   ASSERT_TRUE(progress.ok());
   EXPECT_TRUE(progress->complete);
   EXPECT_EQ(progress->generations_done, 7);
@@ -207,15 +199,15 @@ TEST_F(Stages, StoppedAnywhereAndResumedEndsTheSame) {
   const std::string expected = dump(whole);
   // inside the first stage, at its end, inside the second, at its end
   for (int stop : {1, 2, 4, 5}) {
-    std::string dir = make("stop" + std::to_string(stop));
-    ASSERT_TRUE(drive_run(dir, {0, true, stop}).ok());
-    auto progress = run_progress(dir);
+    std::string run = make("stop" + std::to_string(stop));
+    ASSERT_TRUE(drive_run(run, {0, true, stop}).ok());
+    auto progress = run_progress(run);
     ASSERT_TRUE(progress.ok()) << progress.error();
     EXPECT_EQ(progress->generations_done, stop);
     EXPECT_FALSE(progress->complete);
-    EXPECT_NE(dump(dir), expected);
-    ASSERT_TRUE(drive_run(dir, {2, true, 0}).ok());  // with workers, too
-    EXPECT_EQ(dump(dir), expected) << "stopped after " << stop << " generations";
+    EXPECT_NE(dump(run), expected);
+    ASSERT_TRUE(drive_run(run, {2, true, 0}).ok());  // with workers, too
+    EXPECT_EQ(dump(run), expected) << "stopped after " << stop << " generations";
   }
 }
 
@@ -228,10 +220,10 @@ TEST_F(Stages, ALockedBodyStaysTheFoundersWhileItsBrainEvolves) {
   ASSERT_TRUE(syl.ok()) << syl.error();
   ASSERT_TRUE(syl->stages[1].lock_body);
   EXPECT_EQ(*read_syllabus(syllabus_to_toml(*syl), "resolved"), *syl);
-  const std::string dir = (root / "run").string();
-  ASSERT_TRUE(create_run(dir, *syl, text, "test.toml", 5).ok());
-  ASSERT_TRUE(drive_run(dir, {0, true, 0}).ok());
-  auto store = RunStore::open(run_db_path(dir));
+  const std::string run = (dir / "run").string();
+  ASSERT_TRUE(create_run(run, *syl, text, "test.toml", 5).ok());
+  ASSERT_TRUE(drive_run(run, {0, true, 0}).ok());
+  auto store = RunStore::open(run_db_path(run));
   ASSERT_TRUE(store.ok());
   auto stages = (*store)->stages();
   ASSERT_EQ(stages.size(), 3u);
@@ -301,9 +293,9 @@ evaluations = 9
   auto syl = read_syllabus(text, "test.toml");
   ASSERT_TRUE(syl.ok()) << syl.error();
   auto make = [&](const std::string& name) {
-    const std::string dir = (root / name).string();
-    EXPECT_TRUE(create_run(dir, *syl, text, "test.toml", 3).ok());
-    return dir;
+    const std::string run = (dir / name).string();
+    EXPECT_TRUE(create_run(run, *syl, text, "test.toml", 3).ok());
+    return run;
   };
   const std::string whole = make("whole");
   ASSERT_TRUE(drive_run(whole, {0, true, 0}).ok());
@@ -318,16 +310,16 @@ evaluations = 9
   EXPECT_EQ(bxtest::query(run_db_path(whole), "SELECT count(*) FROM individual"), "33|\n");
   const std::string expected = dump(whole);
   for (int stop : {2, 3, 5}) {
-    const std::string dir = make("stop" + std::to_string(stop));
-    ASSERT_TRUE(drive_run(dir, {0, true, stop}).ok());
-    ASSERT_TRUE(drive_run(dir, {2, true, 0}).ok());
-    EXPECT_EQ(dump(dir), expected) << "stopped after " << stop;
+    const std::string run = make("stop" + std::to_string(stop));
+    ASSERT_TRUE(drive_run(run, {0, true, stop}).ok());
+    ASSERT_TRUE(drive_run(run, {2, true, 0}).ok());
+    EXPECT_EQ(dump(run), expected) << "stopped after " << stop;
   }
 }
 
 TEST_F(Stages, ARunOfStagesIsNotLengthened) {
-  std::string dir = make("run");
-  Status s = extend_run(dir, {"evolution.generations=9"});
+  std::string run = make("run");
+  Status s = extend_run(run, {"evolution.generations=9"});
   ASSERT_FALSE(s.ok());
   EXPECT_NE(s.error().find("cannot be lengthened"), std::string::npos) << s.error();
 }
