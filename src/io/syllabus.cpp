@@ -65,6 +65,8 @@ Status read_stage_keys(toml::table& t, StageDef& st, const std::string& where, b
     st.lock_body = *v == "locked";
     if (first && st.lock_body)
       return Error{where + ".body: the first stage starts from random genotypes: it has no body to lock yet, got \"locked\""};
+    if (st.lock_body && st.start == StageStart::Random)
+      return Error{where + ".body: \"locked\" locks the bodies the stage starts from, and start = \"random\" takes none"};
   }
   for (const char* k : {"name", "uses", "group", "start", "body"}) t.erase(k);
   for (auto&& [key, node] : t)

@@ -258,6 +258,8 @@ TEST(Syllabus, OnlyABodyAfterTheFirstStageCanBeLocked) {
             "s.toml: stage 1.body: the first stage starts from random genotypes: it has no body to lock yet, got \"locked\"");
   EXPECT_EQ(error_of(base + "[[stage]]\nname = \"a\"\n[[stage]]\nname = \"b\"\nbody = \"rigid\"\n"),
             "s.toml: stage 2.body: expected \"free\" or \"locked\", got \"rigid\"");
+  EXPECT_EQ(error_of(base + "[[stage]]\nname = \"a\"\n[[stage]]\nname = \"b\"\nstart = \"random\"\nbody = \"locked\"\n"),
+            "s.toml: stage 2.body: \"locked\" locks the bodies the stage starts from, and start = \"random\" takes none");
   // a creature kind without a body (the motif) has none to lock
   auto motif = read_syllabus("[genotype]\nkind = \"motif\"\n[evolution]\np_asexual = 0.5\np_crossover = 0.5\np_graft = 0\n"
                              "[[stage]]\nname = \"a\"\n[[stage]]\nname = \"b\"\nbody = \"locked\"\n",
