@@ -304,7 +304,7 @@ GenerationResult Evolution::generational(EvolutionState& s, Evaluator& eval) con
     auto make = [&](Rng& r) {
       const Individual& a = survivors[select_survivor(survivors, evo_.selection, r)];
       double u = r.uniform();
-      if (u < evo_.p_asexual) return Child{ops_->mutate(*a.genotype, evo_.asexual_rate, r), a.id, -1, "mutation"};
+      if (u < evo_.p_asexual) return mutant(a, r);
       const Individual& b = survivors[select_survivor(survivors, evo_.selection, r)];
       bool cross = u < evo_.p_asexual + evo_.p_crossover;
       Child c{cross ? ops_->crossover(*a.genotype, *b.genotype, r) : ops_->graft(*a.genotype, *b.genotype, r),
@@ -403,11 +403,7 @@ GenerationResult Evolution::steady_state(EvolutionState& s, Evaluator& eval) con
       // mutation (5.2: a third each), in the shares p_asexual, p_crossover, p_graft
       auto make = [&](Rng& r) {
         const double u = r.uniform();
-        if (u < evo_.p_asexual) {
-          Child c{a.genotype, a.id, -1, "mutation"};
-          for (int m = 0; m < evo_.asexual_mutations; ++m) c.genotype = ops_->mutate(*c.genotype, evo_.mutation_rate, r);
-          return c;
-        }
+        if (u < evo_.p_asexual) return mutant(a, r);
         const bool cross = u < evo_.p_asexual + evo_.p_crossover;
         Child c{cross ? ops_->crossover(*a.genotype, *b.genotype, r) : ops_->graft(*a.genotype, *b.genotype, r),
                 a.id, b.id, cross ? "crossover" : "graft"};

@@ -20,7 +20,12 @@ std::string table_text(const toml::table& t) {
   return ss.str();
 }
 
-std::string in_quotes(std::string_view s) { return "\"" + one_line(s, 100) + "\""; }
+// appended piecewise: GCC 12 warns falsely (-Wrestrict) on "x" + string&&
+std::string in_quotes(std::string_view s) {
+  std::string q = "\"";
+  q.append(one_line(s, 100)).append("\"");
+  return q;
+}
 
 // a stage's own keys (name, uses, group, start) from its table, which then
 // keeps its config sections only
