@@ -33,6 +33,7 @@ void brain_step(const BrainModel& m, BrainState& s, double dt) {
   const std::vector<NeuronFnSpec>& fns = all_neuron_fns();
   const NeuronClock clock{s.t, dt};
   const double* values = s.values.data();
+  const bool gated = !m.input_gate.empty();
 
   // every neuron from the current values, into next
   for (int i = 0; i < n_neurons; ++i) {
@@ -43,9 +44,16 @@ void brain_step(const BrainModel& m, BrainState& s, double dt) {
     if (f.mode == InputMode::WeightedSum) {
       // one argument: weighted sum plus bias
       double sum = m.bias[i];
-      for (std::uint32_t j = in_b; j < in_e; ++j) {
-        const std::int32_t src = m.input_src[j];
-        if (src >= 0) sum += m.input_weight[j] * values[src];
+      if (gated) {
+        for (std::uint32_t j = in_b; j < in_e; ++j) {
+          const std::int32_t src = m.input_src[j], gate = m.input_gate[j];
+          if (src >= 0) sum += gate >= 0 ? m.input_weight[j] * values[src] * values[gate] : m.input_weight[j] * values[src];
+        }
+      } else {
+        for (std::uint32_t j = in_b; j < in_e; ++j) {
+          const std::int32_t src = m.input_src[j];
+          if (src >= 0) sum += m.input_weight[j] * values[src];
+        }
       }
       args[0] = sum;
       n_args = 1;
@@ -58,6 +66,7 @@ void brain_step(const BrainModel& m, BrainState& s, double dt) {
       for (std::size_t k = 0; k < used; ++k) {
         const std::int32_t src = m.input_src[in_b + k];
         if (src >= 0) args[k] = m.input_weight[in_b + k] * values[src];
+        if (src >= 0 && gated && m.input_gate[in_b + k] >= 0) args[k] *= values[m.input_gate[in_b + k]];
       }
     }
     const std::span<const double> params(m.params.data() + m.param_begin[i],
@@ -76,11 +85,16 @@ void brain_step(const BrainModel& m, BrainState& s, double dt) {
   apply_pandemonium(m, s.values);
 
   // effectors from the updated values, so sensor->effector acts this step
+  // (a gated input reads its switch in the same step: at 1 it passes the
+  // wire exactly, w * v * 1 == w * v)
+  const bool effectors_gated = !m.effector_input_gate.empty();
   for (int e = 0; e < m.n_effectors(); ++e) {
     double sum = m.effector_bias[e];
     for (std::uint32_t j = m.effector_input_begin[e]; j < m.effector_input_begin[e + 1]; ++j) {
       const std::int32_t src = m.effector_input_src[j];
-      if (src >= 0) sum += m.effector_input_weight[j] * values[src];
+      if (src < 0) continue;
+      const std::int32_t gate = effectors_gated ? m.effector_input_gate[j] : -1;
+      sum += gate >= 0 ? m.effector_input_weight[j] * values[src] * values[gate] : m.effector_input_weight[j] * values[src];
     }
     s.effector_out[e] = effector_signal(m.set, sum);
   }

@@ -26,6 +26,10 @@ struct BrainModel {
   std::vector<std::uint32_t> input_begin; ///< size n_neurons + 1, into input_src/weight
   std::vector<std::int32_t> input_src;    ///< value slot, or -1 for "reads 0" (positional hole)
   std::vector<double> input_weight;
+  /// Gates (lessin2015 IV-B, genome/encapsulate.h): per input, the value
+  /// slot of the switch that scales it (w * value * switch), or -1 for none;
+  /// empty when no input of the brain is gated (the plain loop runs).
+  std::vector<std::int32_t> input_gate;
 
   // pandemonium groups (lessin2015 IV-C; brain/pandemonium.h): after each
   // step only the largest output of a group's members passes, the rest read
@@ -39,6 +43,7 @@ struct BrainModel {
   std::vector<std::uint32_t> effector_input_begin;  ///< size n_effectors + 1
   std::vector<std::int32_t> effector_input_src;
   std::vector<double> effector_input_weight;
+  std::vector<std::int32_t> effector_input_gate;  ///< as input_gate, for effector inputs
 
   // a catapult's release effector (chaumont2007 4.1, Fig. 4): its signal is
   // the larger of the delay neuron's output and the clamped weighted sum of

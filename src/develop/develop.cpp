@@ -279,6 +279,12 @@ class Wiring {
     return m_.brain.n_sensors + neuron_base[target] + in.index;
   }
 
+  /// The value slot of a gated input's switch (a global neuron), or -1.
+  int gate_slot(const InputGene& in) const {
+    if (in.gate < 0 || in.gate >= static_cast<int>(g_.global_neurons.size())) return -1;
+    return m_.brain.n_sensors + global_base + in.gate;
+  }
+
  private:
   int missing(const std::string& where) {
     if (reported_.insert(where).second)
@@ -307,6 +313,7 @@ void add_neuron(BrainModel& b, const NeuronGene& ng, int part, int owner, Wiring
     b.input_src.push_back(
         wiring.slot(owner, ng.inputs[k], where + ".inputs[" + std::to_string(k) + "]"));
     b.input_weight.push_back(ng.inputs[k].weight);
+    b.input_gate.push_back(wiring.gate_slot(ng.inputs[k]));
   }
   b.input_begin.push_back(static_cast<std::uint32_t>(b.input_src.size()));
   b.neuron_part.push_back(part);
@@ -344,6 +351,7 @@ int add_mechanism_neuron(BrainModel& b, std::string_view fn, std::vector<double>
   for (std::int32_t src : inputs) {
     b.input_src.push_back(src);
     b.input_weight.push_back(1.0);
+    b.input_gate.push_back(-1);
   }
   b.input_begin.push_back(static_cast<std::uint32_t>(b.input_src.size()));
   b.neuron_part.push_back(0);
@@ -548,10 +556,32 @@ Development develop(const Genome& g, const DevelopDef& def) {
       join_group(node.neurons[k]);
     }
   }
+  // with a skill selected (DevelopDef::skill), its switch is a constant 1 and
+  // every other switch follows only its gated inputs (the wires of
+  // encapsulated skills: those the selected one drives pass, the rest are 0)
+  const bool selected = !def.skill.empty();
+  if (selected && std::none_of(g.global_neurons.begin(), g.global_neurons.end(),
+                               [&](const NeuronGene& nr) { return nr.skill == def.skill; })) {
+    std::string names;
+    for (const NeuronGene& nr : g.global_neurons)
+      if (!nr.skill.empty()) names += (names.empty() ? "\"" : ", \"") + nr.skill + "\"";
+    return {std::nullopt, "brain.skill: no skill \"" + def.skill + "\" in this genome (its skills: " +
+                              (names.empty() ? "none" : names) + ")"};
+  }
   for (std::size_t k = 0; k < g.global_neurons.size(); ++k) {
-    add_neuron(brain, g.global_neurons[k], -1, 0, wiring,
+    const NeuronGene& ng = g.global_neurons[k];
+    NeuronGene forced;
+    if (selected && !ng.skill.empty()) {
+      forced = ng;
+      const bool it = ng.skill == def.skill;
+      forced.inputs.erase(std::remove_if(forced.inputs.begin(), forced.inputs.end(),
+                                         [&](const InputGene& in) { return it || in.gate == InputGene::kNoGate; }),
+                          forced.inputs.end());
+      forced.bias = it ? 1.0 : 0.0;
+    }
+    add_neuron(brain, selected && !ng.skill.empty() ? forced : ng, -1, 0, wiring,
                "global_neurons[" + std::to_string(k) + "]");
-    join_group(g.global_neurons[k]);
+    join_group(ng);
   }
   add_groups(brain, std::move(grouped));
 
@@ -591,17 +621,27 @@ Development develop(const Genome& g, const DevelopDef& def) {
       const PartModel& pp = m.parts[inst[i].parent];
       e.cross_section = std::max(cross_section(pc.shape, pc.size), cross_section(pp.shape, pp.size));
       m.effectors.push_back(e);
-      brain.effector_bias.push_back(eg.bias);
+      // with a skill selected, only the encapsulated skills' (gated) wires
+      // drive it: its bias and ungated inputs are the skill being learned's
+      brain.effector_bias.push_back(selected ? 0.0 : eg.bias);
       std::string where =
           "nodes[" + std::to_string(inst[i].node) + "].effectors[" + std::to_string(k) + "]";
       for (std::size_t q = 0; q < eg.inputs.size(); ++q) {
+        if (selected && eg.inputs[q].gate == InputGene::kNoGate) continue;
         brain.effector_input_src.push_back(
             wiring.slot(i, eg.inputs[q], where + ".inputs[" + std::to_string(q) + "]"));
         brain.effector_input_weight.push_back(eg.inputs[q].weight);
+        brain.effector_input_gate.push_back(wiring.gate_slot(eg.inputs[q]));
       }
       brain.effector_input_begin.push_back(static_cast<std::uint32_t>(brain.effector_input_src.size()));
     }
   }
+  // no gate anywhere: the brain keeps the plain loops (BrainModel::input_gate)
+  auto ungated = [](const std::vector<std::int32_t>& v) {
+    return std::all_of(v.begin(), v.end(), [](std::int32_t x) { return x < 0; });
+  };
+  if (ungated(brain.input_gate)) brain.input_gate.clear();
+  if (ungated(brain.effector_input_gate)) brain.effector_input_gate.clear();
   return {std::move(m), {}};
 }
 

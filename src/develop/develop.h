@@ -14,6 +14,14 @@ namespace bx {
 struct DevelopDef {
   /// Most parts after development; 0 takes the dialect's max_parts.
   int max_parts = 0;
+  /// An encapsulated skill to run alone (lessin2015 IV-B, genome/encapsulate.h;
+  /// config brain.skill): its switch is held at 1, and the wires of the skill
+  /// being learned (effectors' biases and ungated inputs, switches' ungated
+  /// inputs) are cut, so every other switch follows only the encapsulated
+  /// skills' wires: those the selected skill drives (its subskills') pass,
+  /// the rest read 0, as when it was learned. Empty: the switches follow
+  /// the brain. A genome without that skill does not develop.
+  std::string skill;
   /// Self-intersection test: parts are shrunk by this much (m) on every side,
   /// so parts that merely touch are not counted as overlapping.
   double overlap_margin = 0.005;

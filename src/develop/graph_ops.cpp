@@ -2,6 +2,8 @@
 
 #include <cassert>
 
+#include "genome/dialect.h"
+#include "genome/encapsulate.h"
 #include "genome/genome_json.h"
 #include "genome/graph_genotype.h"
 
@@ -33,6 +35,20 @@ std::unique_ptr<Genotype> GraphOps::with_body_locked(const Genotype& g) const {
   Genome locked = genome_of(g);
   for (NodeGene& n : locked.nodes) n.lock |= kLockBody | kLockJoint | kLockInEdges | kLockOutEdges;
   return wrap(std::move(locked));
+}
+
+bool GraphOps::can_encapsulate() const { return !dialect_rules(dialect_).group_fn.empty(); }
+
+Result<std::unique_ptr<Genotype>> GraphOps::with_skill_encapsulated(const Genotype& g, const SkillDef& skill,
+                                                                    const std::vector<std::string>& uses) const {
+  Genome out = genome_of(g);
+  if (!skill.name.empty()) {
+    auto e = encapsulate(out, skill);
+    if (!e) return Error{e.error()};
+    out = std::move(*e);
+  }
+  open_switches(out, uses);
+  return wrap(std::move(out));
 }
 
 std::unique_ptr<Genotype> GraphOps::crossover(const Genotype& a, const Genotype& b, Rng& rng) const {

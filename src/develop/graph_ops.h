@@ -29,6 +29,10 @@ class GraphOps : public GenotypeOps {
   /// Every node's body, joint and edges locked (genome/locks.h): no part
   /// grows, goes or changes; neurons, sensors and effectors stay free.
   std::unique_ptr<Genotype> with_body_locked(const Genotype& g) const override;
+  /// In dialects with skill switches (lessin2015): genome/encapsulate.h.
+  bool can_encapsulate() const override;
+  Result<std::unique_ptr<Genotype>> with_skill_encapsulated(const Genotype& g, const SkillDef& skill,
+                                                            const std::vector<std::string>& uses) const override;
 
  private:
   Dialect dialect_;

@@ -568,6 +568,25 @@ class Validator {
                          ")",
                      nr.fn);
     std::string fn(spec->name);
+    // a skill's switch (lessin2015 IV-B, genome/encapsulate.h): a global
+    // neuron of the dialect's switch function, one per skill
+    if (!nr.skill.empty()) {
+      if (r_.group_fn.empty()) return problem(path + ".skill", "no skill switches" + in_dialect(r_), nr.skill);
+      if (owner >= 0) return problem(path + ".skill", "a skill's switch is a global neuron", nr.skill);
+      if (fn != r_.group_fn)
+        return problem(path + ".skill",
+                       "a skill's switch is a " + std::string(r_.group_fn) + " neuron" + in_dialect(r_) +
+                           " (this is a " + fn + ")",
+                       nr.skill);
+      for (const NeuronGene& other : g_.global_neurons)
+        if (&other != &nr && other.skill == nr.skill)
+          return problem(path + ".skill", "two switches of one skill", nr.skill);
+    } else {
+      for (std::size_t k = 0; k < nr.inputs.size(); ++k)
+        if (nr.inputs[k].gate != InputGene::kNoGate)
+          return problem(path + ".inputs[" + std::to_string(k) + "].gate",
+                         "only a skill switch's and an effector's inputs are gated", nr.inputs[k].gate);
+    }
     // a pandemonium group (lessin2015 IV-C): only on the dialect's skill switch
     if (nr.group != NeuronGene::kNoGroup) {
       if (nr.group < 0)
@@ -648,6 +667,14 @@ class Validator {
                      "out of range " + range_text(r_.max_abs_weight) + in_dialect(r_), in.weight);
     if (owner < 0 && in.place != SourcePlace::Root && in.place != SourcePlace::Global)
       return problem(path + ".from", "global neurons read only root and global sources", place);
+    // a gate is a skill's switch (genome/encapsulate.h)
+    if (in.gate != InputGene::kNoGate) {
+      const int n = static_cast<int>(g_.global_neurons.size());
+      if (r_.group_fn.empty()) return problem(path + ".gate", "no skill switches" + in_dialect(r_), in.gate);
+      if (in.gate < 0 || in.gate >= n || g_.global_neurons[in.gate].skill.empty())
+        return problem(path + ".gate",
+                       "a gate names a global neuron that is a skill's switch (one with a \"skill\")", in.gate);
+    }
     // how many neurons or sensors the source node has
     auto count = [&](const NodeGene& n) {
       return static_cast<int>(neuron                              ? n.neurons.size()

@@ -72,12 +72,21 @@ enum class SourceKind { Neuron, Sensor, Muscle };
 /// unreflected child, so the wiring is mirrored too). A source that does not exist in the developed
 /// creature (no parent for the root, an edge that grew nothing, a recursion
 /// cut short) reads 0 and is reported as a development warning.
+///
+/// A gated input (lessin2015 IV-B's encapsulation, genome/encapsulate.h) is
+/// a wire leaving an encapsulated skill: its signal is multiplied by the
+/// output of the skill's switch, global neuron `gate`, read in the same step
+/// as its source (so a switch at 1 passes the wire bit for bit, at 0 silences
+/// it). A gated input is frozen: no operator changes or removes it.
 struct InputGene {
+  /// No gate (InputGene::gate).
+  static constexpr int kNoGate = -1;
   SourcePlace place = SourcePlace::Self;
   SourceKind kind = SourceKind::Neuron;
   int index = 0;
   int edge = 0;
   double weight = 1.0;
+  int gate = kNoGate;  ///< the global neuron (a skill's switch) that scales it, or kNoGate
   friend bool operator==(const InputGene&, const InputGene&) = default;
 };
 
@@ -99,6 +108,12 @@ struct NeuronGene {
   /// an operator: mutation, crossover and random genomes copy it or leave it
   /// out.
   int group = kNoGroup;
+  /// A skill's switch (lessin2015 IV-B's sigma node, genome/encapsulate.h):
+  /// the name of the encapsulated skill whose outgoing wires it gates, or
+  /// empty. A switch is a global neuron of the dialect's group_fn; its
+  /// function, bias and gated inputs are frozen, never removed; while it is
+  /// not `locked` ("open" to the skill being learned) new inputs may join.
+  std::string skill{};
   friend bool operator==(const NeuronGene&, const NeuronGene&) = default;
 };
 

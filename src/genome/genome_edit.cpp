@@ -362,8 +362,15 @@ void remove_neuron(Genome& g, int node, int k, SourceFix fix, Rng* rng) {
 void remove_global_neuron(Genome& g, int k, SourceFix fix, Rng* rng) {
   assert(k >= 0 && k < static_cast<int>(g.global_neurons.size()));
   for_each_inputs(g, [&](int, std::vector<InputGene>& inputs) {
-    for (InputGene& in : inputs)
+    for (InputGene& in : inputs) {
       if (in.place == SourcePlace::Global) shift_index(in.index, k);
+      // a gate follows its switch (one removed leaves its wires ungated;
+      // the operators never remove a switch: genome/locks.h)
+      if (in.gate != InputGene::kNoGate) {
+        shift_index(in.gate, k);
+        if (in.gate < 0) in.gate = InputGene::kNoGate;
+      }
+    }
   });
   g.global_neurons.erase(g.global_neurons.begin() + k);
   repair_sources(g, fix, rng);

@@ -276,8 +276,9 @@ class Reader {
   }
 
   NeuronGene neuron(const json& j, const std::string& path) const {
-    expect_object(j, path, {"fn", "bias", "params", "inputs", "group", "locked"});
+    expect_object(j, path, {"fn", "bias", "params", "inputs", "group", "skill", "locked"});
     NeuronGene n;
+    if (const json* v = find(j, "skill")) n.skill = str(*v, field_path(path, "skill"));
     if (const json* v = find(j, "locked")) n.locked = boolean(*v, field_path(path, "locked"));
     // a pandemonium group (validate() checks which neurons may have one)
     if (const json* v = find(j, "group")) n.group = integer(*v, field_path(path, "group"));
@@ -371,7 +372,7 @@ class Reader {
   }
 
   InputGene source(const json& j, const std::string& path) const {
-    expect_object(j, path, {"from", "neuron", "sensor", "muscle", "edge", "weight"});
+    expect_object(j, path, {"from", "neuron", "sensor", "muscle", "edge", "weight", "gate"});
     InputGene in;
     in.place = name_of(require(j, path, "from"), field_path(path, "from"), "source place", kPlaces);
     const json* neuron = find(j, "neuron");
@@ -389,6 +390,8 @@ class Reader {
       fail(field_path(path, "edge"), "only \"child\" sources take an edge", *edge);
     }
     if (const json* v = find(j, "weight")) in.weight = number(*v, field_path(path, "weight"));
+    // a skill's switch (validate() checks that it is one)
+    if (const json* v = find(j, "gate")) in.gate = integer(*v, field_path(path, "gate"));
     return in;
   }
 
@@ -626,6 +629,8 @@ J source_json(const InputGene& in) {
   if (in.place == SourcePlace::Child) o["edge"] = in.edge;
   o[in.kind == SourceKind::Neuron ? "neuron" : in.kind == SourceKind::Sensor ? "sensor" : "muscle"] = in.index;
   o["weight"] = in.weight;
+  // written only when set, so a genome without switches reads as before them
+  if (in.gate != InputGene::kNoGate) o["gate"] = in.gate;
   return o;
 }
 
@@ -657,6 +662,7 @@ J neuron_json(const NeuronGene& n, NeuronSetId set) {
   o["inputs"] = inputs_json<J>(n.inputs);
   // written only when set, so a genome without groups reads as it did before them
   if (n.group != NeuronGene::kNoGroup) o["group"] = n.group;
+  if (!n.skill.empty()) o["skill"] = n.skill;
   if (n.locked) o["locked"] = true;
   return o;
 }

@@ -13,9 +13,11 @@
 #include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "core/result.h"
 #include "core/rng.h"
+#include "genome/skill.h"
 
 namespace bx {
 
@@ -75,6 +77,17 @@ class GenotypeOps {
   virtual std::unique_ptr<Genotype> with_body_locked(const Genotype&) const {
     assert(!"with_body_locked() on a genotype kind without a body");
     return nullptr;
+  }
+  /// Whether with_skill_encapsulated() exists for this kind.
+  virtual bool can_encapsulate() const { return false; }
+  /// Only when can_encapsulate(): a copy with the skill it has learned
+  /// encapsulated as `skill` (when `skill.name` is not empty; lessin2015
+  /// IV-B, genome/encapsulate.h) and the switches of the skills named in
+  /// `uses` open to the next one.
+  virtual Result<std::unique_ptr<Genotype>> with_skill_encapsulated(const Genotype&, const SkillDef& skill,
+                                                                    const std::vector<std::string>& uses) const {
+    (void)skill, (void)uses;
+    return Error{"encapsulation on a genotype kind without skills"};
   }
 };
 

@@ -10,16 +10,34 @@ namespace bx {
 
 namespace {
 
+// a unit's frozen part (genome/locks.h): all of a locked unit; of a switch or
+// an effector carrying an encapsulated skill's wires, what stays as the skill
+// left it (the free rest cleared)
+NeuronGene frozen(const NeuronGene& n) {
+  if (n.locked || n.skill.empty()) return n;
+  NeuronGene f = n;
+  f.inputs.resize(gated_prefix(n.inputs));
+  return f;
+}
+const SensorGene& frozen(const SensorGene& s) { return s; }
+EffectorGene frozen(const EffectorGene& e) {
+  if (e.locked) return e;
+  EffectorGene f = e;
+  f.bias = 0;
+  f.inputs.resize(gated_prefix(e.inputs));
+  return f;
+}
+
 template <class U>
 int locked_prefix(const std::vector<U>& units) {
   int k = 0;
-  while (k < static_cast<int>(units.size()) && units[k].locked) ++k;
+  while (k < static_cast<int>(units.size()) && is_fixed(units[k])) ++k;
   return k;
 }
 
 template <class U>
 bool any_locked(const std::vector<U>& units) {
-  return std::any_of(units.begin(), units.end(), [](const U& u) { return u.locked; });
+  return std::any_of(units.begin(), units.end(), [](const U& u) { return is_fixed(u); });
 }
 
 std::vector<int> kept_nodes(const Genome& g) {
@@ -61,10 +79,22 @@ std::vector<std::pair<std::string, EdgeGene>> in_edges(const Genome& g, int n, c
 template <class U>
 bool same_prefix(const std::vector<U>& a, const std::vector<U>& b, int n) {
   if (static_cast<int>(b.size()) < n || locked_prefix(b) != n) return false;
-  return std::equal(a.begin(), a.begin() + n, b.begin());
+  for (int k = 0; k < n; ++k)
+    if (!(frozen(a[k]) == frozen(b[k]))) return false;
+  return true;
 }
 
 }  // namespace
+
+int gated_prefix(const std::vector<InputGene>& inputs) {
+  int k = 0;
+  while (k < static_cast<int>(inputs.size()) && inputs[k].gate != InputGene::kNoGate) ++k;
+  return k;
+}
+
+bool is_fixed(const NeuronGene& n) { return n.locked || !n.skill.empty(); }
+bool is_fixed(const SensorGene& s) { return s.locked; }
+bool is_fixed(const EffectorGene& e) { return e.locked || gated_prefix(e.inputs) > 0; }
 
 bool has_locked_unit(const NodeGene& n) {
   return (n.lock & kLockUnits) || any_locked(n.neurons) || any_locked(n.sensors) || any_locked(n.effectors);
@@ -86,7 +116,10 @@ void unlock(NodeGene& n) {
   n.lock = 0;
   for (auto& u : n.neurons) u.locked = false;
   for (auto& u : n.sensors) u.locked = false;
-  for (auto& u : n.effectors) u.locked = false;
+  for (auto& u : n.effectors) {
+    u.locked = false;
+    for (InputGene& in : u.inputs) in.gate = InputGene::kNoGate;  // its skill's switch is not this genome's
+  }
 }
 
 Status locks_kept(const Genome& parent, const Genome& child) {
@@ -140,9 +173,11 @@ std::optional<std::string> lock_problem(const Genome& g) {
   auto prefix = [](const auto& units, const std::string& path) -> std::optional<std::string> {
     int k = locked_prefix(units);
     for (int j = k; j < static_cast<int>(units.size()); ++j)
-      if (units[j].locked)
-        return path + "[" + std::to_string(j) + "].locked: locked units come before unlocked ones (the first " +
-               "unlocked one is [" + std::to_string(k) + "]), got true";
+      if (is_fixed(units[j]))
+        return path + "[" + std::to_string(j) + "]" + (units[j].locked ? ".locked" : "") +
+               ": locked units come before unlocked ones (skills' switches and effectors with gated inputs " +
+               "count as locked; the first unlocked one is [" + std::to_string(k) + "]), got " +
+               (units[j].locked ? "true" : "a fixed one");
     return std::nullopt;
   };
   if (auto p = prefix(g.global_neurons, "global_neurons")) return p;
@@ -161,7 +196,7 @@ std::optional<std::string> lock_problem(const Genome& g) {
     if (in.kind == SourceKind::Neuron)
       return in.index >= 0 && in.index < static_cast<int>(s.neurons.size()) && s.neurons[in.index].locked;
     if (in.kind == SourceKind::Muscle)  // a muscle's length: its effector
-      return in.index >= 0 && in.index < static_cast<int>(s.effectors.size()) && s.effectors[in.index].locked;
+      return in.index >= 0 && in.index < static_cast<int>(s.effectors.size()) && is_fixed(s.effectors[in.index]);
     return in.index >= 0 && in.index < static_cast<int>(s.sensors.size()) && s.sensors[in.index].locked;
   };
   auto source_locked = [&](int owner, const InputGene& in) -> bool {
@@ -169,8 +204,9 @@ std::optional<std::string> lock_problem(const Genome& g) {
       case SourcePlace::Self: return unit_locked(owner, in);
       case SourcePlace::Root: return unit_locked(0, in);
       case SourcePlace::Global:
+        // a skill's switch counts as locked: later skills drive it, as IV-B means them to
         return in.index >= 0 && in.index < static_cast<int>(g.global_neurons.size()) &&
-               g.global_neurons[in.index].locked;
+               is_fixed(g.global_neurons[in.index]);
       case SourcePlace::Child: {
         const NodeGene& o = g.nodes[owner];
         return (o.lock & kLockOutEdges) && in.edge >= 0 && in.edge < static_cast<int>(o.edges.size()) &&
@@ -186,8 +222,11 @@ std::optional<std::string> lock_problem(const Genome& g) {
     }
     return false;
   };
-  auto inputs = [&](int owner, const std::vector<InputGene>& ins, const std::string& path) -> std::optional<std::string> {
-    for (std::size_t k = 0; k < ins.size(); ++k)
+  // only the first `n` of `ins` (all: a locked unit's; the gated prefix: a
+  // switch's or an effector's, the wires of encapsulated skills)
+  auto inputs = [&](int owner, const std::vector<InputGene>& ins, const std::string& path,
+                    std::size_t n = static_cast<std::size_t>(-1)) -> std::optional<std::string> {
+    for (std::size_t k = 0; k < ins.size() && k < n; ++k)
       if (!source_locked(owner, ins[k]))
         return path + ".inputs[" + std::to_string(k) + "]: a locked unit reads only locked units (through a " +
                "parent only with in_edges locked, a child only with out_edges locked), got a source from " +
@@ -197,18 +236,36 @@ std::optional<std::string> lock_problem(const Genome& g) {
                std::to_string(ins[k].index);
     return std::nullopt;
   };
-  for (int j = 0; j < static_cast<int>(g.global_neurons.size()) && g.global_neurons[j].locked; ++j)
-    if (auto p = inputs(-1, g.global_neurons[j].inputs, "global_neurons[" + std::to_string(j) + "]")) return p;
+  // gated inputs come first in their lists (new ones are appended after them)
+  auto gated_first = [](const std::vector<InputGene>& ins, const std::string& path) -> std::optional<std::string> {
+    const int k = gated_prefix(ins);
+    for (int j = k; j < static_cast<int>(ins.size()); ++j)
+      if (ins[j].gate != InputGene::kNoGate)
+        return path + ".inputs[" + std::to_string(j) + "].gate: gated inputs come before ungated ones (the first " +
+               "ungated one is [" + std::to_string(k) + "]), got " + std::to_string(ins[j].gate);
+    return std::nullopt;
+  };
+  for (int j = 0; j < static_cast<int>(g.global_neurons.size()); ++j) {
+    const NeuronGene& nr = g.global_neurons[j];
+    const std::string path = "global_neurons[" + std::to_string(j) + "]";
+    if (auto p = gated_first(nr.inputs, path)) return p;
+    if (is_fixed(nr))
+      if (auto p = inputs(-1, nr.inputs, path, nr.locked ? nr.inputs.size() : gated_prefix(nr.inputs))) return p;
+  }
   for (int i = 0; i < n; ++i) {
     const NodeGene& node = g.nodes[i];
     const bool all = node.lock & kLockUnits;
     for (int j = 0; j < static_cast<int>(node.neurons.size()); ++j)
       if (all || node.neurons[j].locked)
         if (auto p = inputs(i, node.neurons[j].inputs, node_path(i) + ".neurons[" + std::to_string(j) + "]")) return p;
-    for (int j = 0; j < static_cast<int>(node.effectors.size()); ++j)
-      if (all || node.effectors[j].locked)
-        if (auto p = inputs(i, node.effectors[j].inputs, node_path(i) + ".effectors[" + std::to_string(j) + "]"))
+    for (int j = 0; j < static_cast<int>(node.effectors.size()); ++j) {
+      const EffectorGene& ef = node.effectors[j];
+      const std::string path = node_path(i) + ".effectors[" + std::to_string(j) + "]";
+      if (auto p = gated_first(ef.inputs, path)) return p;
+      if (all || is_fixed(ef))
+        if (auto p = inputs(i, ef.inputs, path, all || ef.locked ? ef.inputs.size() : gated_prefix(ef.inputs)))
           return p;
+    }
   }
   return std::nullopt;
 }

@@ -8,11 +8,13 @@
 //
 // Rules a genome's locks follow (lock_problem, part of validate()):
 // - locked units come first in their list (new ones are appended after them,
-//   so removing an unlocked one never renumbers a locked one);
-// - a locked unit reads only locked units: neurons and sensors that are
-//   locked themselves or sit in a units-locked node, through a parent only
-//   when its node's in-edges are locked, through a child only when its
-//   node's out-edges are;
+//   so removing an unlocked one never renumbers a locked one); fixed units
+//   (is_fixed: locked ones, skills' switches, effectors carrying gated
+//   inputs) count as locked here, and gated inputs come first in theirs;
+// - a locked unit, and every gated input, reads only locked units: neurons
+//   and sensors that are locked themselves or sit in a units-locked node (or
+//   a skill's switch), through a parent only when its node's in-edges are
+//   locked, through a child only when its node's out-edges are;
 // - miconi2006's limb-tree operators do not honour locks: its genomes have none.
 //
 // Nodes with any lock, or holding a locked unit, are "kept": never removed,
@@ -28,6 +30,19 @@
 #include "genome/genome.h"
 
 namespace bx {
+
+/// How many of `inputs` lead with a gate (InputGene::gate): the wires of
+/// encapsulated skills, frozen.
+int gated_prefix(const std::vector<InputGene>& inputs);
+/// Whether a unit is fixed: never removed or renumbered, its frozen part
+/// unchanged. A locked unit is frozen whole; a skill's switch
+/// (NeuronGene::skill) in its function, bias and gated inputs; an effector
+/// carrying gated inputs (an encapsulated skill's wires) in its muscle or
+/// degree of freedom and those inputs, while its bias and further inputs
+/// belong to the skill being learned.
+bool is_fixed(const NeuronGene& n);
+bool is_fixed(const SensorGene& s);
+bool is_fixed(const EffectorGene& e);
 
 /// Whether any node or unit of `g` is locked.
 bool has_locks(const Genome& g);

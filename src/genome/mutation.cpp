@@ -317,6 +317,7 @@ struct GraphMutator {
   void inputs(int owner, std::vector<InputGene>& ins) {
     Range wb = weight_bounds(def, g.dialect);
     for (InputGene& in : ins) {
+      if (in.gate != InputGene::kNoGate) continue;  // an encapsulated skill's wire: frozen
       if (hit()) in.weight = perturb(in.weight, wb.lo, wb.hi);
       if (hit()) {
         std::vector<InputGene> cands = source_candidates(g, owner);
@@ -331,6 +332,8 @@ struct GraphMutator {
   void neuron(int owner, NeuronGene& nr) {
     const NeuronFnSpec* spec = spec_of(g, nr);
     if (!spec) return;
+    // a skill's switch: only its free inputs evolve (genome/locks.h)
+    if (!nr.skill.empty()) return inputs(owner, nr.inputs);
     for (std::size_t k = 0; k < spec->params.size() && k < nr.params.size(); ++k)
       if (hit()) {
         const ParamSpec& ps = spec->params[k];
@@ -443,14 +446,18 @@ struct GraphMutator {
     Range eb = effector_bias_bounds(def, g.dialect);
     for (EffectorGene& ef : g.nodes[i].effectors) {
       if (all_units || ef.locked) continue;
-      if (ef.muscle) {
-        // lessin2015 III-E: anchors and strength evolve
-        MuscleGene& m = *ef.muscle;
-        if (hit()) m.parent_dir = nudge_axis(m.parent_dir);
-        if (hit()) m.child_dir = nudge_axis(m.child_dir);
-        if (hit()) m.strength = scale(m.strength, def.muscle_strength_range.lo, def.muscle_strength_range.hi);
-      } else if (dofs > 1 && hit()) {
-        ef.dof = static_cast<int>(rng.below(dofs));
+      // carrying an encapsulated skill's wires, its muscle or degree of
+      // freedom stays as that skill learned it
+      if (!is_fixed(ef)) {
+        if (ef.muscle) {
+          // lessin2015 III-E: anchors and strength evolve
+          MuscleGene& m = *ef.muscle;
+          if (hit()) m.parent_dir = nudge_axis(m.parent_dir);
+          if (hit()) m.child_dir = nudge_axis(m.child_dir);
+          if (hit()) m.strength = scale(m.strength, def.muscle_strength_range.lo, def.muscle_strength_range.hi);
+        } else if (dofs > 1 && hit()) {
+          ef.dof = static_cast<int>(rng.below(dofs));
+        }
       }
       if (hit()) ef.bias = perturb(ef.bias, eb.lo, eb.hi);
       inputs(i, ef.inputs);
@@ -578,8 +585,8 @@ struct GraphMutator {
     if (!pick_neuron(owner, k)) return;
     NeuronGene& nr = owner < 0 ? g.global_neurons[k] : g.nodes[owner].neurons[k];
     // a pandemonium member stays what its group needs (DialectRules::group_fn):
-    // groups are the syllabus's, and no operator changes one
-    if (nr.group != NeuronGene::kNoGroup) return;
+    // groups are the syllabus's, and no operator changes one; nor a switch
+    if (nr.group != NeuronGene::kNoGroup || !nr.skill.empty()) return;
     std::vector<std::string_view> names = neuron_fn_names(r.neuron_set);
     std::vector<std::string_view> others;
     for (auto nm : names)
@@ -682,6 +689,60 @@ struct GraphMutator {
     }
   }
 
+  // the units that may take or lose an input: weighted-sum neurons and
+  // effectors that no lock holds whole (an open switch among them), as
+  // (owner, index, is effector); owner -1: a global neuron
+  struct UnitRef {
+    int owner, index;
+    bool effector;
+  };
+  std::vector<UnitRef> wired_units() {
+    std::vector<UnitRef> out;
+    auto sum_neuron = [&](const NeuronGene& nr) {
+      const NeuronFnSpec* spec = spec_of(g, nr);
+      return !nr.locked && spec && spec->mode == InputMode::WeightedSum;
+    };
+    for (int i = 0; i < n_nodes(); ++i) {
+      if (g.nodes[i].lock & kLockUnits) continue;
+      for (int k = 0; k < static_cast<int>(g.nodes[i].neurons.size()); ++k)
+        if (sum_neuron(g.nodes[i].neurons[k])) out.push_back({i, k, false});
+      for (int k = 0; k < static_cast<int>(g.nodes[i].effectors.size()); ++k)
+        if (!g.nodes[i].effectors[k].locked) out.push_back({i, k, true});
+    }
+    for (int k = 0; k < static_cast<int>(g.global_neurons.size()); ++k)
+      if (sum_neuron(g.global_neurons[k])) out.push_back({-1, k, false});
+    return out;
+  }
+  std::vector<InputGene>& inputs_of(const UnitRef& u) {
+    if (u.effector) return g.nodes[u.owner].effectors[u.index].inputs;
+    return u.owner < 0 ? g.global_neurons[u.index].inputs : g.nodes[u.owner].neurons[u.index].inputs;
+  }
+
+  void add_input() {
+    std::vector<UnitRef> units = wired_units();
+    if (units.empty()) return;
+    const UnitRef u = units[rng.below(units.size())];
+    if (!u.effector) {
+      const NeuronGene& nr = u.owner < 0 ? g.global_neurons[u.index] : g.nodes[u.owner].neurons[u.index];
+      int most = spec_of(g, nr)->max_inputs;
+      if (r.max_inputs_per_neuron > 0) most = std::min(most, r.max_inputs_per_neuron);
+      if (static_cast<int>(nr.inputs.size()) >= most) return;
+    }
+    InputGene in;
+    if (random_input(g, u.owner, def, rng, in)) inputs_of(u).push_back(in);
+  }
+
+  void remove_input() {
+    std::vector<UnitRef> units = wired_units();
+    if (units.empty()) return;
+    const UnitRef u = units[rng.below(units.size())];
+    std::vector<InputGene>& ins = inputs_of(u);
+    const int first = gated_prefix(ins);  // gated inputs are frozen
+    const int free = static_cast<int>(ins.size()) - first;
+    if (free <= 0) return;
+    ins.erase(ins.begin() + first + static_cast<std::ptrdiff_t>(rng.below(static_cast<std::uint64_t>(free))));
+  }
+
   // A catapult's release (chaumont2007 4.1: the mechanism is fixed "except
   // its connection to the neural network"): its inputs mutate as a neuron's,
   // read as from the arm; then with `rate` one random input is added and
@@ -728,6 +789,9 @@ struct GraphMutator {
     structural(s.add_effector, [&] { add_effector(); });
     structural(s.remove_effector, [&] { remove_effector(); });
     structural(s.change_fn, [&] { change_fn(); });
+    // drawn only when set, so genomes of every preset without them mutate as before
+    if (s.add_input > 0) structural(s.add_input, [&] { add_input(); });
+    if (s.remove_input > 0) structural(s.remove_input, [&] { remove_input(); });
   }
 };
 

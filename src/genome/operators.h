@@ -66,6 +66,13 @@ struct StructuralRates {
   double add_effector = 0;     ///< an effector on a random degree of freedom
   double remove_effector = 0;  ///< a random effector
   double change_fn = 0;  ///< a random neuron's function (params reset, inputs fitted to the arity)
+  /// A random input for a random weighted-sum neuron or effector that may
+  /// take one (lessin2015 IV-B: a skill being learned wires into the muscles
+  /// and the switches of the skills it uses). 0 in every dialect's defaults:
+  /// config operators.add_input. Tried only when above 0 (no draw otherwise).
+  double add_input = 0;
+  /// A random ungated input of such a unit removed (config operators.remove_input).
+  double remove_input = 0;
   friend bool operator==(const StructuralRates&, const StructuralRates&) = default;
 };
 

@@ -1,5 +1,7 @@
 #include "io/syllabus.h"
 
+#include <algorithm>
+
 #include <toml++/toml.h>
 
 #include <set>
@@ -27,7 +29,7 @@ std::string in_quotes(std::string_view s) {
   return q;
 }
 
-// a stage's own keys (name, uses, group, start) from its table, which then
+// a stage's own keys (name, uses, group, start, body, encapsulate) from its table, which then
 // keeps its config sections only
 Status read_stage_keys(toml::table& t, StageDef& st, const std::string& where, bool first) {
   auto name = t["name"].value<std::string>();
@@ -73,11 +75,17 @@ Status read_stage_keys(toml::table& t, StageDef& st, const std::string& where, b
     if (st.lock_body && st.start == StageStart::Random)
       return Error{where + ".body: \"locked\" locks the bodies the stage starts from, and start = \"random\" takes none"};
   }
-  for (const char* k : {"name", "uses", "group", "start", "body"}) t.erase(k);
+  if (auto* node = t.get("encapsulate")) {
+    auto v = node->value<bool>();
+    if (!v || !node->is_boolean())
+      return Error{where + ".encapsulate: expected true or false (whether its skill is encapsulated when it ends)"};
+    st.encapsulate = *v;
+  }
+  for (const char* k : {"name", "uses", "group", "start", "body", "encapsulate"}) t.erase(k);
   for (auto&& [key, node] : t)
     if (!node.is_table())
       return Error{where + "." + one_line(key.str(), 100) +
-                   ": unknown stage key (a stage has name, uses, group, start, body and config sections)"};
+                   ": unknown stage key (a stage has name, uses, group, start, body, encapsulate and config sections)"};
   return Ok{};
 }
 
@@ -88,6 +96,17 @@ std::string_view stage_start_name(StageStart s) { return kStartNames[static_cast
 int Syllabus::find(std::string_view name) const {
   for (std::size_t i = 0; i < stages.size(); ++i)
     if (stages[i].name == name) return static_cast<int>(i);
+  return -1;
+}
+
+int Syllabus::group_id(std::string_view group) const {
+  if (group.empty()) return -1;
+  std::vector<std::string_view> seen;
+  for (const StageDef& st : stages) {
+    if (st.group.empty() || std::find(seen.begin(), seen.end(), st.group) != seen.end()) continue;
+    if (st.group == group) return static_cast<int>(seen.size());
+    seen.push_back(st.group);
+  }
   return -1;
 }
 
@@ -108,7 +127,9 @@ Result<Syllabus> read_syllabus(std::string_view text, std::string_view source,
   if (!stages_node) {
     auto cfg = read_run_config(text, source, overrides);
     if (!cfg) return Error{cfg.error()};
-    out.stages.push_back({"", {}, "", StageStart::Random, false, std::move(*cfg)});
+    StageDef one;
+    one.cfg = std::move(*cfg);
+    out.stages.push_back(std::move(one));
     return out;
   }
   toml::array* stages = stages_node->as_array();
@@ -176,6 +197,7 @@ std::string syllabus_to_toml(const Syllabus& s) {
     if (!st.group.empty()) ss << "\ngroup = " << toml::value<std::string>(st.group);
     ss << "\nstart = \"" << stage_start_name(st.start) << "\"\n";
     if (st.lock_body) ss << "body = \"locked\"\n";
+    if (st.encapsulate) ss << "encapsulate = true\n";
     const std::vector<std::string> own = lines(config_to_toml(st.cfg));
     std::string section, written;
     for (std::size_t k = 0; k < own.size() && k < b.size(); ++k) {

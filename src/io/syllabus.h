@@ -18,6 +18,7 @@
 //   uses = ["forward"]    # stages whose skills it builds on: learned before it
 //   group = "turn"        # its pandemonium group
 //   body = "locked"       # free | locked: its founders' bodies locked (Fast ESP)
+//   encapsulate = true    # when it ends, its skill is encapsulated (ESP, IV-B)
 //   [stage.evolution]
 //   generations = 20
 #pragma once
@@ -48,6 +49,10 @@ struct StageDef {
   /// the stage's founders get their body locked, so no operator changes it;
   /// muscles, photoreceptors and neurons may still be added.
   bool lock_body = false;
+  /// When the stage ends, its skill is encapsulated (lessin2015 IV-B,
+  /// genome/encapsulate.h) in the next stage's founders: frozen, switched by
+  /// a switch of the stage's name in its pandemonium group.
+  bool encapsulate = false;
   RunConfig cfg;                  ///< the base config with the stage's tables (and --set) overlaid
   friend bool operator==(const StageDef&, const StageDef&) = default;
 };
@@ -59,6 +64,9 @@ struct Syllabus {
   bool staged() const { return stages.size() != 1 || !stages.front().name.empty(); }
   /// The index of the stage named `name`, or -1.
   int find(std::string_view name) const;
+  /// A pandemonium group's id in the genome (NeuronGene::group): the groups
+  /// numbered from 0 in the order the stages first name them; -1 for "".
+  int group_id(std::string_view group) const;
   friend bool operator==(const Syllabus&, const Syllabus&) = default;
 };
 

@@ -183,6 +183,9 @@ Status check_run(const Syllabus& syl) {
     if (Status s = check_breeding(st.cfg.evolution, *ops); !s) return Error{where + s.error()};
     if (st.lock_body && !ops->can_lock_body())
       return Error{where + "body: \"locked\": genotypes of kind " + std::string(ops->kind()) + " have no body to lock"};
+    if (st.encapsulate && !ops->can_encapsulate())
+      return Error{where + "encapsulate: true: genotypes of kind " + std::string(ops->kind()) + " (dialect " +
+                   std::string(to_string(st.cfg.dialect)) + ") have no skill switches (lessin2015's have)"};
   }
   return Ok{};
 }
@@ -320,10 +323,20 @@ Status drive_run(const std::string& dir, const RunOptions& opt) {
       const StageDef& next = stages[stage.index + 1];
       if (next.start == StageStart::Best) last.resize(1);
       if (next.start == StageStart::Random) last.clear();
-      if (next.lock_body) {
-        auto ops = genotype_ops(next.cfg);
-        for (Individual& f : last) f.genotype = ops->with_body_locked(*f.genotype);
+      auto ops = genotype_ops(next.cfg);
+      if (ops->can_encapsulate()) {
+        // the skill just learned encapsulated (lessin2015 IV-B), and the
+        // switches of the skills the next stage uses opened to it
+        const StageDef& done_stage = stages[stage.index];
+        const SkillDef skill{done_stage.encapsulate ? done_stage.name : "", run->syllabus.group_id(done_stage.group)};
+        for (Individual& f : last) {
+          auto e = ops->with_skill_encapsulated(*f.genotype, skill, next.uses);
+          if (!e) return Error{"stage \"" + done_stage.name + "\": individual " + std::to_string(f.id) + ": " + e.error()};
+          f.genotype = std::move(*e);
+        }
       }
+      if (next.lock_body)
+        for (Individual& f : last) f.genotype = ops->with_body_locked(*f.genotype);
       stage = {stage.index + 1, next.name, stage.first_gen + state.generation + 1, state.next_id};
       EvolutionState fresh;
       fresh.evaluations = state.evaluations;

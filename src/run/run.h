@@ -45,7 +45,9 @@ Status create_run(const std::string& dir, const Syllabus& stages, const std::str
 /// A run of one stage.
 inline Status create_run(const std::string& dir, const RunConfig& cfg, const std::string& config_text,
                          const std::string& name, std::uint64_t seed) {
-  return create_run(dir, Syllabus{{StageDef{"", {}, "", StageStart::Random, false, cfg}}}, config_text, name, seed);
+  StageDef one;
+  one.cfg = cfg;
+  return create_run(dir, Syllabus{{std::move(one)}}, config_text, name, seed);
 }
 
 /// Whether every stage's breeding suits its genotypes (check_breeding) and

@@ -235,7 +235,7 @@ TEST(CatapultJson, FormErrorsNameTheField) {
   EXPECT_EQ(parse_error(with_catapult(
                 R"({"projectile": 2, "release": {"inputs": [{"from": "root", "neuron": 0, "weigth": 1}]}})")),
             "t.json: catapult.release.inputs[0].weigth: unknown field (expected one of from, "
-            "neuron, sensor, muscle, edge, weight), got 1");
+            "neuron, sensor, muscle, edge, weight, gate), got 1");
   EXPECT_EQ(parse_error(with_catapult(R"(2)")), "t.json: catapult: expected an object, got 2");
   EXPECT_EQ(parse_error(with_catapult(R"({"projectile": 2, "projectile": 1})")),
             "t.json: catapult.projectile: field given twice");

@@ -116,7 +116,7 @@ TEST(Syllabus, ErrorsNameTheStageAndTheKey) {
   EXPECT_EQ(staged("[[stage]]\nname = \"a\"\n[[stage]]\nname = \"b\"\nstart = \"worst\"\n"),
             "s.toml: stage 2.start: expected one of random, best, population, got \"worst\"");
   EXPECT_EQ(staged("[[stage]]\nname = \"a\"\nskill = 3\n"),
-            "s.toml: stage 1.skill: unknown stage key (a stage has name, uses, group, start, body and config sections)");
+            "s.toml: stage 1.skill: unknown stage key (a stage has name, uses, group, start, body, encapsulate and config sections)");
   // a stage's config key is checked as the config's own, and named with its stage
   EXPECT_EQ(staged("[[stage]]\nname = \"a\"\n[stage.task]\nsecond = 2\n"),
             "s.toml: stage \"a\": task.second: unknown key (did you mean \"seconds\"?)");
