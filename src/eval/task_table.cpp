@@ -3,6 +3,7 @@
 #include "task/locomotion.h"
 #include "task/river/river_task.h"
 #include "task/throwing.h"
+#include "task/turn.h"
 
 namespace bx {
 
@@ -36,12 +37,33 @@ std::vector<SimField> river_fields() {
   };
 }
 
+// lessin2015's turn in place (skills 2 and 3)
+Result<std::unique_ptr<Task>> make_turn(const CreatureModel& m, const SimConfig& cfg, std::uint64_t) {
+  return std::unique_ptr<Task>(new TurnTask(cfg.turn, cfg.physics.dt, m.n_parts()));
+}
+
+std::vector<SimField> turn_fields() {
+  return {
+      {"turn", "direction", SimField::Choice, 0, 0, {"left", "right"}, [](SimConfig& c) -> void* { return &c.turn.direction; }, "turn: left (counterclockwise seen from above: lessin2015 skill 2) or right (clockwise: skill 3)"},
+      {"turn", "seconds", SimField::Real, 0, 1e6, {}, [](SimConfig& c) -> void* { return &c.turn.seconds; }, "turn: the measured span (s), after the creature settled with its controller off"},
+      {"turn", "drop_height", SimField::Real, 0, 1e3, {}, [](SimConfig& c) -> void* { return &c.turn.drop_height; }, "turn: gap between the lowest part and the ground at the start (m)"},
+      {"turn", "settle_speed", SimField::Real, 0, 1e3, {}, [](SimConfig& c) -> void* { return &c.turn.settle.speed; }, "turn: settled when every part moves less than this times the step length in each step (m/s) ..."},
+      {"turn", "settle_seconds", SimField::Real, 0, 1e4, {}, [](SimConfig& c) -> void* { return &c.turn.settle.seconds; }, "... for this long without a break (s)"},
+      {"turn", "settle_timeout", SimField::Real, 0, 1e4, {}, [](SimConfig& c) -> void* { return &c.turn.settle.timeout; }, "turn: never settled within this (s): fitness 0"},
+      {"turn", "windows", SimField::Int, 1, 1000, {}, [](SimConfig& c) -> void* { return &c.turn.windows; }, "turn: the turn that scores is this many times the least turn (in the direction) of any of this many equal spans of the measured time (1: the whole turn; 2 and more: a twist or a fall turns in one span only)"},
+      {"turn", "travel_scale", SimField::Real, 1e-6, 1e6, {}, [](SimConfig& c) -> void* { return &c.turn.travel_scale; }, "turn: fitness = max(0, turn rate (rad/s)) / (1 + travel / travel_scale), travel the farthest the centre of mass got on the ground from where it was when measuring began (m): the travel that halves the score"},
+      {"turn", "min_level", SimField::Real, 0, 1, {}, [](SimConfig& c) -> void* { return &c.turn.min_level; }, "turn: the heading counts only while the root's x axis, projected on the ground, is at least this long (0.5: within 60 degrees of level); over steeper stretches it is taken up again where the axis comes out, so tipping the root over turns nothing"},
+  };
+}
+
 double& locomotion_seconds(SimConfig& c) { return c.task.seconds; }
 double& throwing_seconds(SimConfig& c) { return c.throwing.seconds; }
 double& river_seconds(SimConfig& c) { return c.river.task.seconds; }
+double& turn_seconds(SimConfig& c) { return c.turn.seconds; }
 double locomotion_drop(const SimConfig& c) { return c.task.drop_height; }
 double throwing_drop(const SimConfig& c) { return c.throwing.drop_height; }
 double river_drop(const SimConfig& c) { return c.river.task.drop_height; }
+double turn_drop(const SimConfig& c) { return c.turn.drop_height; }
 
 // one row per TaskKind, in its order
 const TaskRow kTasks[] = {
@@ -51,6 +73,7 @@ const TaskRow kTasks[] = {
      "throwing.drop_height", nullptr},
     {TaskKind::River, "river", make_river, river_seconds, river_drop, "river.seconds", "river.drop_height",
      river_fields},
+    {TaskKind::Turn, "turn", make_turn, turn_seconds, turn_drop, "turn.seconds", "turn.drop_height", turn_fields},
 };
 
 }  // namespace

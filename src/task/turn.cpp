@@ -1,0 +1,100 @@
+#include "task/turn.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace bx {
+
+namespace {
+
+// the settle-then-measure phases of lessin2015's locomotion, for `def`'s
+// span and settling (the distance it measures is not used)
+LocomotionDef phases_of(const TurnDef& def) {
+  LocomotionDef p;
+  p.seconds = def.seconds;
+  p.drop_height = def.drop_height;
+  p.activation = Activation::Settled;
+  p.settle = def.settle;
+  return p;
+}
+
+// how long the root's x axis is, projected on the ground (1: level, 0: vertical)
+double level_of(const Observation& o) {
+  const Mat3& R = o.part_pose(0).R;
+  return std::hypot(R.m[0][0], R.m[1][0]);
+}
+
+}  // namespace
+
+double heading_step(double from, double to) { return std::remainder(to - from, 2 * kPi); }
+
+TurnTask::TurnTask(const TurnDef& def, double dt, int n_parts)
+    : def_(def), phases_(phases_of(def), dt, n_parts), sign_(def.direction == TurnDirection::Left ? 1 : -1) {}
+
+void TurnTask::begin(const Observation& o) {
+  phases_.begin(o);
+  if (phases_.phase() == Phase::Measure) begin_measure(o);
+}
+
+void TurnTask::begin_measure(const Observation& o) {
+  measuring_ = true;
+  heading_ = heading(o);
+  level_ = level_of(o) >= def_.min_level;
+  turned_ = 0;
+  start_ = o.centre_of_mass();
+  travel_ = 0;
+  t_start_ = o.time();
+  window_ = def_.seconds / std::max(1, def_.windows);
+  marks_.assign(1, 0.0);
+}
+
+void TurnTask::observe(const Observation& o) {
+  const bool was_measuring = phases_.phase() == Phase::Measure;
+  phases_.observe(o);
+  if (!was_measuring) {
+    // the step on which settling ended: measuring begins here
+    if (phases_.phase() == Phase::Measure) begin_measure(o);
+    return;
+  }
+  // the heading counts only from one level enough step to the next (TurnDef::min_level)
+  const double h = heading(o);
+  const bool level = level_of(o) >= def_.min_level;
+  if (level && level_) turned_ += heading_step(heading_, h);
+  heading_ = h;
+  level_ = level;
+  const Vec3 d = o.centre_of_mass() - start_;
+  travel_ = std::max(travel_, std::hypot(d.x, d.y));
+  const double t = o.time();
+  while (static_cast<int>(marks_.size()) <= def_.windows &&
+         t >= t_start_ + static_cast<double>(marks_.size()) * window_ - 1e-9)
+    marks_.push_back(turned_);
+}
+
+double TurnTask::scored_turn() const {
+  if (!measuring_) return 0;
+  if (def_.windows <= 1) return sign_ * turned_;
+  if (static_cast<int>(marks_.size()) < def_.windows + 1) return 0;
+  double least = sign_ * (marks_[1] - marks_[0]);
+  for (std::size_t i = 2; i < marks_.size(); ++i) least = std::min(least, sign_ * (marks_[i] - marks_[i - 1]));
+  return def_.windows * least;
+}
+
+double TurnTask::turn_rate() const {
+  const double s = measured_seconds();
+  return s > 0 ? scored_turn() / s : 0;
+}
+
+double TurnTask::fitness() const {
+  return std::max(0.0, turn_rate()) / (1 + travel_ / def_.travel_scale);
+}
+
+TaskScore TurnTask::score(const CreatureModel&) const {
+  return {fitness(),
+          travel_,
+          {{"turn_rate", turn_rate()},
+           {"turned", sign_ * turned_},
+           {"travel", travel_},
+           {"muscle_work", phases_.measured_work()}}};
+}
+
+}  // namespace bx
