@@ -27,6 +27,7 @@
 #include "cli/creature.h"
 #include "core/files.h"
 #include "eval/evaluate.h"
+#include "genome/encapsulate.h"
 #include "io/config.h"
 #include "io/fitness_plot.h"
 #include "io/html_view.h"
@@ -143,8 +144,24 @@ int cmd_show(WatchArgs a) {
   if (Status s = make_parent_dir("--out", a.out); !s) return fail(s.error());
   auto w = simulate(*c);
   if (!w) return fail(w.error());
-  if (Status s = save_view_html(a.out, {w->entry}); !s) return fail(s.error());
+  std::vector<LabelledReplay> entries{w->entry};
+  // an ESP creature (lessin2015 IV-B): each encapsulated skill alone, too
+  // (brain.skill), unless one is chosen already; the page's picker switches
+  const std::vector<std::string> skills =
+      c->graph_genome() && c->cfg.sim.develop.skill.empty() ? skills_of(*c->graph_genome()) : std::vector<std::string>{};
+  for (const std::string& skill : skills) {
+    Subject alone = *c;
+    alone.cfg.sim.develop.skill = skill;
+    auto ws = simulate(alone);
+    if (!ws) return fail(ws.error());
+    ws->entry.label += ", skill \"" + skill + "\" alone";
+    entries.push_back(std::move(ws->entry));
+  }
+  if (!skills.empty()) entries.front().label += ", its brain free";
+  if (Status s = save_view_html(a.out, entries); !s) return fail(s.error());
   print_result(*c, w->result);
+  if (!skills.empty())
+    std::printf("%zu skill(s) each alone beside it (brain.skill): pick them on the page\n", skills.size());
   std::printf("viewer written to %s\n", a.out.c_str());
   return 0;
 }
