@@ -13,6 +13,7 @@
 #include "task/locomotion.h"
 #include "task/river/river_def.h"
 #include "task/throwing.h"
+#include "task/strike.h"
 #include "task/turn.h"
 
 namespace bx {
@@ -23,6 +24,7 @@ enum class TaskKind {
   Throwing,    ///< SimConfig::throwing (catapults, chaumont2007 section 4)
   River,       ///< SimConfig::river's task (the river crossing; its quadruped only)
   Turn,        ///< SimConfig::turn (lessin2015 V, skills 2 and 3: turning in place)
+  Strike,      ///< SimConfig::strike (lessin2015 V, skill 6: an impact on the ground)
 };
 
 /// What a genotype develops into: a body and its controller (eval/creature.h,
@@ -52,6 +54,7 @@ struct SimConfig {
   ThrowingDef throwing;
   RiverDef river;  ///< the river crossing's creature and task
   TurnDef turn;    ///< the turn task (task.kind = "turn": the [turn] keys)
+  StrikeDef strike;  ///< the strike task (task.kind = "strike": the [strike] keys)
   /// The pre-evolved CTRNN motif every copy in the river crossing's pattern
   /// generator shares (the [motif] keys), and the file it came from.
   Motif motif = found_motif();

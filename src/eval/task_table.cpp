@@ -3,6 +3,7 @@
 #include "task/locomotion.h"
 #include "task/river/river_task.h"
 #include "task/throwing.h"
+#include "task/strike.h"
 #include "task/turn.h"
 
 namespace bx {
@@ -56,7 +57,26 @@ std::vector<SimField> turn_fields() {
   };
 }
 
+// lessin2015's strike (skill 6)
+Result<std::unique_ptr<Task>> make_strike(const CreatureModel& m, const SimConfig& cfg, std::uint64_t) {
+  return std::unique_ptr<Task>(new StrikeTask(cfg.strike, cfg.physics.dt, m.n_parts()));
+}
+
+std::vector<SimField> strike_fields() {
+  return {
+      {"strike", "seconds", SimField::Real, 0, 1e6, {}, [](SimConfig& c) -> void* { return &c.strike.seconds; }, "strike: the measured span (s), after the creature settled with its controller off"},
+      {"strike", "drop_height", SimField::Real, 0, 1e3, {}, [](SimConfig& c) -> void* { return &c.strike.drop_height; }, "strike: gap between the lowest part and the ground at the start (m)"},
+      {"strike", "settle_speed", SimField::Real, 0, 1e3, {}, [](SimConfig& c) -> void* { return &c.strike.settle.speed; }, "strike: settled when every part moves less than this times the step length in each step (m/s) ..."},
+      {"strike", "settle_seconds", SimField::Real, 0, 1e4, {}, [](SimConfig& c) -> void* { return &c.strike.settle.seconds; }, "... for this long without a break (s)"},
+      {"strike", "settle_timeout", SimField::Real, 0, 1e4, {}, [](SimConfig& c) -> void* { return &c.strike.settle.timeout; }, "strike: never settled within this (s): fitness 0"},
+      {"strike", "window", SimField::Real, 1e-4, 10, {}, [](SimConfig& c) -> void* { return &c.strike.window; }, "strike: an impact is the largest rise, within a span of this long (s), from the centre of mass's mean vertical velocity over its first half to that over its second: the speed the ground takes out of the body at once; fitness = the peak impact (m/s)"},
+      {"strike", "threshold", SimField::Real, 0, 1e3, {}, [](SimConfig& c) -> void* { return &c.strike.threshold; }, "strike: the impact (m/s) that counts as a strike (the first one reaching it: metric strike_time)"},
+  };
+}
+
 double& locomotion_seconds(SimConfig& c) { return c.task.seconds; }
+double& strike_seconds(SimConfig& c) { return c.strike.seconds; }
+double strike_drop(const SimConfig& c) { return c.strike.drop_height; }
 double& throwing_seconds(SimConfig& c) { return c.throwing.seconds; }
 double& river_seconds(SimConfig& c) { return c.river.task.seconds; }
 double& turn_seconds(SimConfig& c) { return c.turn.seconds; }
@@ -74,6 +94,8 @@ const TaskRow kTasks[] = {
     {TaskKind::River, "river", make_river, river_seconds, river_drop, "river.seconds", "river.drop_height",
      river_fields},
     {TaskKind::Turn, "turn", make_turn, turn_seconds, turn_drop, "turn.seconds", "turn.drop_height", turn_fields},
+    {TaskKind::Strike, "strike", make_strike, strike_seconds, strike_drop, "strike.seconds", "strike.drop_height",
+     strike_fields},
 };
 
 }  // namespace
