@@ -95,7 +95,7 @@ struct Sample {
 // seed's turn about the vertical and lift (seed_draw)
 Pose placement_of(const CreatureModel& m, const SimConfig& cfg, std::uint64_t seed) {
   const SeedDraw d = seed_draw(cfg, seed);
-  auto task = make_task(m, cfg, seed);
+  auto task = make_task(m, cfg, seed, 0);
   if (!task) {
     std::fprintf(stderr, "bench_river: %s\n", task.error().c_str());
     std::exit(2);

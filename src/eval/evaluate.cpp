@@ -87,8 +87,10 @@ void report(const CreatureModel& m, EvalState& s, EvalResult& res, const SceneRe
   res.metrics = std::move(score.metrics);
 }
 
+// One trial: trial `trial` (0-based) of an evaluation, under its physics seed
+// `seed` (its task made for that trial: TaskRow::make).
 EvalResult evaluate_once(const CreatureModel& m, const ControllerModel& controller, const SimConfig& given,
-                         std::uint64_t seed, Replay* replay) {
+                         std::uint64_t seed, int trial, Replay* replay) {
   EvalResult res;
   res.warnings = m.warnings;
   reseed_physics(seed);
@@ -101,7 +103,7 @@ EvalResult evaluate_once(const CreatureModel& m, const ControllerModel& controll
     drawn->motor.response_time = d.response_time;
   }
   const SimConfig& cfg = drawn ? *drawn : given;
-  auto task = make_task(m, cfg, seed);
+  auto task = make_task(m, cfg, seed, trial);
   if (!task) {
     res.note = task.error();
     return res;
@@ -239,14 +241,14 @@ EvalResult evaluate(const CreatureModel& m, const SimConfig& cfg, std::uint64_t 
 
 EvalResult evaluate(const CreatureModel& m, const ControllerModel& controller, const SimConfig& cfg,
                     std::uint64_t seed, Replay* replay) {
-  EvalResult res = evaluate_once(m, controller, cfg, seed, replay);
+  EvalResult res = evaluate_once(m, controller, cfg, seed, 0, replay);
   if (cfg.trials <= 1) return res;
   // the first trial is the one a replay shows and the one distance, release
   // and target miss describe; the others only score
   res.trial_fitness = {res.fitness};
   double fitness = res.fitness, least = res.fitness;
   for (int k = 1; k < cfg.trials; ++k) {
-    EvalResult t = evaluate_once(m, controller, cfg, trial_seed(seed, k), nullptr);
+    EvalResult t = evaluate_once(m, controller, cfg, trial_seed(seed, k), k, nullptr);
     res.trial_fitness.push_back(t.fitness);
     fitness += t.fitness;
     least = std::min(least, t.fitness);

@@ -87,7 +87,9 @@ struct EvalResult {
 /// generator from `seed` first, so equal inputs give bit-identical results.
 /// When `replay` is given, frames are appended to it.
 ///
-/// With cfg.trials = K > 1 it evaluates K times, under trial_seed(seed, 0..K-1):
+/// With cfg.trials = K > 1 it evaluates K times, under trial_seed(seed, 0..K-1),
+/// trial k's task made for trial k (make_task: a task may lay out each
+/// trial its own way):
 /// fitness is the trials' mean (each in trial_fitness), steps and
 /// brain_steps their sums, and a numerical explosion in any trial fails the
 /// whole evaluation; the rest (distance, metrics, markers, seconds, the

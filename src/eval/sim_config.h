@@ -10,6 +10,7 @@
 #include "develop/develop.h"
 #include "genome/genome.h"
 #include "physics/physics_def.h"
+#include "task/light.h"
 #include "task/locomotion.h"
 #include "task/river/river_def.h"
 #include "task/throwing.h"
@@ -25,6 +26,7 @@ enum class TaskKind {
   River,       ///< SimConfig::river's task (the river crossing; its quadruped only)
   Turn,        ///< SimConfig::turn (lessin2015 V, skills 2 and 3: turning in place)
   Strike,      ///< SimConfig::strike (lessin2015 V, skill 6: an impact on the ground)
+  Light,       ///< SimConfig::light (lessin2015 V, skills 4, 5, 8 and 9: a point light's tasks)
 };
 
 /// What a genotype develops into: a body and its controller (eval/creature.h,
@@ -55,6 +57,7 @@ struct SimConfig {
   RiverDef river;  ///< the river crossing's creature and task
   TurnDef turn;    ///< the turn task (task.kind = "turn": the [turn] keys)
   StrikeDef strike;  ///< the strike task (task.kind = "strike": the [strike] keys)
+  LightDef light;  ///< the light tasks (task.kind = "light": the [light] keys)
   /// The pre-evolved CTRNN motif every copy in the river crossing's pattern
   /// generator shares (the [motif] keys), and the file it came from.
   Motif motif = found_motif();

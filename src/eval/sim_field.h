@@ -21,8 +21,9 @@ struct SimField {
     Choice,  ///< an enum (int-sized) named by `choices`
     Triple,  ///< std::array<double, 3>
     Text,    ///< std::string, one line without control characters
+    Reals,   ///< std::vector<double>: an array of any length
   } kind;
-  double lo, hi;                          ///< inclusive range (Real, Int, each of a Triple's)
+  double lo, hi;                          ///< inclusive range (Real, Int, each of a Triple's or Reals')
   std::vector<std::string_view> choices;  ///< Choice: names, by enum value
   std::function<void*(SimConfig&)> at;    ///< the field's address
   std::string_view doc;                   ///< one line for docs/config.md

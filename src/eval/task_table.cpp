@@ -1,5 +1,8 @@
 #include "eval/task_table.h"
 
+#include <string>
+
+#include "task/light.h"
 #include "task/locomotion.h"
 #include "task/river/river_task.h"
 #include "task/throwing.h"
@@ -10,18 +13,18 @@ namespace bx {
 
 namespace {
 
-Result<std::unique_ptr<Task>> make_locomotion(const CreatureModel& m, const SimConfig& cfg, std::uint64_t) {
+Result<std::unique_ptr<Task>> make_locomotion(const CreatureModel& m, const SimConfig& cfg, std::uint64_t, int) {
   return std::unique_ptr<Task>(new LocomotionTask(cfg.task, cfg.physics.dt, m.n_parts(), cfg.physics.gravity));
 }
 
-Result<std::unique_ptr<Task>> make_throwing(const CreatureModel& m, const SimConfig& cfg, std::uint64_t) {
+Result<std::unique_ptr<Task>> make_throwing(const CreatureModel& m, const SimConfig& cfg, std::uint64_t, int) {
   if (m.projectile < 0) return Error{"not a catapult: the throwing task needs a genome with a catapult block"};
   return std::unique_ptr<Task>(new ThrowingTask(cfg.throwing, cfg.physics.dt, m.projectile, m.release_joint));
 }
 
 // the river crossing: its quadruped's torso is the agent, its sensor points
 // the controller's, and a cell is as wide as the body's unit
-Result<std::unique_ptr<Task>> make_river(const CreatureModel& m, const SimConfig& cfg, std::uint64_t seed) {
+Result<std::unique_ptr<Task>> make_river(const CreatureModel& m, const SimConfig& cfg, std::uint64_t seed, int) {
   if (cfg.creature != CreatureKind::River)
     return Error{"the river crossing's task needs its quadruped: genotype.kind = \"river\""};
   RiverTaskDef def = cfg.river.task;
@@ -39,7 +42,7 @@ std::vector<SimField> river_fields() {
 }
 
 // lessin2015's turn in place (skills 2 and 3)
-Result<std::unique_ptr<Task>> make_turn(const CreatureModel& m, const SimConfig& cfg, std::uint64_t) {
+Result<std::unique_ptr<Task>> make_turn(const CreatureModel& m, const SimConfig& cfg, std::uint64_t, int) {
   return std::unique_ptr<Task>(new TurnTask(cfg.turn, cfg.physics.dt, m.n_parts()));
 }
 
@@ -58,7 +61,7 @@ std::vector<SimField> turn_fields() {
 }
 
 // lessin2015's strike (skill 6)
-Result<std::unique_ptr<Task>> make_strike(const CreatureModel& m, const SimConfig& cfg, std::uint64_t) {
+Result<std::unique_ptr<Task>> make_strike(const CreatureModel& m, const SimConfig& cfg, std::uint64_t, int) {
   return std::unique_ptr<Task>(new StrikeTask(cfg.strike, cfg.physics.dt, m.n_parts()));
 }
 
@@ -74,6 +77,44 @@ std::vector<SimField> strike_fields() {
   };
 }
 
+// lessin2015's light tasks (skills 4, 5, 8 and 9): trial k's light at heading k
+Result<std::unique_ptr<Task>> make_light(const CreatureModel& m, const SimConfig& cfg, std::uint64_t, int trial) {
+  return std::unique_ptr<Task>(new LightTask(cfg.light, cfg.physics.dt, m.n_parts(), trial));
+}
+
+std::vector<SimField> light_fields() {
+  return {
+      {"light", "goal", SimField::Choice, 0, 0, {"face", "approach", "face_away", "retreat"}, [](SimConfig& c) -> void* { return &c.light.goal; }, "light: face (turn to face it: lessin2015 skill 4, TURN TO LIGHT), approach (get to it: skill 5, MOVE TO LIGHT), face_away (skill 8, TURN FROM LIGHT) or retreat (get away: skill 9, RETREAT)"},
+      {"light", "headings", SimField::Reals, -360, 360, {}, [](SimConfig& c) -> void* { return &c.light.headings; }, "light: its bearing from the creature's forward (its root's x axis on the ground) when measuring begins (degrees, counterclockwise positive), trial k taking the (k mod n)-th of these n: task.trials must be a whole multiple of n"},
+      {"light", "distance", SimField::Real, 0, 1e6, {}, [](SimConfig& c) -> void* { return &c.light.distance; }, "light: placed this far on the ground from the centre of mass (m)"},
+      {"light", "height", SimField::Real, 0, 1e6, {}, [](SimConfig& c) -> void* { return &c.light.height; }, "light: at this height above the ground (m)"},
+      {"light", "strength", SimField::Real, 0, 1e6, {}, [](SimConfig& c) -> void* { return &c.light.strength; }, "light: a photoreceptor facing it from d metres reads strength / (1 + (d / range)^2) ..."},
+      {"light", "range", SimField::Real, 1e-6, 1e6, {}, [](SimConfig& c) -> void* { return &c.light.range; }, "... (m: where its reading has halved)"},
+      {"light", "seconds", SimField::Real, 0, 1e6, {}, [](SimConfig& c) -> void* { return &c.light.seconds; }, "light: the measured span (s), after the creature settled with its controller off and in the dark"},
+      {"light", "drop_height", SimField::Real, 0, 1e3, {}, [](SimConfig& c) -> void* { return &c.light.drop_height; }, "light: gap between the lowest part and the ground at the start (m)"},
+      {"light", "settle_speed", SimField::Real, 0, 1e3, {}, [](SimConfig& c) -> void* { return &c.light.settle.speed; }, "light: settled when every part moves less than this times the step length in each step (m/s) ..."},
+      {"light", "settle_seconds", SimField::Real, 0, 1e4, {}, [](SimConfig& c) -> void* { return &c.light.settle.seconds; }, "... for this long without a break (s)"},
+      {"light", "settle_timeout", SimField::Real, 0, 1e4, {}, [](SimConfig& c) -> void* { return &c.light.settle.timeout; }, "light: never settled within this (s): fitness 0"},
+      {"light", "score_from", SimField::Real, 0, 1, {}, [](SimConfig& c) -> void* { return &c.light.score_from; }, "light, face and face_away: the fitness is the mean, over the measured steps from this share of the span on, of (1 + cos a) / 2 (face_away: (1 - cos a) / 2), a the angle between the heading and the direction to the light"},
+      {"light", "min_level", SimField::Real, 0, 1, {}, [](SimConfig& c) -> void* { return &c.light.min_level; }, "light: a step counts as facing anywhere only while the root's x axis, projected on the ground, is at least this long (0.5: within 60 degrees of level); else it counts 0"},
+      {"light", "early_seconds", SimField::Real, 0, 1e6, {}, [](SimConfig& c) -> void* { return &c.light.early_seconds; }, "light, face_away and retreat: a wrong-direction start is one within this long after measuring begins (s) ..."},
+      {"light", "wrong_turn", SimField::Real, 0, 360, {}, [](SimConfig& c) -> void* { return &c.light.wrong_turn; }, "... face_away: the heading turning more than this (degrees) towards the light's side (none for a light dead ahead or behind) ..."},
+      {"light", "wrong_move", SimField::Real, 0, 1e6, {}, [](SimConfig& c) -> void* { return &c.light.wrong_move; }, "... retreat: the centre of mass closing more than this (m) on the light ..."},
+      {"light", "wrong_factor", SimField::Real, 0, 1, {}, [](SimConfig& c) -> void* { return &c.light.wrong_factor; }, "... multiplies the trial's fitness by this"},
+  };
+}
+
+// every heading its trial: as many trials as headings, or a whole multiple
+Status light_check(const SimConfig& c) {
+  const std::size_t n = c.light.headings.size();
+  if (n == 0) return Error{"light.headings: needs at least one heading, got []"};
+  if (c.trials % static_cast<int>(n) != 0)
+    return Error{"task.trials: the light task runs trial k with the (k mod n)-th of light.headings' n = " +
+                 std::to_string(n) + " headings, so task.trials must be a whole multiple of " + std::to_string(n) +
+                 ", got " + std::to_string(c.trials)};
+  return Ok{};
+}
+
 double& locomotion_seconds(SimConfig& c) { return c.task.seconds; }
 double& strike_seconds(SimConfig& c) { return c.strike.seconds; }
 double strike_drop(const SimConfig& c) { return c.strike.drop_height; }
@@ -84,6 +125,8 @@ double locomotion_drop(const SimConfig& c) { return c.task.drop_height; }
 double throwing_drop(const SimConfig& c) { return c.throwing.drop_height; }
 double river_drop(const SimConfig& c) { return c.river.task.drop_height; }
 double turn_drop(const SimConfig& c) { return c.turn.drop_height; }
+double& light_seconds(SimConfig& c) { return c.light.seconds; }
+double light_drop(const SimConfig& c) { return c.light.drop_height; }
 
 // one row per TaskKind, in its order
 const TaskRow kTasks[] = {
@@ -96,6 +139,8 @@ const TaskRow kTasks[] = {
     {TaskKind::Turn, "turn", make_turn, turn_seconds, turn_drop, "turn.seconds", "turn.drop_height", turn_fields},
     {TaskKind::Strike, "strike", make_strike, strike_seconds, strike_drop, "strike.seconds", "strike.drop_height",
      strike_fields},
+    {TaskKind::Light, "light", make_light, light_seconds, light_drop, "light.seconds", "light.drop_height", light_fields,
+     light_check},
 };
 
 }  // namespace
@@ -116,8 +161,13 @@ std::vector<SimField> task_fields() {
   return out;
 }
 
-Result<std::unique_ptr<Task>> make_task(const CreatureModel& m, const SimConfig& cfg, std::uint64_t seed) {
-  return task_row(cfg.task_kind).make(m, cfg, seed);
+Result<std::unique_ptr<Task>> make_task(const CreatureModel& m, const SimConfig& cfg, std::uint64_t seed, int trial) {
+  return task_row(cfg.task_kind).make(m, cfg, seed, trial);
+}
+
+Status check_task_keys(const SimConfig& cfg) {
+  const TaskRow& row = task_row(cfg.task_kind);
+  return row.check ? row.check(cfg) : Status(Ok{});
 }
 
 }  // namespace bx

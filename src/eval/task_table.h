@@ -22,15 +22,19 @@ namespace bx {
 struct TaskRow {
   TaskKind kind;
   std::string_view name;  ///< its task.kind in configs
-  /// The task of one trial, whose physics seed is `seed` (a task may draw
-  /// its layout from it), or why this creature cannot have it.
-  Result<std::unique_ptr<Task>> (*make)(const CreatureModel&, const SimConfig&, std::uint64_t seed);
+  /// The task of trial `trial` (0-based, as evaluate() counts them: a task
+  /// may lay out each trial its own way), whose physics seed is `seed` (a
+  /// task may draw its layout from it), or why this creature cannot have it.
+  Result<std::unique_ptr<Task>> (*make)(const CreatureModel&, const SimConfig&, std::uint64_t seed, int trial);
   /// Its evaluation's length (s) and drop height (m) in a config, and their keys.
   double& (*seconds)(SimConfig&);
   double (*drop_height)(const SimConfig&);
   std::string_view seconds_key, drop_height_key;
   /// The config keys it brings (none: its keys are the reader's own).
   std::vector<SimField> (*fields)();
+  /// Its rules between keys, checked by the config reader when it is the
+  /// config's task (none: no rules), or which keys disagree and how.
+  Status (*check)(const SimConfig&) = nullptr;
 };
 
 /// The row of a kind.
@@ -40,8 +44,12 @@ std::vector<std::string_view> task_kind_names();
 /// Every row's own config keys, in the table's order.
 std::vector<SimField> task_fields();
 
-/// The task of cfg.task_kind for this creature's trial of physics seed
-/// `seed`, or why it cannot have it (throwing needs a catapult).
-Result<std::unique_ptr<Task>> make_task(const CreatureModel& m, const SimConfig& cfg, std::uint64_t seed);
+/// The task of cfg.task_kind for this creature's trial `trial` (0-based) of
+/// physics seed `seed`, or why it cannot have it (throwing needs a catapult).
+Result<std::unique_ptr<Task>> make_task(const CreatureModel& m, const SimConfig& cfg, std::uint64_t seed,
+                                        int trial);
+
+/// The config's task's rules between its keys (TaskRow::check): Ok, or why not.
+Status check_task_keys(const SimConfig& cfg);
 
 }  // namespace bx

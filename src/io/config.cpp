@@ -24,8 +24,9 @@ namespace {
 struct Field {
   std::string_view section;
   std::string_view key;
-  enum Kind { Real, Int, Long, Bool, Choice, Vec, Triple, Text } kind;  // Triple: std::array<double, 3>; Text: std::string
-  double lo, hi;                                  // inclusive range (Real, Int, each of Vec's)
+  // Triple: std::array<double, 3>; Text: std::string; Reals: std::vector<double>
+  enum Kind { Real, Int, Long, Bool, Choice, Vec, Triple, Text, Reals } kind;
+  double lo, hi;                                  // inclusive range (Real, Int, each of Vec's or Reals')
   std::vector<std::string_view> choices;          // Choice: names, by enum value
   std::function<void*(RunConfig&)> at;            // the field's address
   std::string_view doc;                           // one line for docs/config.md
@@ -51,7 +52,8 @@ std::vector<Field> with_table_fields(std::vector<Field> own) {
   std::vector<std::string_view> sections;
   for (const SimField& f : table)
     if (std::find(sections.begin(), sections.end(), f.section) == sections.end()) sections.push_back(f.section);
-  static constexpr Field::Kind kinds[] = {Field::Real, Field::Int, Field::Choice, Field::Triple, Field::Text};
+  static constexpr Field::Kind kinds[] = {Field::Real, Field::Int, Field::Choice, Field::Triple, Field::Text,
+                                          Field::Reals};
   for (std::string_view sec : sections)
     for (const SimField& f : table)
       if (f.section == sec)
@@ -108,7 +110,7 @@ const std::vector<Field>& fields() {
       {"develop", "slide_range", Field::Real, 0, 100, {}, [](RunConfig& c) -> void* { return &c.sim.develop.slide_range; }, "lessin2015 (joined parts collide): a prismatic or cylindrical joint without limits in its gene slides at most this share of its child's half-thickness either way (collisions stop only a slide into the parent)"},
       {"task", "seconds", Field::Real, 0, 1e6, {}, [](RunConfig& c) -> void* { return &c.sim.task.seconds; }, "evaluation length (s); with the chaumont2007 sequence, the measured phase"},
       {"task", "drop_height", Field::Real, 0, 1e3, {}, [](RunConfig& c) -> void* { return &c.sim.task.drop_height; }, "gap between the lowest part and the ground at the start (m)"},
-      {"task", "metric", Field::Choice, 0, 0, {"planar", "x"}, [](RunConfig& c) -> void* { return &c.sim.task.metric; }, "planar: horizontal distance of the centre of mass; x: displacement along +x"},
+      {"task", "metric", Field::Choice, 0, 0, {"planar", "x", "forward"}, [](RunConfig& c) -> void* { return &c.sim.task.metric; }, "planar: horizontal distance of the centre of mass; x: displacement along +x; forward: displacement along the creature's heading (its root's x axis on the ground) when measuring began"},
       {"task", "skip_fraction", Field::Real, 0, 1, {}, [](RunConfig& c) -> void* { return &c.sim.task.skip_fraction; }, "distance counts from this fraction of the evaluation on"},
       {"task", "fitness", Field::Choice, 0, 0, {"distance", "speed", "chaumont2007", "lessin2015"}, [](RunConfig& c) -> void* { return &c.sim.task.fitness; }, "distance, speed (distance / measured time), chaumont2007 (eq. 1) or lessin2015 (V, skill 1: speed_step (floor(speed / speed_step) + efficiency) / max_speed)"},
       {"task", "activation", Field::Choice, 0, 0, {"always", "chaumont2007", "settled"}, [](RunConfig& c) -> void* { return &c.sim.task.activation; }, "always, chaumont2007 (settle, 1 s burst, settle, measure) or settled (settle with the controller off, then measure)"},
@@ -231,6 +233,13 @@ std::string num(double v) {
   return std::string(buf, r.ptr);
 }
 
+// an array of numbers as TOML: [a, b, c]
+std::string reals_text(const std::vector<double>& v) {
+  std::string s = "[";
+  for (std::size_t i = 0; i < v.size(); ++i) s.append(i ? ", " : "").append(num(v[i]));
+  return s + "]";
+}
+
 std::string vec_text(Vec3 v) {
   // appended piecewise: GCC 12 at -O3 warns falsely (-Wrestrict) on "[" + string&&
   std::string s = "[";
@@ -285,6 +294,21 @@ Status set_field(const Field& f, RunConfig& cfg, const toml::node& n, const std:
         *static_cast<Vec3*>(p) = v;
       else
         *static_cast<std::array<double, 3>*>(p) = {v.x, v.y, v.z};
+      return Ok{};
+    }
+    case Field::Reals: {
+      const toml::array* a = n.as_array();
+      if (!a) return bad("expected an array of numbers");
+      std::vector<double> v;
+      for (const toml::node& e : *a) {
+        std::optional<double> x = e.is_integer() ? std::optional<double>(static_cast<double>(*e.value<std::int64_t>()))
+                                                 : e.value<double>();
+        if (!e.is_number() || !x) return bad("expected an array of numbers");
+        if (!std::isfinite(*x) || *x < f.lo || *x > f.hi)
+          return bad("each out of range [" + num(f.lo) + ", " + num(f.hi) + "]");
+        v.push_back(*x);
+      }
+      *static_cast<std::vector<double>*>(p) = std::move(v);
       return Ok{};
     }
     case Field::Text: {
@@ -482,6 +506,8 @@ Result<RunConfig> read_run_config(std::vector<ConfigLayer> layers, const std::ve
   for (const CreatureKindRow& row : creature_kind_rows())
     if (row.check)
       if (Status s = row.check(cfg.sim); !s) return Error{source + ": " + s.error()};
+  // the task's own rules between its keys
+  if (Status s = check_task_keys(cfg.sim); !s) return Error{source + ": " + s.error()};
   // catapults are chaumont2007's, and a throwing run needs them
   if (cfg.operators.catapult.enabled && cfg.dialect != Dialect::Chaumont2007)
     return Error{std::string(source) + ": catapult.enabled: catapults need genome.dialect = \"chaumont2007\", got \"" +
@@ -545,6 +571,7 @@ std::string config_to_toml(const RunConfig& cfg_in, bool sim_only) {
       case Field::Vec: ss << vec_text(*static_cast<Vec3*>(p)); break;
       case Field::Triple: ss << vec_text(triple(p)); break;
       case Field::Text: ss << toml_quote(*static_cast<std::string*>(p)); break;
+      case Field::Reals: ss << reals_text(*static_cast<std::vector<double>*>(p)); break;
     }
     ss << "\n";
   }
@@ -570,6 +597,7 @@ std::string config_reference_markdown() {
         case Field::Vec: ss << " " << vec_text(*static_cast<Vec3*>(p)) << " |"; break;
         case Field::Triple: ss << " " << vec_text(triple(p)) << " |"; break;
         case Field::Text: ss << " " << toml_quote(*static_cast<std::string*>(p)) << " |"; break;
+        case Field::Reals: ss << " " << reals_text(*static_cast<std::vector<double>*>(p)) << " |"; break;
       }
     }
     ss << " " << f.doc << " |\n";

@@ -35,11 +35,13 @@ const std::vector<Vec3>& LocomotionTask::parts_of(const Observation& o) {
 
 void LocomotionTask::begin(const Observation& o) {
   work_ = o.muscle_work();
+  if (def_.metric == DistanceMetric::Forward) heading_ = heading(o);
   start(o.centre_of_mass(), parts_of(o));
 }
 
 void LocomotionTask::observe(const Observation& o) {
   work_ = o.muscle_work();
+  if (def_.metric == DistanceMetric::Forward) heading_ = heading(o);
   observe(o.time(), o.centre_of_mass(), parts_of(o));
 }
 
@@ -54,6 +56,7 @@ void LocomotionTask::begin_measure(double t, Vec3 com) {
   start_ = com;
   t_start_ = t;
   work_start_ = work_;
+  forward_ = {std::cos(heading_), std::sin(heading_), 0};
   const double end = def_.activation == Activation::Always ? def_.seconds : t + def_.seconds;
   window_ = (end - t) / std::max(1, def_.windows);
   marks_.assign(1, com);
@@ -109,7 +112,12 @@ void LocomotionTask::observe(double t, Vec3 com, const std::vector<Vec3>& parts)
 
 double LocomotionTask::displacement(Vec3 from, Vec3 to) const {
   Vec3 d = to - from;
-  return def_.metric == DistanceMetric::AlongX ? d.x : std::hypot(d.x, d.y);
+  switch (def_.metric) {
+    case DistanceMetric::Planar: break;
+    case DistanceMetric::AlongX: return d.x;
+    case DistanceMetric::Forward: return d.x * forward_.x + d.y * forward_.y;
+  }
+  return std::hypot(d.x, d.y);
 }
 
 double LocomotionTask::distance() const { return measured_ ? displacement(start_, last_) : 0; }

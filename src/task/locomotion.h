@@ -16,6 +16,10 @@ struct CreatureModel;
 enum class DistanceMetric {
   Planar,  ///< horizontal distance (x, y) of the centre of mass
   AlongX,  ///< signed displacement along +x (miconi2006 5.2)
+  /// signed displacement along the creature's forward when measuring began:
+  /// its heading (task.h's heading(), the root's x axis on the ground), the
+  /// forward lessin2015's light tasks aim (task/light.h)
+  Forward,
 };
 
 /// What the fitness is made of.
@@ -91,6 +95,8 @@ class LocomotionTask : public Task {
   Phase phase() const { return phase_; }
 
   /// Call at the start with the centre of mass and every part's position.
+  /// (These two take no heading: with DistanceMetric::Forward, forward is
+  /// the last heading the Observation overrides read, +x if none did.)
   void start(Vec3 com, const std::vector<Vec3>& parts);
   /// Call after every physics step.
   void observe(double t, Vec3 com, const std::vector<Vec3>& parts);
@@ -125,6 +131,8 @@ class LocomotionTask : public Task {
   Phase phase_ = Phase::Measure;
   bool measured_ = false;
   Vec3 start_, last_;
+  double heading_ = 0;        // the root's heading at the last observation (DistanceMetric::Forward)
+  Vec3 forward_{1, 0, 0};     // the unit forward on the ground when measuring began (DistanceMetric::Forward)
   std::vector<Vec3> marks_;  // the centre of mass where each window began (and the last ended)
   double window_ = 0;        // s: each window's length
   double t_ = 0, t_start_ = 0, phase_start_ = 0;

@@ -13,6 +13,13 @@ double heading(const Observation& o) {
   return std::atan2(y, x);
 }
 
+double root_level(const Observation& o) {
+  const Mat3& R = o.part_pose(0).R;
+  return std::hypot(R.m[0][0], R.m[1][0]);
+}
+
+double heading_step(double from, double to) { return std::remainder(to - from, 2 * kPi); }
+
 void part_positions(const Observation& o, std::vector<Vec3>& out) {
   out.resize(static_cast<std::size_t>(o.n_parts()));
   for (std::size_t i = 0; i < out.size(); ++i) out[i] = o.part_pose(static_cast<int>(i)).p;

@@ -40,6 +40,15 @@ class Observation {
 /// part's x axis projected onto the ground; 0 when that axis is vertical.
 double heading(const Observation& o);
 
+/// How level the root is: the length of its x axis projected onto the
+/// ground (1: level, 0: vertical). A heading means something only while
+/// this is not small (TurnDef::min_level, LightDef::min_level).
+double root_level(const Observation& o);
+
+/// The heading change (rad) from `from` to `to`, taken the short way round:
+/// in [-pi, pi] (unwrapping a heading across +-pi step by step).
+double heading_step(double from, double to);
+
 /// Every part's position (part i at out[i]), from an observation.
 void part_positions(const Observation& o, std::vector<Vec3>& out);
 

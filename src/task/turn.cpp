@@ -18,15 +18,7 @@ LocomotionDef phases_of(const TurnDef& def) {
   return p;
 }
 
-// how long the root's x axis is, projected on the ground (1: level, 0: vertical)
-double level_of(const Observation& o) {
-  const Mat3& R = o.part_pose(0).R;
-  return std::hypot(R.m[0][0], R.m[1][0]);
-}
-
 }  // namespace
-
-double heading_step(double from, double to) { return std::remainder(to - from, 2 * kPi); }
 
 TurnTask::TurnTask(const TurnDef& def, double dt, int n_parts)
     : def_(def), phases_(phases_of(def), dt, n_parts), sign_(def.direction == TurnDirection::Left ? 1 : -1) {}
@@ -39,7 +31,7 @@ void TurnTask::begin(const Observation& o) {
 void TurnTask::begin_measure(const Observation& o) {
   measuring_ = true;
   heading_ = heading(o);
-  level_ = level_of(o) >= def_.min_level;
+  level_ = root_level(o) >= def_.min_level;
   turned_ = 0;
   start_ = o.centre_of_mass();
   travel_ = 0;
@@ -58,7 +50,7 @@ void TurnTask::observe(const Observation& o) {
   }
   // the heading counts only from one level enough step to the next (TurnDef::min_level)
   const double h = heading(o);
-  const bool level = level_of(o) >= def_.min_level;
+  const bool level = root_level(o) >= def_.min_level;
   if (level && level_) turned_ += heading_step(heading_, h);
   heading_ = h;
   level_ = level;

@@ -64,10 +64,6 @@ struct TurnDef {
   friend bool operator==(const TurnDef&, const TurnDef&) = default;
 };
 
-/// The heading change (rad) from `from` to `to`, taken the short way round:
-/// in [-pi, pi] (unwrapping a heading across +-pi step by step).
-double heading_step(double from, double to);
-
 /// The turn task. Its settle-then-measure phases are a LocomotionTask's (its
 /// activation "settled"), which it drives; it follows the heading and the
 /// centre of mass while that one measures.

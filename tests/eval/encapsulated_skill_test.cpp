@@ -35,7 +35,7 @@ std::vector<double> signals(const Genome& g, SimConfig c, const std::string& ski
   EXPECT_TRUE(d.viable()) << d.reason;
   if (!d.viable()) return {};
   const CreatureModel& m = *d.model;
-  auto task = make_task(m, c, 1);
+  auto task = make_task(m, c, 1, 0);
   EXPECT_TRUE(task.ok());
   GraphBrain brain(m.brain);
   EvalState s(m, brain, c, std::move(*task));

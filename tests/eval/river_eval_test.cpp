@@ -86,7 +86,7 @@ TEST(RiverEval, AFloatVectorDevelopsIntoTheQuadrupedAndItsController) {
 TEST(RiverEval, TheRiverTaskNeedsTheQuadruped) {
   SimConfig cfg;
   cfg.task_kind = TaskKind::River;
-  auto t = make_task(CreatureModel{}, cfg, 1);
+  auto t = make_task(CreatureModel{}, cfg, 1, 0);
   ASSERT_FALSE(t.ok());
   EXPECT_EQ(t.error(), "the river crossing's task needs its quadruped: genotype.kind = \"river\"");
 }

@@ -155,11 +155,11 @@ TEST(Step, TheThrowingTaskIsRefusedToACreatureWithoutACatapult) {
   SimConfig cfg;
   CreatureModel m = grow("walker.json", cfg);
   cfg.task_kind = TaskKind::Throwing;
-  auto t = make_task(m, cfg, 1);
+  auto t = make_task(m, cfg, 1, 0);
   ASSERT_FALSE(t.ok());
   EXPECT_NE(t.error().find("not a catapult"), std::string::npos) << t.error();
   cfg.task_kind = TaskKind::Locomotion;
-  EXPECT_TRUE(make_task(m, cfg, 1).ok());
+  EXPECT_TRUE(make_task(m, cfg, 1, 0).ok());
 }
 
 // A controller that is no graph brain: an open-loop oscillator whose

@@ -285,3 +285,84 @@ TEST(Locomotion, Lessin2015EfficiencyFallsToZeroWithTheSpeed) {
 
 }  // namespace
 }  // namespace bx
+
+namespace bx {
+namespace {
+
+// a point creature whose root is turned by `h` about +z
+struct Walker : Observation {
+  double t = 0, h = 0;
+  Vec3 com;
+  double time() const override { return t; }
+  Vec3 centre_of_mass() const override { return com; }
+  int n_parts() const override { return 1; }
+  Pose part_pose(int) const override { return {com, Mat3::rotation({0, 0, 1}, h)}; }
+  bool touches_part(int) const override { return false; }
+};
+
+// task.metric = "forward": the displacement along the heading the root had
+// when measuring began, whatever it turns to afterwards
+TEST(Locomotion, ForwardCountsDisplacementAlongTheHeadingWhenMeasuringBegan) {
+  auto walked = [](DistanceMetric metric, double h0, Vec3 step, double turn_to, int windows = 1) {
+    LocomotionDef def;
+    def.seconds = 4;
+    def.metric = metric;
+    def.windows = windows;
+    LocomotionTask t(def, 1.0, 1);
+    Walker o;
+    o.h = h0;
+    o.com = {1, 2, 0.5};
+    t.begin(o);
+    for (int i = 1; i <= 4; ++i) {
+      o.t = i;
+      o.h = turn_to;  // turning away after the start changes nothing
+      o.com = o.com + step;
+      t.observe(o);
+    }
+    EXPECT_TRUE(t.done());
+    return t.scored_distance();
+  };
+  const double h = kPi / 6;  // 30 degrees
+  const Vec3 along{0.5 * std::cos(h), 0.5 * std::sin(h), 0};
+  EXPECT_NEAR(walked(DistanceMetric::Forward, h, along, 2.0), 2, 1e-12);
+  EXPECT_NEAR(walked(DistanceMetric::Forward, h, -1.0 * along, 2.0), -2, 1e-12);  // backwards
+  // along +x: its share on the heading; square to it: nothing
+  EXPECT_NEAR(walked(DistanceMetric::Forward, h, {0.5, 0, 0}, -1.0), 2 * std::cos(h), 1e-12);
+  EXPECT_NEAR(walked(DistanceMetric::Forward, h, {-0.5 * std::sin(h), 0.5 * std::cos(h), 0}, 0.0), 0, 1e-12);
+  // planar and x for the same walks
+  EXPECT_NEAR(walked(DistanceMetric::Planar, h, {-0.5 * std::sin(h), 0.5 * std::cos(h), 0}, 0.0), 2, 1e-12);
+  EXPECT_NEAR(walked(DistanceMetric::AlongX, h, along, 0.0), 2 * std::cos(h), 1e-12);
+  // windows measure along the same forward
+  EXPECT_NEAR(walked(DistanceMetric::Forward, h, along, 2.0, 2), 2, 1e-12);
+}
+
+// measuring after settling: forward is the heading when settling ended
+TEST(Locomotion, ForwardIsTheHeadingWhenSettlingEnded) {
+  LocomotionDef def;
+  def.activation = Activation::Settled;
+  def.metric = DistanceMetric::Forward;
+  def.seconds = 1;
+  const double dt = 0.125;
+  def.settle.seconds = 2 * dt;
+  def.settle.speed = 0.1;
+  LocomotionTask t(def, dt, 1);
+  Walker o;
+  o.h = 0.3;
+  t.begin(o);
+  o.t += dt;
+  o.h = 1.0;  // turned while settling (its parts still: a turn in place)
+  t.observe(o);
+  while (t.phase() != Phase::Measure) {
+    o.t += dt;
+    t.observe(o);
+  }
+  while (!t.done()) {
+    o.t += dt;
+    o.com = o.com + Vec3{0.1, 0, 0};
+    t.observe(o);
+  }
+  EXPECT_NEAR(t.distance(), 0.8 * std::cos(1.0), 1e-12);
+}
+
+}  // namespace
+}  // namespace bx
