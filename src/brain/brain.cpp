@@ -90,11 +90,18 @@ void brain_step(const BrainModel& m, BrainState& s, double dt) {
   const bool effectors_gated = !m.effector_input_gate.empty();
   for (int e = 0; e < m.n_effectors(); ++e) {
     double sum = m.effector_bias[e];
-    for (std::uint32_t j = m.effector_input_begin[e]; j < m.effector_input_begin[e + 1]; ++j) {
-      const std::int32_t src = m.effector_input_src[j];
-      if (src < 0) continue;
-      const std::int32_t gate = effectors_gated ? m.effector_input_gate[j] : -1;
-      sum += gate >= 0 ? m.effector_input_weight[j] * values[src] * values[gate] : m.effector_input_weight[j] * values[src];
+    const std::uint32_t b = m.effector_input_begin[e], end = m.effector_input_begin[e + 1];
+    if (effectors_gated) {
+      for (std::uint32_t j = b; j < end; ++j) {
+        const std::int32_t src = m.effector_input_src[j], gate = m.effector_input_gate[j];
+        if (src >= 0)
+          sum += gate >= 0 ? m.effector_input_weight[j] * values[src] * values[gate] : m.effector_input_weight[j] * values[src];
+      }
+    } else {
+      for (std::uint32_t j = b; j < end; ++j) {
+        const std::int32_t src = m.effector_input_src[j];
+        if (src >= 0) sum += m.effector_input_weight[j] * values[src];
+      }
     }
     s.effector_out[e] = effector_signal(m.set, sum);
   }

@@ -7,17 +7,6 @@ namespace bx {
 
 namespace {
 
-// the settle-then-measure phases of lessin2015's locomotion, for `def`'s
-// span and settling (the distance it measures is not used)
-LocomotionDef phases_of(const LightDef& def) {
-  LocomotionDef p;
-  p.seconds = def.seconds;
-  p.drop_height = def.drop_height;
-  p.activation = Activation::Settled;
-  p.settle = def.settle;
-  return p;
-}
-
 // the scene's light: yellow, a visible 0.2 m across
 constexpr const char* kLightColor = "#ffd200";
 constexpr double kLightSize = 0.2;
@@ -27,7 +16,7 @@ bool towards(LightGoal g) { return g == LightGoal::Face || g == LightGoal::Appro
 }  // namespace
 
 LightTask::LightTask(const LightDef& def, double dt, int n_parts, int trial)
-    : def_(def), phases_(phases_of(def), dt, n_parts) {
+    : def_(def), phases_(settled_phases(def.seconds, def.drop_height, def.settle), dt, n_parts) {
   const std::size_t n = def_.headings.size();
   bearing_ = n ? def_.headings[static_cast<std::size_t>(std::max(0, trial)) % n] : 0;
   // the side the light is on, seen from the forward: none dead ahead or behind

@@ -182,4 +182,13 @@ double chaumont_size_factor(const CreatureModel& m, double kappa) {
   return cv / (cs * cl) * std::pow(kappa, n);
 }
 
+LocomotionDef settled_phases(double seconds, double drop_height, const SettleDef& settle) {
+  LocomotionDef p;
+  p.seconds = seconds;
+  p.drop_height = drop_height;
+  p.activation = Activation::Settled;
+  p.settle = settle;
+  return p;
+}
+
 }  // namespace bx

@@ -143,6 +143,12 @@ class LocomotionTask : public Task {
   std::string note_;
 };
 
+/// The phases of a task that, as lessin2015's locomotion (activation
+/// "settled"), settles its creature with the controller off and then
+/// measures it for `seconds`: a LocomotionTask of this def drives them (the
+/// turn, strike and light tasks).
+LocomotionDef settled_phases(double seconds, double drop_height, const SettleDef& settle);
+
 /// lessin2015's efficiency eps in [0, 1] of travelling `distance` (m) in
 /// `seconds` with `work` (J) of muscle work, for a creature of `mass` (kg)
 /// under `gravity`, at a resting cost of `basal_power` (W per kg):

@@ -5,21 +5,6 @@
 
 namespace bx {
 
-namespace {
-
-// the settle-then-measure phases of lessin2015's locomotion, for `def`'s
-// span and settling (the distance it measures is the task's)
-LocomotionDef phases_of(const StrikeDef& def) {
-  LocomotionDef p;
-  p.seconds = def.seconds;
-  p.drop_height = def.drop_height;
-  p.activation = Activation::Settled;
-  p.settle = def.settle;
-  return p;
-}
-
-}  // namespace
-
 ImpactMeter::ImpactMeter(double window, double threshold, double dt)
     : threshold_(threshold), dt_(dt), half_(std::max(1, static_cast<int>(std::lround(window / dt / 2)))) {}
 
@@ -45,7 +30,7 @@ void ImpactMeter::observe(double t, double z) {
 }
 
 StrikeTask::StrikeTask(const StrikeDef& def, double dt, int n_parts)
-    : def_(def), phases_(phases_of(def), dt, n_parts), meter_(def.window, def.threshold, dt) {}
+    : def_(def), phases_(settled_phases(def.seconds, def.drop_height, def.settle), dt, n_parts), meter_(def.window, def.threshold, dt) {}
 
 void StrikeTask::begin(const Observation& o) {
   phases_.begin(o);

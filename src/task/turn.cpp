@@ -5,23 +5,8 @@
 
 namespace bx {
 
-namespace {
-
-// the settle-then-measure phases of lessin2015's locomotion, for `def`'s
-// span and settling (the distance it measures is not used)
-LocomotionDef phases_of(const TurnDef& def) {
-  LocomotionDef p;
-  p.seconds = def.seconds;
-  p.drop_height = def.drop_height;
-  p.activation = Activation::Settled;
-  p.settle = def.settle;
-  return p;
-}
-
-}  // namespace
-
 TurnTask::TurnTask(const TurnDef& def, double dt, int n_parts)
-    : def_(def), phases_(phases_of(def), dt, n_parts), sign_(def.direction == TurnDirection::Left ? 1 : -1) {}
+    : def_(def), phases_(settled_phases(def.seconds, def.drop_height, def.settle), dt, n_parts), sign_(def.direction == TurnDirection::Left ? 1 : -1) {}
 
 void TurnTask::begin(const Observation& o) {
   phases_.begin(o);
