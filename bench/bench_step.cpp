@@ -207,7 +207,7 @@ int main(int argc, char** argv) {
 
   // creature files: $BESTIARY_SOURCE_DIR, else the source tree this was built from
   const char* env = std::getenv("BESTIARY_SOURCE_DIR");
-  std::string dir = std::string(env && *env ? env : BESTIARY_SOURCE_DIR) + "/tests/creatures/";
+  std::string dir = std::string(env && *env ? env : BESTIARY_SOURCE_DIR) + "/creatures/";
   struct Case {
     const char* label;
     const char* file;

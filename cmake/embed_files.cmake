@@ -4,7 +4,8 @@
 # {name, text} per file sorted by name, the text byte for byte; sets OUT_VAR
 # to that file. Editing or adding a file re-runs the configure step at the
 # next build, which rewrites the file only if its content changed. Presets
-# (cmake/presets.cmake) and shipped motifs (cmake/motifs.cmake) use it.
+# (cmake/presets.cmake), shipped motifs (cmake/motifs.cmake) and the
+# canonical creatures (cmake/creatures.cmake) use it.
 function(embed_files out_var dir ext header type function delim)
   file(GLOB files CONFIGURE_DEPENDS ${dir}/*.${ext})
   list(SORT files)

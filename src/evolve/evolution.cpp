@@ -270,8 +270,9 @@ GenerationResult Evolution::initial(EvolutionState& s, Evaluator& eval) const {
     }
     const Individual& f = founders_[k % n];
     auto make = [&](Rng& r) { return mutant(f, r); };
-    // a founder as it is (a stage's tasks may refuse a body the last took: then its mutants)
-    children.push_back(k < n ? viable(Child{f.genotype, f.id, -1, "copy"}, rng, rejected, make)
+    // a founder as it is (a stage's tasks may refuse a body the last took:
+    // then its mutants); one without an id was read from a file
+    children.push_back(k < n ? viable(Child{f.genotype, f.id, -1, f.id >= 0 ? "copy" : "file"}, rng, rejected, make)
                              : viable(make(rng), rng, rejected, make));
   }
   GenerationResult res;

@@ -115,7 +115,8 @@ class Evolution {
   /// index). Without `founders` the first generation is random genotypes;
   /// with them (a stage that starts from the last one's population, best
   /// first), its k-th child is founder k mod n, as it is for k < n and a
-  /// mutant of it (the algorithm's asexual mutation) after that.
+  /// mutant of it (the algorithm's asexual mutation) after that. A founder
+  /// without an id (-1: read from a file) is born with operator "file".
   Evolution(std::shared_ptr<const GenotypeOps> ops, EvolutionDef evo, std::uint64_t seed,
             TrialScore fold = TrialScore::Mean, int task = 0, std::vector<Individual> founders = {});
 

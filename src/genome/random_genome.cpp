@@ -77,7 +77,7 @@ OperatorDef default_operators(Dialect d) {
   switch (d) {
     case Dialect::Sims1994:
       def.max_genes = 20;  // our choice (the dialect has no limit)
-      // part sizes of the example creatures (tests/creatures/): 5 cm to 60 cm
+      // part sizes of the example creatures (creatures/): 5 cm to 60 cm
       def.size_min = {0.1, 0.05, 0.05};
       def.size_max = {0.6, 0.4, 0.4};
       def.shape_weights = {

@@ -7,13 +7,17 @@
 #include <set>
 #include <sstream>
 
+#include "core/hash.h"
 #include "core/text.h"
+#include "genome/genotype_file.h"
+#include "genome/shipped_creatures.h"
 
 namespace bx {
 
 namespace {
 
-constexpr std::string_view kStartNames[] = {"random", "best", "population"};
+constexpr std::string_view kStartNames[] = {"random", "best", "population", "file"};
+constexpr int kStarts = 4;
 
 // a TOML table as text that toml::parse reads back to it
 std::string table_text(const toml::table& t) {
@@ -29,7 +33,7 @@ std::string in_quotes(std::string_view s) {
   return q;
 }
 
-// a stage's own keys (name, uses, group, start, body, encapsulate) from its table, which then
+// a stage's own keys (name, uses, group, start, file, body, encapsulate) from its table, which then
 // keeps its config sections only
 Status read_stage_keys(toml::table& t, StageDef& st, const std::string& where, bool first) {
   auto name = t["name"].value<std::string>();
@@ -54,15 +58,43 @@ Status read_stage_keys(toml::table& t, StageDef& st, const std::string& where, b
   if (auto* node = t.get("start")) {
     auto v = node->value<std::string>();
     int found = -1;
-    for (int i = 0; v && i < 3; ++i)
+    for (int i = 0; v && i < kStarts; ++i)
       if (*v == kStartNames[i]) found = i;
     if (found < 0)
-      return Error{where + ".start: expected one of random, best, population, got " +
+      return Error{where + ".start: expected one of random, best, population, file, got " +
                    (v ? in_quotes(*v) : std::string("something else than a string"))};
     st.start = static_cast<StageStart>(found);
-    if (first && st.start != StageStart::Random)
-      return Error{where + ".start: the first stage has no stage before it to start from; it starts \"random\", got " +
-                   in_quotes(*v)};
+    if (first && st.start != StageStart::Random && st.start != StageStart::File)
+      return Error{where + ".start: the first stage has no stage before it to start from; it starts \"random\" or "
+                   "\"file\", got " + in_quotes(*v)};
+    if (!first && st.start == StageStart::File)
+      return Error{where + ".start: only the first stage starts from a file (a later one starts from what the last "
+                   "left: best or population), got \"file\""};
+  }
+  for (const char* k : {"file", "file_hash"})
+    if (auto* node = t.get(k)) {
+      auto v = node->value<std::string>();
+      if (!v || v->empty() || !node->is_string())
+        return Error{where + "." + k + ": expected a non-empty string" +
+                     (std::string_view(k) == "file" ? " (a canonical creature's name, creatures/, or a genome file's path)"
+                                                    : " (the hash of the file's text, which the reader writes)")};
+      (std::string_view(k) == "file" ? st.file : st.file_hash) = *v;
+    }
+  if (st.start == StageStart::File && st.file.empty())
+    return Error{where + ".file: start = \"file\" needs the genome file to start from (a canonical creature's "
+                 "name, creatures/, or a path)"};
+  if (st.start != StageStart::File && !st.file.empty())
+    return Error{where + ".file: given, but the stage starts \"" + std::string(kStartNames[static_cast<int>(st.start)]) +
+                 "\" (start = \"file\" starts from it)"};
+  if (st.file.empty() && !st.file_hash.empty())
+    return Error{where + ".file_hash: given without file (the reader writes it, with the file it read)"};
+  if (st.start == StageStart::File && st.file_hash.empty()) {
+    // read now, so a bad file is an error before the run begins; the run
+    // reads it again at the stage's start and refuses it if it changed
+    auto text = read_creature_text(st.file);
+    if (!text) return Error{where + ".file: " + text.error()};
+    if (auto g = genotype_from_file_text(text->text, text->source); !g) return Error{where + ".file: " + g.error()};
+    st.file_hash = fnv1a64_hex(text->text);
   }
   if (auto* node = t.get("body")) {
     auto v = node->value<std::string>();
@@ -70,10 +102,9 @@ Status read_stage_keys(toml::table& t, StageDef& st, const std::string& where, b
       return Error{where + ".body: expected \"free\" or \"locked\", got " +
                    (v ? in_quotes(*v) : std::string("something else than a string"))};
     st.lock_body = *v == "locked";
-    if (first && st.lock_body)
-      return Error{where + ".body: the first stage starts from random genotypes: it has no body to lock yet, got \"locked\""};
     if (st.lock_body && st.start == StageStart::Random)
-      return Error{where + ".body: \"locked\" locks the bodies the stage starts from, and start = \"random\" takes none"};
+      return Error{where + ".body: \"locked\" locks the bodies the stage starts from, and start = \"random\" takes "
+                   "none (random genotypes have no body yet)"};
   }
   if (auto* node = t.get("encapsulate")) {
     auto v = node->value<bool>();
@@ -81,11 +112,12 @@ Status read_stage_keys(toml::table& t, StageDef& st, const std::string& where, b
       return Error{where + ".encapsulate: expected true or false (whether its skill is encapsulated when it ends)"};
     st.encapsulate = *v;
   }
-  for (const char* k : {"name", "uses", "group", "start", "body", "encapsulate"}) t.erase(k);
+  for (const char* k : {"name", "uses", "group", "start", "file", "file_hash", "body", "encapsulate"}) t.erase(k);
   for (auto&& [key, node] : t)
     if (!node.is_table())
       return Error{where + "." + one_line(key.str(), 100) +
-                   ": unknown stage key (a stage has name, uses, group, start, body, encapsulate and config sections)"};
+                   ": unknown stage key (a stage has name, uses, group, start, file, body, encapsulate and config "
+                   "sections)"};
   return Ok{};
 }
 
@@ -196,6 +228,9 @@ std::string syllabus_to_toml(const Syllabus& s) {
     }
     if (!st.group.empty()) ss << "\ngroup = " << toml::value<std::string>(st.group);
     ss << "\nstart = \"" << stage_start_name(st.start) << "\"\n";
+    if (!st.file.empty())
+      ss << "file = " << toml::value<std::string>(st.file) << "\nfile_hash = " << toml::value<std::string>(st.file_hash)
+         << "\n";
     if (st.lock_body) ss << "body = \"locked\"\n";
     if (st.encapsulate) ss << "encapsulate = true\n";
     const std::vector<std::string> own = lines(config_to_toml(st.cfg));

@@ -14,7 +14,8 @@
 //
 //   [[stage]]
 //   name = "left turn"
-//   start = "best"        # random | best | population (default: best)
+//   start = "best"        # random | best | population (default: best); file (first stage only,
+//                         #   with file = "NAME|PATH": a canonical creature or a genome file)
 //   uses = ["forward"]    # stages whose skills it builds on: learned before it
 //   group = "turn"        # its pandemonium group
 //   body = "locked"       # free | locked: its founders' bodies locked (Fast ESP)
@@ -37,6 +38,7 @@ enum class StageStart {
   Random,      ///< random genotypes (the first stage's only choice)
   Best,        ///< the last stage's best: once as it is, the rest of the population its mutants
   Population,  ///< the last stage's final population, best first, each once as it is
+  File,        ///< a genome file's creature (the first stage only): once as it is, the rest its mutants
 };
 
 /// One stage of a run.
@@ -45,6 +47,11 @@ struct StageDef {
   std::vector<std::string> uses;  ///< earlier stages whose skills it builds on
   std::string group;              ///< its pandemonium group ("": none)
   StageStart start = StageStart::Random;
+  /// start = File: a canonical creature's name (creatures/) or a genome
+  /// file's path, and the FNV-1a hash of its text as the config was first
+  /// read (the reader writes it; the run refuses the file if it changed).
+  std::string file;
+  std::string file_hash;
   /// The body is locked from this stage on (lessin2015's Fast ESP, IV-D):
   /// the stage's founders get their body locked, so no operator changes it;
   /// muscles, photoreceptors and neurons may still be added.

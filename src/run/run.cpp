@@ -14,10 +14,13 @@
 #include <fstream>
 
 #include "core/files.h"
+#include "core/hash.h"
 #include "core/version.h"
 #include "develop/graph_ops.h"
 #include "eval/evaluator.h"
 #include "evolve/evolution.h"
+#include "genome/genotype_file.h"
+#include "genome/shipped_creatures.h"
 #include "io/run_store.h"
 #include "io/syllabus.h"
 
@@ -174,6 +177,27 @@ std::shared_ptr<const GenotypeOps> genotype_ops(const RunConfig& cfg) {
   return std::make_shared<GraphOps>(cfg.dialect, cfg.operators, cfg.sim.develop);
 }
 
+// the founder of a stage that starts from a file (the first stage's start =
+// "file"): its creature as the file gives it, refused if the file changed
+// since the run began; its body locked if the stage locks bodies
+Result<Individual> file_founder(const StageDef& st) {
+  const std::string where = "stage \"" + st.name + "\": file: ";
+  auto text = read_creature_text(st.file);
+  if (!text) return Error{where + text.error()};
+  if (const std::string h = fnv1a64_hex(text->text); h != st.file_hash)
+    return Error{where + text->source + " has changed since the run began (its text's hash is " + h + ", the run's " +
+                 st.file_hash + "): put back the file it started from, or begin a new run"};
+  auto g = genotype_from_file_text(text->text, text->source);
+  if (!g) return Error{where + g.error()};
+  auto ops = genotype_ops(st.cfg);
+  auto fits = ops->from_json((*g)->to_json());
+  if (!fits) return Error{where + text->source + ": " + fits.error()};
+  Individual f;
+  f.genotype = std::move(*fits);
+  if (st.lock_body) f.genotype = ops->with_body_locked(*f.genotype);
+  return f;
+}
+
 }  // namespace
 
 Status check_run(const Syllabus& syl) {
@@ -183,6 +207,8 @@ Status check_run(const Syllabus& syl) {
     if (Status s = check_breeding(st.cfg.evolution, *ops); !s) return Error{where + s.error()};
     if (st.lock_body && !ops->can_lock_body())
       return Error{where + "body: \"locked\": genotypes of kind " + std::string(ops->kind()) + " have no body to lock"};
+    if (st.start == StageStart::File)
+      if (auto f = file_founder(st); !f) return Error{f.error()};
     if (st.encapsulate && !ops->can_encapsulate())
       return Error{where + "encapsulate: true: genotypes of kind " + std::string(ops->kind()) + " (dialect " +
                    std::string(to_string(st.cfg.dialect)) + ") have no skill switches (lessin2015's have)"};
@@ -294,6 +320,11 @@ Status drive_run(const std::string& dir, const RunOptions& opt) {
     return Error{run_db_path(dir) + ": the checkpoint is in stage " + std::to_string(stage.index + 1) +
                  ", but the run's config has " + std::to_string(n_stages)};
   stage.name = stages[stage.index].name;
+  if (stage.index == 0 && state.generation < 0 && state.population.empty() && stages[0].start == StageStart::File) {
+    auto f = file_founder(stages[0]);
+    if (!f) return Error{f.error()};
+    state.population.push_back(std::move(*f));  // the founder, until the first generation replaces it
+  }
   auto finished_stage = [&] { return Evolution::finished(stages[stage.index].cfg.evolution, state); };
   if (stage.index + 1 == n_stages && finished_stage()) return Ok{};
 

@@ -14,7 +14,7 @@ namespace bx {
 namespace {
 
 GraphGenotype load(const std::string& name) {
-  auto g = load_genome(std::string(BESTIARY_SOURCE_DIR) + "/tests/creatures/" + name);
+  auto g = load_genome(std::string(BESTIARY_SOURCE_DIR) + "/creatures/" + name);
   EXPECT_TRUE(g.ok()) << g.error();
   return GraphGenotype(*g);
 }

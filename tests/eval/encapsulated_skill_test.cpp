@@ -1,5 +1,5 @@
 // An encapsulated skill's behaviour (lessin2015 IV-B, genome/encapsulate.h;
-// development's brain.skill) on the muscle crawler of tests/creatures: run
+// development's brain.skill) on the muscle crawler of creatures: run
 // alone it drives its muscles exactly as before, step for step; with its
 // switch off they are silent; a second skill leaves the first as it was.
 #include <gtest/gtest.h>

@@ -18,7 +18,7 @@ namespace {
 std::vector<GraphGenotype> creatures() {
   std::vector<GraphGenotype> out;
   for (const char* name : {"walker.json", "snake.json", "hinged_pair.json", "sims_both.json"}) {
-    auto g = load_genome(std::string(BESTIARY_SOURCE_DIR) + "/tests/creatures/" + name);
+    auto g = load_genome(std::string(BESTIARY_SOURCE_DIR) + "/creatures/" + name);
     EXPECT_TRUE(g.ok()) << g.error();
     out.emplace_back(*g);
   }

@@ -1,4 +1,4 @@
-// tests/creatures/lessin_crawler.json: lessin2015-locomotion-small seed 1's
+// creatures/lessin_crawler.json: lessin2015-locomotion-small seed 1's
 // best (docs/results.md), a box with four limbs of shrinking spheres whose 24
 // muscles pulse at 6 Hz and row it along. Under the preset's muscle lag and
 // drop it crawls, scored by lessin2015's fitness (about its speed in m/s);

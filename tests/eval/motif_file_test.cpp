@@ -159,7 +159,7 @@ TEST_F(MotifFileTest, BadFilesAreRefusedNamingTheFileTheFieldAndTheValue) {
   EXPECT_EQ(refused(unknown), "r.toml: motif.file: " + unknown +
                                   ": motif.period: unknown field (about, w, tau, alpha, input, output, fitness, "
                                   "oscillation, quiescence)");
-  const std::string graph = std::string(BESTIARY_SOURCE_DIR) + "/tests/creatures/box.json";
+  const std::string graph = std::string(BESTIARY_SOURCE_DIR) + "/creatures/box.json";
   EXPECT_EQ(refused(graph), "r.toml: motif.file: " + graph +
                                 ": kind: a graph genotype, not a motif's genes (expected \"kind\": \"floats\" with 15 genes)");
 }

@@ -107,7 +107,7 @@ TEST(OutcomeJson, ANonFiniteNumberComesBackAsNaNAndAMissingFieldIsNamed) {
 TEST(OutcomeJson, ThePoolReturnsEveryFieldTheSerialEvaluatorComputesWithTwoTrials) {
   std::vector<GraphGenotype> gs;
   for (const char* name : {"walker.json", "snake.json"}) {
-    auto g = load_genome(std::string(BESTIARY_SOURCE_DIR) + "/tests/creatures/" + name);
+    auto g = load_genome(std::string(BESTIARY_SOURCE_DIR) + "/creatures/" + name);
     ASSERT_TRUE(g.ok()) << g.error();
     gs.emplace_back(*g);
   }
@@ -134,7 +134,7 @@ namespace {
 TEST(JobJson, TheGenotypeItsKindAndEveryBitOfTheSeedRoundTrip) {
   std::vector<std::unique_ptr<Genotype>> genotypes;
   for (const char* name : {"walker.json", "catapult.json", "sims_recursive.json"}) {
-    auto g = load_genome(std::string(BESTIARY_SOURCE_DIR) + "/tests/creatures/" + name);
+    auto g = load_genome(std::string(BESTIARY_SOURCE_DIR) + "/creatures/" + name);
     ASSERT_TRUE(g.ok()) << g.error();
     genotypes.push_back(std::make_unique<GraphGenotype>(*g));
   }
@@ -157,7 +157,7 @@ TEST(JobJson, TheGenotypeItsKindAndEveryBitOfTheSeedRoundTrip) {
 }
 
 TEST(JobJson, ABadJobNamesWhatIsWrong) {
-  auto g = load_genome(std::string(BESTIARY_SOURCE_DIR) + "/tests/creatures/walker.json");
+  auto g = load_genome(std::string(BESTIARY_SOURCE_DIR) + "/creatures/walker.json");
   ASSERT_TRUE(g.ok()) << g.error();
   GraphGenotype walker(*g);
   nlohmann::json j = job_to_json({&walker, 7});

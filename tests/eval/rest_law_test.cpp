@@ -77,7 +77,7 @@ const double kSignals[] = {-1, -0.3, 0.3, 1};
 
 TEST(RestLaw, CanonicalCreaturesWithConstantSignalsComeToRest) {
   for (const char* name : {"hinged_pair.json", "snake.json", "centipede.json", "walker.json"}) {
-    auto g = load_genome(std::string(BESTIARY_SOURCE_DIR) + "/tests/creatures/" + name);
+    auto g = load_genome(std::string(BESTIARY_SOURCE_DIR) + "/creatures/" + name);
     ASSERT_TRUE(g.ok()) << g.error();
     Development dev = develop(*g, default_run_config(g->dialect).sim.develop);
     ASSERT_TRUE(dev.viable()) << name;
@@ -92,9 +92,9 @@ TEST(RestLaw, CanonicalCreaturesWithConstantSignalsComeToRest) {
   }
 }
 
-// A creature from tests/creatures/, developed with its dialect's defaults.
+// A creature from creatures/, developed with its dialect's defaults.
 CreatureModel canonical(const std::string& name, Dialect* dialect = nullptr) {
-  auto g = load_genome(std::string(BESTIARY_SOURCE_DIR) + "/tests/creatures/" + name);
+  auto g = load_genome(std::string(BESTIARY_SOURCE_DIR) + "/creatures/" + name);
   EXPECT_TRUE(g.ok()) << g.error();
   Development dev = develop(*g, default_run_config(g->dialect).sim.develop);
   EXPECT_TRUE(dev.viable()) << name;

@@ -15,7 +15,7 @@ namespace bx {
 namespace {
 
 CreatureModel grow(const std::string& name, SimConfig& cfg) {
-  auto g = load_genome(std::string(BESTIARY_SOURCE_DIR) + "/tests/creatures/" + name);
+  auto g = load_genome(std::string(BESTIARY_SOURCE_DIR) + "/creatures/" + name);
   EXPECT_TRUE(g.ok()) << g.error();
   cfg = default_sim_config(g->dialect);
   Development d = develop(*g);

@@ -17,7 +17,7 @@ namespace bx {
 namespace {
 
 Genome catapult() {
-  auto g = load_genome(std::string(BESTIARY_SOURCE_DIR) + "/tests/creatures/catapult.json");
+  auto g = load_genome(std::string(BESTIARY_SOURCE_DIR) + "/creatures/catapult.json");
   EXPECT_TRUE(g.ok()) << g.error();
   return *g;
 }
@@ -283,7 +283,7 @@ TEST(ThrowingEval, SameSeedGivesBitIdenticalThrows) {
   CreatureModel m = grow(g);
   SimConfig cfg = default_sim_config(g);
   EvalResult a = evaluate(m, cfg, 5);
-  evaluate(grow(load_genome(std::string(BESTIARY_SOURCE_DIR) + "/tests/creatures/walker.json").value()),
+  evaluate(grow(load_genome(std::string(BESTIARY_SOURCE_DIR) + "/creatures/walker.json").value()),
            default_sim_config(Dialect::Sims1994), 9);
   EvalResult b = evaluate(m, cfg, 5);
   EXPECT_EQ(a.fitness, b.fitness);
@@ -301,7 +301,7 @@ TEST(ThrowingEval, OnlyTheThrowingTaskReleases) {
 }
 
 TEST(ThrowingEval, ANonCatapultCannotThrow) {
-  auto g = load_genome(std::string(BESTIARY_SOURCE_DIR) + "/tests/creatures/walker.json");
+  auto g = load_genome(std::string(BESTIARY_SOURCE_DIR) + "/creatures/walker.json");
   ASSERT_TRUE(g.ok());
   SimConfig cfg = default_sim_config(g->dialect);
   cfg.task_kind = TaskKind::Throwing;
@@ -334,7 +334,7 @@ TEST(ThrowingEval, AnEvolvedCatapultWhoseProjectileStartsInsideItsBodyIsRefusedA
   // catapult-small seeds: released, the contact pushed it out at the solver's
   // correcting speed (their throws grew as the step shrank, docs/physics.md
   // cause 14). Development now refuses it.
-  auto g = load_genome(std::string(BESTIARY_SOURCE_DIR) + "/tests/creatures/catapult_stretched_joint.json");
+  auto g = load_genome(std::string(BESTIARY_SOURCE_DIR) + "/creatures/catapult_stretched_joint.json");
   ASSERT_TRUE(g.ok()) << g.error();
   Development d = develop(*g);
   EXPECT_FALSE(d.viable());

@@ -1,5 +1,5 @@
 // Encapsulation (lessin2015 IV-B, genome/encapsulate.h) as genes, on the
-// muscle crawler of tests/creatures: the skill frozen, its wires gated by a
+// muscle crawler of creatures: the skill frozen, its wires gated by a
 // new switch, the bias a gated wire; mutation and crossover keep every
 // frozen gene; validation names a bad gate or switch. Its behaviour (the
 // skill alone exactly as before, silent when off) is
@@ -20,7 +20,7 @@ namespace bx {
 namespace {
 
 Genome crawler() {
-  auto g = load_genome(std::string(BESTIARY_SOURCE_DIR) + "/tests/creatures/lessin_crawler.json");
+  auto g = load_genome(std::string(BESTIARY_SOURCE_DIR) + "/creatures/lessin_crawler.json");
   EXPECT_TRUE(g.ok()) << g.error();
   return g.ok() ? *g : Genome{};
 }

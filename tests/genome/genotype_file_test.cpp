@@ -24,7 +24,7 @@ std::string slurp(const std::string& path) {
 }
 
 Genome walker() {
-  auto g = load_genome(std::string(BESTIARY_SOURCE_DIR) + "/tests/creatures/walker.json");
+  auto g = load_genome(std::string(BESTIARY_SOURCE_DIR) + "/creatures/walker.json");
   EXPECT_TRUE(g) << g.error();
   return *g;
 }
@@ -46,7 +46,7 @@ TEST(GenotypeFile, AGraphGenomesFileIsTheGenomeFile) {
 }
 
 TEST(GenotypeFile, AGraphGenomeMayNameItsKind) {
-  const std::string text = slurp(std::string(BESTIARY_SOURCE_DIR) + "/tests/creatures/walker.json");
+  const std::string text = slurp(std::string(BESTIARY_SOURCE_DIR) + "/creatures/walker.json");
   std::string named = text;
   named.insert(named.find('{') + 1, "\"kind\": \"graph\",");
   auto a = genotype_from_file_text(text, "a.json"), b = genotype_from_file_text(named, "b.json");

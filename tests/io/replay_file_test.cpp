@@ -24,7 +24,7 @@ using nlohmann::json;
 
 // the creature and the config `simulate` gives it (a catapult's: the throwing task)
 CreatureModel grow(const std::string& name, SimConfig& cfg, double seconds) {
-  auto g = load_genome(std::string(BESTIARY_SOURCE_DIR) + "/tests/creatures/" + name);
+  auto g = load_genome(std::string(BESTIARY_SOURCE_DIR) + "/creatures/" + name);
   EXPECT_TRUE(g.ok()) << g.error();
   cfg = default_sim_config(*g);
   task_seconds(cfg) = seconds;
@@ -146,7 +146,7 @@ TEST(ReplayFile, ASnakesHingesSwing) {
 }
 
 TEST(ReplayFile, APinnedHingeRestsAtItsStopUnderAConstantSignal) {
-  // tests/creatures/pinned.json: an effector with bias -1 and no inputs
+  // creatures/pinned.json: an effector with bias -1 and no inputs
   // holds its hinge against the stop at -0.5 rad
   Written w = simulate("pinned.json", 3);
   const json& frames = w.j["frames"];

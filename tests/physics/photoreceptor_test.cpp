@@ -94,7 +94,7 @@ TEST(Photoreceptor, TwoLightsAddAndTheSumIsHeldAtOne) {
 namespace bx {
 namespace {
 
-// tests/creatures/lessin_eyes.json: a 0.4 x 0.3 x 0.15 m box with two eyes
+// creatures/lessin_eyes.json: a 0.4 x 0.3 x 0.15 m box with two eyes
 // looking forward, 26.6 degrees to the left (+y) and to the right; their
 // readings under one light at the body's height, the body turned by `yaw`
 std::vector<double> eyes(Vec3 light, double yaw = 0) {

@@ -13,6 +13,9 @@
 #include "develop/graph_ops.h"
 #include "genome/graph_genotype.h"
 #include "genome/genotype.h"
+#include "genome/shipped_creatures.h"
+#include "core/files.h"
+#include "support/creatures.h"
 #include "io/run_store.h"
 #include "run/run.h"
 #include "support/run_command.h"
@@ -112,11 +115,13 @@ TEST(Syllabus, ErrorsNameTheStageAndTheKey) {
   EXPECT_EQ(staged("[[stage]]\nname = \"a\"\n[[stage]]\nname = \"a\"\n"), "s.toml: stage \"a\".name: given to two stages");
   EXPECT_EQ(staged("[[stage]]\nuses = []\n"), "s.toml: stage 1.name: every stage needs a name (a non-empty string)");
   EXPECT_EQ(staged("[[stage]]\nname = \"a\"\nstart = \"best\"\n"),
-            "s.toml: stage 1.start: the first stage has no stage before it to start from; it starts \"random\", got \"best\"");
+            "s.toml: stage 1.start: the first stage has no stage before it to start from; it starts \"random\" or \"file\", "
+            "got \"best\"");
   EXPECT_EQ(staged("[[stage]]\nname = \"a\"\n[[stage]]\nname = \"b\"\nstart = \"worst\"\n"),
-            "s.toml: stage 2.start: expected one of random, best, population, got \"worst\"");
+            "s.toml: stage 2.start: expected one of random, best, population, file, got \"worst\"");
   EXPECT_EQ(staged("[[stage]]\nname = \"a\"\nskill = 3\n"),
-            "s.toml: stage 1.skill: unknown stage key (a stage has name, uses, group, start, body, encapsulate and config sections)");
+            "s.toml: stage 1.skill: unknown stage key (a stage has name, uses, group, start, file, body, encapsulate and "
+            "config sections)");
   // a stage's config key is checked as the config's own, and named with its stage
   EXPECT_EQ(staged("[[stage]]\nname = \"a\"\n[stage.task]\nsecond = 2\n"),
             "s.toml: stage \"a\": task.second: unknown key (did you mean \"seconds\"?)");
@@ -252,14 +257,16 @@ TEST_F(Stages, ALockedBodyStaysTheFoundersWhileItsBrainEvolves) {
   EXPECT_GT(brains_changed, 0);
 }
 
-TEST(Syllabus, OnlyABodyAfterTheFirstStageCanBeLocked) {
+TEST(Syllabus, OnlyABodyAStageStartsFromCanBeLocked) {
   const std::string base = "[genome]\ndialect = \"sims1994\"\n";
   EXPECT_EQ(error_of(base + "[[stage]]\nname = \"a\"\nbody = \"locked\"\n"),
-            "s.toml: stage 1.body: the first stage starts from random genotypes: it has no body to lock yet, got \"locked\"");
+            "s.toml: stage 1.body: \"locked\" locks the bodies the stage starts from, and start = \"random\" takes none "
+            "(random genotypes have no body yet)");
   EXPECT_EQ(error_of(base + "[[stage]]\nname = \"a\"\n[[stage]]\nname = \"b\"\nbody = \"rigid\"\n"),
             "s.toml: stage 2.body: expected \"free\" or \"locked\", got \"rigid\"");
   EXPECT_EQ(error_of(base + "[[stage]]\nname = \"a\"\n[[stage]]\nname = \"b\"\nstart = \"random\"\nbody = \"locked\"\n"),
-            "s.toml: stage 2.body: \"locked\" locks the bodies the stage starts from, and start = \"random\" takes none");
+            "s.toml: stage 2.body: \"locked\" locks the bodies the stage starts from, and start = \"random\" takes none "
+            "(random genotypes have no body yet)");
   // a creature kind without a body (the motif) has none to lock
   auto motif = read_syllabus("[genotype]\nkind = \"motif\"\n[evolution]\np_asexual = 0.5\np_crossover = 0.5\np_graft = 0\n"
                              "[[stage]]\nname = \"a\"\n[[stage]]\nname = \"b\"\nbody = \"locked\"\n",
@@ -268,6 +275,105 @@ TEST(Syllabus, OnlyABodyAfterTheFirstStageCanBeLocked) {
   Status s = check_run(*motif);
   ASSERT_FALSE(s.ok());
   EXPECT_EQ(s.error(), "stage \"b\": body: \"locked\": genotypes of kind floats have no body to lock");
+}
+
+// the first stage may start from a canonical creature or a genome file: the
+// file's creature once as it is (operator "file", no parent), the rest of
+// the population its mutants; its body locked with body = "locked"
+const char* kFromFile = R"(
+[genome]
+dialect = "sims1994"
+[evolution]
+algorithm = "generational"
+population = 5
+generations = 2
+[task]
+seconds = 1
+
+[[stage]]
+name = "walk"
+start = "file"
+file = "walker"
+body = "locked"
+
+[[stage]]
+name = "on"
+)";
+
+TEST_F(Stages, TheFirstStageStartsFromAFilesCreatureAndResumesTheSame) {
+  auto syl = read_syllabus(kFromFile, "test.toml");
+  ASSERT_TRUE(syl.ok()) << syl.error();
+  const StageDef& first = syl->stages.front();
+  EXPECT_EQ(first.start, StageStart::File);
+  EXPECT_EQ(first.file_hash.size(), 16u);  // the reader writes it
+  EXPECT_EQ(*read_syllabus(syllabus_to_toml(*syl), "resolved"), *syl);
+  auto make = [&](const std::string& name) {
+    const std::string run = (dir / name).string();
+    EXPECT_TRUE(create_run(run, *syl, kFromFile, "test.toml", 4).ok());
+    return run;
+  };
+  const std::string whole = make("whole");
+  ASSERT_TRUE(drive_run(whole, {0, true, 0}).ok());
+  auto store = RunStore::open(run_db_path(whole));
+  ASSERT_TRUE(store.ok());
+  auto founder = (*store)->individual(0);
+  ASSERT_TRUE(founder.ok());
+  EXPECT_EQ(founder->op, "file");
+  EXPECT_EQ(founder->parent1, -1);
+  Genome walker = bxtest::load_creature("walker.json");
+  for (NodeGene& n : walker.nodes) n.lock |= kLockBody | kLockJoint | kLockInEdges | kLockOutEdges;
+  EXPECT_EQ(*graph_genome(*founder->genotype), walker);
+  auto mutant = (*store)->individual(1);
+  ASSERT_TRUE(mutant.ok());
+  EXPECT_EQ(mutant->op, "mutation");
+  EXPECT_EQ(mutant->parent1, -1);
+  const std::string expected = dump(whole);
+  for (int stop : {1, 2, 3}) {
+    const std::string run = make("stop" + std::to_string(stop));
+    ASSERT_TRUE(drive_run(run, {0, true, stop}).ok());
+    ASSERT_TRUE(drive_run(run, {1, true, 0}).ok());
+    EXPECT_EQ(dump(run), expected) << "stopped after " << stop;
+  }
+}
+
+TEST_F(Stages, AStartFileThatIsMissingBadOrChangedIsRefused) {
+  const std::string base = "[genome]\ndialect = \"sims1994\"\n[[stage]]\nname = \"a\"\n";
+  EXPECT_EQ(error_of(base + "start = \"file\"\n"),
+            "s.toml: stage 1.file: start = \"file\" needs the genome file to start from (a canonical creature's name, "
+            "creatures/, or a path)");
+  EXPECT_EQ(error_of(base + "file = \"walker\"\n"),
+            "s.toml: stage 1.file: given, but the stage starts \"random\" (start = \"file\" starts from it)");
+  EXPECT_EQ(error_of(base + "start = \"file\"\nfile = \"walkr\"\n"),
+            "s.toml: stage 1.file: \"walkr\": no canonical creature of that name (did you mean \"walker\"?) (creatures/ "
+            "has " + std::to_string(shipped_creatures().size()) + ") and no such file");
+  EXPECT_EQ(error_of(base + "[[stage]]\nname = \"b\"\nstart = \"file\"\nfile = \"walker\"\n"),
+            "s.toml: stage 2.start: only the first stage starts from a file (a later one starts from what the last left: "
+            "best or population), got \"file\"");
+  const std::string bad = (dir / "bad.json").string();
+  ASSERT_TRUE(write_file_atomic(bad, "{\"nodes\": 3}").ok());
+  EXPECT_EQ(error_of(base + "start = \"file\"\nfile = \"" + bad + "\"\n").rfind("s.toml: stage 1.file: " + bad, 0), 0u);
+  // a creature of another dialect: refused before the run begins
+  auto other = read_syllabus(base + "start = \"file\"\nfile = \"lessin_crawler\"\n", "s.toml");
+  ASSERT_TRUE(other.ok()) << other.error();
+  Status s = check_run(*other);
+  ASSERT_FALSE(s.ok());
+  EXPECT_EQ(s.error(), "stage \"a\": file: creature lessin_crawler (shipped): genotype: dialect is lessin2015, the run's "
+                       "is sims1994");
+  // a file changed since the run began: the run will not start from it
+  const std::string mine = (dir / "mine.json").string();
+  auto walker = read_creature_text("walker");
+  ASSERT_TRUE(walker.ok());
+  ASSERT_TRUE(write_file_atomic(mine, walker->text).ok());
+  const std::string text = base + "start = \"file\"\nfile = \"" + mine + "\"\n";
+  auto syl = read_syllabus(text, "s.toml");
+  ASSERT_TRUE(syl.ok()) << syl.error();
+  const std::string run = (dir / "run").string();
+  ASSERT_TRUE(create_run(run, *syl, text, "s.toml", 1).ok());
+  ASSERT_TRUE(write_file_atomic(mine, walker->text + "\n").ok());
+  s = drive_run(run, {0, true, 0});
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.error().find("stage \"a\": file: " + mine + " has changed since the run began"), std::string::npos)
+      << s.error();
 }
 
 // the steady state's budget counts the creatures born in each stage

@@ -1,4 +1,4 @@
-// The canonical creatures of tests/creatures/, read and developed for a test.
+// The canonical creatures of creatures/, read and developed for a test.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -10,9 +10,9 @@
 
 namespace bxtest {
 
-/// The genome of tests/creatures/NAME (a test failure, and an empty genome, if it does not read).
+/// The genome of creatures/NAME (a test failure, and an empty genome, if it does not read).
 inline bx::Genome load_creature(const std::string& name) {
-  auto g = bx::load_genome(std::string(BESTIARY_SOURCE_DIR) + "/tests/creatures/" + name);
+  auto g = bx::load_genome(std::string(BESTIARY_SOURCE_DIR) + "/creatures/" + name);
   EXPECT_TRUE(g.ok()) << g.error();
   return g.ok() ? *g : bx::Genome{};
 }

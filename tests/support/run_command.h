@@ -72,7 +72,7 @@ inline Outcome bestiary(const std::string& args) {
 
 /// A canonical creature's genome file.
 inline std::string creature(const std::string& name) {
-  return std::string(BESTIARY_SOURCE_DIR) + "/tests/creatures/" + name;
+  return std::string(BESTIARY_SOURCE_DIR) + "/creatures/" + name;
 }
 
 /// The whole content of a file ("" if missing).

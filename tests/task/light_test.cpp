@@ -374,7 +374,7 @@ TEST(Light, TheConfigReadsTheLightKeysAndTrialsMustCoverTheHeadings) {
   EXPECT_TRUE(read_run_config("[genome]\ndialect = \"lessin2015\"\n[light]\nheadings = [0, 90, 180]\n", "run.toml").ok());
 }
 
-// tests/creatures/lessin_eyes.json: a box with two eyes looking forward,
+// creatures/lessin_eyes.json: a box with two eyes looking forward,
 // 26.6 degrees to either side; it has no muscles and sits where it lands
 Development eyes(const SimConfig& c) {
   Development d = develop(bxtest::load_creature("lessin_eyes.json"), c.develop);

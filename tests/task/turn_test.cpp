@@ -222,7 +222,7 @@ TEST(TurnEval, AConfigPicksTheTurnAndACreatureThatDoesNotTurnScoresNothing) {
   EXPECT_EQ(task_seconds(c), 6);
   EXPECT_EQ(task_drop_height(c), 0.01);
   EXPECT_EQ(task_drop_height_key(c), "turn.drop_height");
-  // tests/creatures/lessin_crawler.json rows along when its muscles pulse
+  // creatures/lessin_crawler.json rows along when its muscles pulse
   // (tests/eval/lessin_crawler_test.cpp); held at a constant activation it
   // lies still after the first pull, and turns nothing worth a score
   const Genome g = bxtest::load_creature("lessin_crawler.json");

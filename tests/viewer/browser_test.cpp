@@ -113,7 +113,7 @@ TEST_F(ViewerInBrowser, DrawsTheWalkerAndItMoves) {
 }
 
 TEST_F(ViewerInBrowser, AConstantEffectorAndAJointHeldAtItsStopAreMarkedAt800x600) {
-  // tests/creatures/pinned.json: an effector fixed at -1 holds its hinge at
+  // creatures/pinned.json: an effector fixed at -1 holds its hinge at
   // the stop (-0.5 rad); the contact sensor on the top face never touches
   fs::path page = dir / "pinned.html";
   ASSERT_EQ(bestiary("show " + creature("pinned.json") + " --out " + page.string()).code, 0);
@@ -152,7 +152,7 @@ TEST_F(ViewerInBrowser, ACentipedesManySignalsFitAt1920x1080) {
 }
 
 TEST_F(ViewerInBrowser, ACatapultsProjectileFliesAwayWithItsTrajectoryDrawn) {
-  // tests/creatures/catapult.json releases at 0.5 s and throws about 2.5 m
+  // creatures/catapult.json releases at 0.5 s and throws about 2.5 m
   fs::path page = dir / "catapult.html";
   ASSERT_EQ(bestiary("show " + creature("catapult.json") + " --out " + page.string()).code, 0);
   json seen = inspect(page, "catapult", "--times 0.2,2.5");
@@ -206,7 +206,7 @@ TEST_F(ViewerInBrowser, ARiverCrossingsGridStonesHeatMapAndCountersAreDrawn) {
 }
 
 TEST_F(ViewerInBrowser, DevelopmentRemarksAreMutedNotesNotErrors) {
-  // tests/creatures/lcp_failure.json: two neuron inputs whose source the body
+  // creatures/lcp_failure.json: two neuron inputs whose source the body
   // lacks (they read 0), as evolved genomes often have; it does not fail
   fs::path page = dir / "remarks.html";
   ASSERT_EQ(bestiary("show " + creature("lcp_failure.json") + " --seconds 1 --out " + page.string()).code, 0);
