@@ -18,7 +18,11 @@ constexpr double kRepeatedContact = 1e-9;
 
 void World::Impl::collide(dGeomID a, dGeomID b) {
   dBodyID ba = dGeomGetBody(a), bb = dGeomGetBody(b);
-  if (ba && bb) {
+  const int prop_a = prop_of(a), prop_b = prop_of(b);
+  const bool prop = prop_a >= 0 || prop_b >= 0;
+  // a prop touches the creature's parts only (not the ground, not a prop)
+  if (prop && (part_of(a) < 0) == (part_of(b) < 0)) return;
+  if (ba && bb && !prop) {
     // parts joined by a joint collide only when it says so
     // (JointModel::parts_collide); others only with self_collision, unless
     // one of them was set free
@@ -32,7 +36,8 @@ void World::Impl::collide(dGeomID a, dGeomID b) {
     }
   }
   int n = dCollide(a, b, def.max_contacts, &contact_buf[0].geom, sizeof(dContact));
-  if (n > 0 && ba && bb) touching[part_of(a)] = touching[part_of(b)] = 1;
+  if (n > 0 && prop) prop_touched[static_cast<std::size_t>(std::max(prop_a, prop_b))] = 1;
+  else if (n > 0 && ba && bb) touching[part_of(a)] = touching[part_of(b)] = 1;
   for (int i = 0; i < n; ++i) {
     dContact& c = contact_buf[i];
     // a point ODE's collider gave twice (a capsule against a box or a capsule
@@ -63,9 +68,9 @@ void World::Impl::collide(dGeomID a, dGeomID b) {
       c.surface.soft_cfm = def.contact_cfm;
     }
     stats.max_penetration = std::max(stats.max_penetration, static_cast<double>(c.geom.depth));
-    // the first body never the ground's
+    // the first body never the ground's (nor a prop's: a spinning one has a body)
     Contact ct{c, ba, bb, (c.surface.mode & dContactRolling) != 0};
-    if (!ct.a) {
+    if (!ct.a || prop_a >= 0) {
       std::swap(ct.a, ct.b);
       std::swap(ct.c.geom.g1, ct.c.geom.g2);
       for (int i = 0; i < 3; ++i) ct.c.geom.normal[i] = -ct.c.geom.normal[i];

@@ -167,6 +167,7 @@ void World::step() {
   auto& w = *impl_;
   std::fill(w.contact_mask.begin(), w.contact_mask.end(), 0);
   std::fill(w.touching.begin(), w.touching.end(), 0);
+  std::fill(w.prop_touched.begin(), w.prop_touched.end(), 0);
   w.contacts.clear();
   dSpaceCollide(w.space, &w, &Impl::near_callback);
   w.attach_contacts();

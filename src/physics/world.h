@@ -29,10 +29,10 @@ struct WorldStats {
   double max_penetration = 0;     ///< m: the deepest contact, with the ground or between parts
 };
 
-/// What a geom of the world belongs to: the ground, or part `index` of the
-/// creature. (lessin2015's props and lights join these kinds.)
+/// What a geom of the world belongs to: the ground, part `index` of the
+/// creature, or prop `index` (World::add_prop).
 struct WorldEntity {
-  enum class Kind { Ground, Part };
+  enum class Kind { Ground, Part, Prop };
   Kind kind = Kind::Ground;
   int index = 0;
   friend bool operator==(const WorldEntity&, const WorldEntity&) = default;
@@ -56,6 +56,22 @@ struct Light {
   double strength = 1;
   double range = 1;  ///< m: where its reading has halved
   friend bool operator==(const Light&, const Light&) = default;
+};
+
+/// A solid the world holds beside the creature and the ground (lessin2015's
+/// targets): shaped as a part is (a cylinder's or capsule's axis along its
+/// pose's x axis, length size.x and diameter size.y), fixed where it is
+/// placed, or turning about the world's vertical through its centre at
+/// `spin` rad/s (counterclockwise seen from above), which nothing the
+/// creature does can slow: it is kinematic, of unlimited mass. Parts collide
+/// with it (with the world's friction), rays hit it; it touches neither the
+/// ground nor other props.
+struct Prop {
+  Shape shape = Shape::Box;
+  Vec3 size{1, 1, 1};
+  Pose pose;
+  double spin = 0;  ///< rad/s about the vertical
+  friend bool operator==(const Prop&, const Prop&) = default;
 };
 
 /// A simulated world holding one creature. Not copyable; one per evaluation.
@@ -135,6 +151,15 @@ class World {
   /// itself) along the ray from `origin` in direction `dir` (need not be
   /// unit length) within `length` m; hit = false when nothing is that close.
   RayHit ray(Vec3 origin, Vec3 dir, double length) const;
+
+  /// Adds a prop (at any time: a task places its props when it needs them)
+  /// and returns its index, from 0 in the order they were added.
+  int add_prop(const Prop& p);
+  int n_props() const;
+  /// Where prop k is now (a spinning one has turned spin x time since it was added).
+  Pose prop_pose(int k) const;
+  /// Whether any part of the creature touched prop k in the last step.
+  bool prop_touched(int k) const;
 
   /// The lights photoreceptors see from now on (a task may move them each step).
   void set_lights(std::vector<Light> lights);

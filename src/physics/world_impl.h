@@ -78,6 +78,15 @@ struct World::Impl {
   std::vector<std::uint8_t> touching;  // per part: touched another part this step
   std::vector<bool> free_part;  // freed by a broken joint: collides with every part
   std::vector<Light> lights;
+  // props.cpp: each prop's geom, its body (a spinning one's kinematic body,
+  // else none) and whether a part touched it in the step
+  struct PropState {
+    dGeomID geom = nullptr;
+    dBodyID body = nullptr;
+    Prop def;
+  };
+  std::vector<PropState> props;
+  std::vector<std::uint8_t> prop_touched;
   // per sensor: a photoreceptor's place on its part's surface (part frame)
   std::vector<Vec3> receptor_points;
   // the joints whose two parts collide (JointModel::parts_collide)
@@ -204,7 +213,13 @@ struct World::Impl {
     return false;
   }
 
-  // the part index of a creature geom, or -1 (the ground)
+  // the prop index of a geom, or -1
+  static int prop_of(dGeomID g) {
+    const WorldEntity e = entity_of(g);
+    return e.kind == WorldEntity::Kind::Prop ? e.index : -1;
+  }
+
+  // the part index of a creature geom, or -1 (the ground, a prop)
   static int part_of(dGeomID g) {
     const WorldEntity e = entity_of(g);
     return e.kind == WorldEntity::Kind::Part ? e.index : -1;
