@@ -13,6 +13,7 @@
 #include "cli/creature.h"
 #include "core/files.h"
 #include "eval/evaluate.h"
+#include "eval/task_table.h"
 #include "eval/evaluator.h"
 #include "genome/dialect.h"
 #include "io/config.h"
@@ -222,8 +223,8 @@ int cmd_simulate(const SimulateArgs& a) {
     std::printf("\n%s\n", fitness_line(mean, creature->stored_fitness).c_str());
   }
   if (!res.trial_fitness.empty()) {
-    // task.trials > 1: the lines above are the first trial's, the fitness the mean or least
-    std::printf("fitness is the %s of %zu trials (the lines above are the first's):", score_name(cfg.trial_score),
+    // task.trials > 1: the lines above are the first trial's, the fitness their fold (mean, least, the task's own)
+    std::printf("fitness is the %s of %zu trials (the lines above are the first's):", trial_fold_name(cfg).c_str(),
                 res.trial_fitness.size());
     for (double f : res.trial_fitness) std::printf(" %.6g", f);
     std::printf("\n");

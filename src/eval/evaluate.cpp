@@ -188,6 +188,14 @@ double fold_score(TrialScore how, double so_far, int n, double next) {
   return how == TrialScore::Min ? std::min(so_far, next) : so_far + (next - so_far) / (n + 1);
 }
 
+double fold_scores(TrialScore how, std::span<const double> scores) {
+  if (scores.empty()) return 0;
+  if (how == TrialScore::Min) return *std::min_element(scores.begin(), scores.end());
+  double sum = 0;
+  for (double s : scores) sum += s;
+  return sum / static_cast<double>(scores.size());
+}
+
 SimConfig divided_step_config(const SimConfig& cfg, int divisor) {
   SimConfig c = cfg;
   c.physics.dt /= divisor;
@@ -246,12 +254,9 @@ EvalResult evaluate(const CreatureModel& m, const ControllerModel& controller, c
   // the first trial is the one a replay shows and the one distance, release
   // and target miss describe; the others only score
   res.trial_fitness = {res.fitness};
-  double fitness = res.fitness, least = res.fitness;
   for (int k = 1; k < cfg.trials; ++k) {
     EvalResult t = evaluate_once(m, controller, cfg, trial_seed(seed, k), k, nullptr);
     res.trial_fitness.push_back(t.fitness);
-    fitness += t.fitness;
-    least = std::min(least, t.fitness);
     res.steps += t.steps;
     res.brain_steps += t.brain_steps;
     if (t.failed && !res.failed) {
@@ -261,7 +266,7 @@ EvalResult evaluate(const CreatureModel& m, const ControllerModel& controller, c
     }
   }
   // a creature that blows up in any trial is discarded (5.4), as in one
-  res.fitness = res.failed ? 0 : cfg.trial_score == TrialScore::Min ? least : fitness / cfg.trials;
+  res.fitness = res.failed ? 0 : fold_trials(cfg, res.trial_fitness);
   return res;
 }
 

@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -133,6 +134,8 @@ std::uint64_t repeat_seed(std::uint64_t seed, int k);
 /// The one way a run and the commands that reproduce its scores fold
 /// repeated evaluations, so both get the same double.
 double fold_score(TrialScore how, double so_far, int n, double next);
+/// The same of all of them at once: their mean or least (0 for none).
+double fold_scores(TrialScore how, std::span<const double> scores);
 /// What fold_score takes of the evaluations, for messages: "mean" or "least".
 const char* score_name(TrialScore how);
 

@@ -2,6 +2,8 @@
 
 #include <string>
 
+#include "eval/evaluate.h"
+
 #include "task/light.h"
 #include "task/locomotion.h"
 #include "task/river/river_task.h"
@@ -79,13 +81,14 @@ std::vector<SimField> strike_fields() {
 
 // lessin2015's light tasks (skills 4, 5, 8 and 9): trial k's light at heading k
 Result<std::unique_ptr<Task>> make_light(const CreatureModel& m, const SimConfig& cfg, std::uint64_t, int trial) {
-  return std::unique_ptr<Task>(new LightTask(cfg.light, cfg.physics.dt, m.n_parts(), trial));
+  return std::unique_ptr<Task>(new LightTask(cfg.light, cfg.strike, cfg.physics.dt, m.n_parts(), trial));
 }
 
 std::vector<SimField> light_fields() {
   return {
-      {"light", "goal", SimField::Choice, 0, 0, {"face", "approach", "face_away", "retreat"}, [](SimConfig& c) -> void* { return &c.light.goal; }, "light: face (turn to face it: lessin2015 skill 4, TURN TO LIGHT), approach (get to it: skill 5, MOVE TO LIGHT), face_away (skill 8, TURN FROM LIGHT) or retreat (get away: skill 9, RETREAT)"},
+      {"light", "goal", SimField::Choice, 0, 0, {"face", "approach", "face_away", "retreat", "attack"}, [](SimConfig& c) -> void* { return &c.light.goal; }, "light: face (turn to face it: lessin2015 skill 4, TURN TO LIGHT), approach (get to it: skill 5, MOVE TO LIGHT), face_away (skill 8, TURN FROM LIGHT), retreat (get away: skill 9, RETREAT) or attack (get to it and strike the ground there, a strike as the strike task's keys measure it: skill 7, ATTACK)"},
       {"light", "headings", SimField::Reals, -360, 360, {}, [](SimConfig& c) -> void* { return &c.light.headings; }, "light: its bearing from the creature's forward (its root's x axis on the ground) when measuring begins (degrees, counterclockwise positive), trial k taking the (k mod n)-th of these n: task.trials must be a whole multiple of n"},
+      {"light", "dark_trials", SimField::Int, 0, 1000, {}, [](SimConfig& c) -> void* { return &c.light.dark_trials; }, "light, attack: after the headings' trials, this many with no light (a strike in one multiplies the fitness by wrong_factor): trial k is dark when k mod (n + dark_trials) >= n"},
       {"light", "distance", SimField::Real, 0, 1e6, {}, [](SimConfig& c) -> void* { return &c.light.distance; }, "light: placed this far on the ground from the centre of mass (m)"},
       {"light", "height", SimField::Real, 0, 1e6, {}, [](SimConfig& c) -> void* { return &c.light.height; }, "light: at this height above the ground (m)"},
       {"light", "strength", SimField::Real, 0, 1e6, {}, [](SimConfig& c) -> void* { return &c.light.strength; }, "light: a photoreceptor facing it from d metres reads strength / (1 + (d / range)^2) ..."},
@@ -104,15 +107,33 @@ std::vector<SimField> light_fields() {
   };
 }
 
-// every heading its trial: as many trials as headings, or a whole multiple
+// every heading its trial (and every dark trial its own): as many trials as
+// headings (and dark trials), or a whole multiple
 Status light_check(const SimConfig& c) {
   const std::size_t n = c.light.headings.size();
   if (n == 0) return Error{"light.headings: needs at least one heading, got []"};
-  if (c.trials % static_cast<int>(n) != 0)
+  if (c.light.dark_trials > 0 && c.light.goal != LightGoal::Attack)
+    return Error{"light.dark_trials: only the attack goal has dark trials, got " + std::to_string(c.light.dark_trials)};
+  const int cycle = static_cast<int>(n) + c.light.dark_trials;
+  if (c.trials % cycle != 0)
     return Error{"task.trials: the light task runs trial k with the (k mod n)-th of light.headings' n = " +
-                 std::to_string(n) + " headings, so task.trials must be a whole multiple of " + std::to_string(n) +
-                 ", got " + std::to_string(c.trials)};
+                 std::to_string(n) + " headings" +
+                 (c.light.dark_trials > 0 ? " (then light.dark_trials = " + std::to_string(c.light.dark_trials) +
+                                                " dark ones)"
+                                          : std::string()) +
+                 ", so task.trials must be a whole multiple of " + std::to_string(cycle) + ", got " +
+                 std::to_string(c.trials)};
   return Ok{};
+}
+
+// the light task folds attack's trials its own way (attack_fold)
+double light_fold(const SimConfig& c, std::span<const double> trials) {
+  if (c.light.goal == LightGoal::Attack) return attack_fold(c.light, trials);
+  return fold_scores(c.trial_score, trials);
+}
+std::string light_fold_name(const SimConfig& c) {
+  if (c.light.goal != LightGoal::Attack) return score_name(c.trial_score);
+  return "attack fold (the lit trials' mean times the dark ones' mean of 1, or light.wrong_factor after a strike)";
 }
 
 double& locomotion_seconds(SimConfig& c) { return c.task.seconds; }
@@ -140,12 +161,22 @@ const TaskRow kTasks[] = {
     {TaskKind::Strike, "strike", make_strike, strike_seconds, strike_drop, "strike.seconds", "strike.drop_height",
      strike_fields},
     {TaskKind::Light, "light", make_light, light_seconds, light_drop, "light.seconds", "light.drop_height", light_fields,
-     light_check},
+     light_check, light_fold, light_fold_name},
 };
 
 }  // namespace
 
 const TaskRow& task_row(TaskKind kind) { return kTasks[static_cast<int>(kind)]; }
+
+double fold_trials(const SimConfig& cfg, std::span<const double> trials) {
+  const TaskRow& row = task_row(cfg.task_kind);
+  return row.fold ? row.fold(cfg, trials) : fold_scores(cfg.trial_score, trials);
+}
+
+std::string trial_fold_name(const SimConfig& cfg) {
+  const TaskRow& row = task_row(cfg.task_kind);
+  return row.fold_name ? row.fold_name(cfg) : score_name(cfg.trial_score);
+}
 
 std::vector<std::string_view> task_kind_names() {
   std::vector<std::string_view> out;

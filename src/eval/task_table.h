@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <string_view>
 #include <vector>
 
@@ -35,6 +36,12 @@ struct TaskRow {
   /// Its rules between keys, checked by the config reader when it is the
   /// config's task (none: no rules), or which keys disagree and how.
   Status (*check)(const SimConfig&) = nullptr;
+  /// How it folds an evaluation's trial scores (task.trials of them, in
+  /// trial order) into its fitness when it has its own way (lessin2015's
+  /// attack and fight-or-flight); nullptr: task.trial_score's mean or least.
+  double (*fold)(const SimConfig&, std::span<const double>) = nullptr;
+  /// What that fold is, for messages ("...: the fitness is X of N trials").
+  std::string (*fold_name)(const SimConfig&) = nullptr;
 };
 
 /// The row of a kind.
@@ -48,6 +55,12 @@ std::vector<SimField> task_fields();
 /// physics seed `seed`, or why it cannot have it (throwing needs a catapult).
 Result<std::unique_ptr<Task>> make_task(const CreatureModel& m, const SimConfig& cfg, std::uint64_t seed,
                                         int trial);
+
+/// An evaluation's fitness from its trials' scores: the task's own fold
+/// (TaskRow::fold), else their mean or least (task.trial_score).
+double fold_trials(const SimConfig& cfg, std::span<const double> trials);
+/// What fold_trials takes of them, for messages: "mean", "least", or the task's own.
+std::string trial_fold_name(const SimConfig& cfg);
 
 /// The config's task's rules between its keys (TaskRow::check): Ok, or why not.
 Status check_task_keys(const SimConfig& cfg);

@@ -15,10 +15,14 @@ bool towards(LightGoal g) { return g == LightGoal::Face || g == LightGoal::Appro
 
 }  // namespace
 
-LightTask::LightTask(const LightDef& def, double dt, int n_parts, int trial)
-    : def_(def), phases_(settled_phases(def.seconds, def.drop_height, def.settle), dt, n_parts) {
-  const std::size_t n = def_.headings.size();
-  bearing_ = n ? def_.headings[static_cast<std::size_t>(std::max(0, trial)) % n] : 0;
+LightTask::LightTask(const LightDef& def, const StrikeDef& strike, double dt, int n_parts, int trial)
+    : def_(def),
+      phases_(settled_phases(def.seconds, def.drop_height, def.settle), dt, n_parts),
+      meter_(strike.window, strike.threshold, dt) {
+  const std::size_t n = def_.headings.size(), cycle = n + static_cast<std::size_t>(std::max(0, def_.dark_trials));
+  const std::size_t slot = cycle ? static_cast<std::size_t>(std::max(0, trial)) % cycle : 0;
+  dark_ = slot >= n;
+  bearing_ = dark_ ? 0 : def_.headings[slot];
   // the side the light is on, seen from the forward: none dead ahead or behind
   const double b = std::remainder(bearing_, 360.0);
   side_ = std::abs(b) < 1e-9 || std::abs(b) > 180 - 1e-9 ? 0 : b > 0 ? 1 : -1;
@@ -41,10 +45,11 @@ void LightTask::begin_measure(const Observation& o) {
   light_ = {c.x + def_.distance * std::cos(at), c.y + def_.distance * std::sin(at), def_.height};
   d0_ = d_ = d_min_ = distance_of(o);
   end_bearing_ = bearing_of(o);
+  meter_.start(o.time(), c.z);
 }
 
 void LightTask::act(const CreatureModel&, std::span<const double>, World& w, const Observation&) {
-  if (!measuring_ || placed_) return;
+  if (!measuring_ || placed_ || dark_) return;
   w.set_lights({Light{light_, def_.strength, def_.range}});
   placed_ = true;
 }
@@ -92,10 +97,14 @@ void LightTask::observe(const Observation& o) {
     wrong_turn_ = std::max(wrong_turn_, side_ * turned_);
     wrong_move_ = std::max(wrong_move_, d0_ - d_);
   }
+  if (def_.goal == LightGoal::Attack && !struck()) {
+    meter_.observe(o.time(), o.centre_of_mass().z);
+    if (meter_.first_strike() >= 0) strike_d_ = d_;
+  }
 }
 
 std::optional<Light> LightTask::light() const {
-  if (!measuring_) return std::nullopt;
+  if (!measuring_ || dark_) return std::nullopt;
   return Light{light_, def_.strength, def_.range};
 }
 
@@ -121,27 +130,55 @@ double LightTask::fitness() const {
     case LightGoal::FaceAway: f = facing(); break;
     case LightGoal::Approach: f = d0_ > 0 ? std::clamp((d0_ - d_min_) / d0_, 0.0, 1.0) : 0; break;
     case LightGoal::Retreat: f = def_.distance > 0 ? std::max(0.0, mean_gain()) / def_.distance : 0; break;
+    case LightGoal::Attack:
+      if (dark_) return struck() ? 0 : 1;
+      f = struck() && d0_ > 0 ? std::max(0.0, 1 - strike_d_ / d0_) : 0;
+      break;
   }
   return penalized() ? f * def_.wrong_factor : f;
 }
 
 TaskScore LightTask::score(const CreatureModel&) const {
-  return {fitness(),
-          d_,
-          {{"bearing", end_bearing_ * 180 / kPi},
-           {"facing", facing()},
-           {"start_distance", d0_},
-           {"end_distance", d_},
-           {"least_distance", d_min_},
-           {"wrong_turn", wrong_turn()},
-           {"wrong_move", wrong_move_},
-           {"muscle_work", phases_.measured_work()}}};
+  TaskScore out{fitness(),
+                d_,
+                {{"bearing", end_bearing_ * 180 / kPi},
+                 {"facing", facing()},
+                 {"start_distance", d0_},
+                 {"end_distance", d_},
+                 {"least_distance", d_min_},
+                 {"wrong_turn", wrong_turn()},
+                 {"wrong_move", wrong_move_},
+                 {"muscle_work", phases_.measured_work()}}};
+  if (def_.goal == LightGoal::Attack) {
+    const double t = meter_.first_strike();
+    out.metrics.push_back({"strike_time", struck() ? t - t_start_ : -1});
+    out.metrics.push_back({"strike_distance", strike_d_});
+  }
+  return out;
+}
+
+double attack_fold(const LightDef& def, std::span<const double> trials) {
+  const std::size_t n = def.headings.size(), cycle = n + static_cast<std::size_t>(std::max(0, def.dark_trials));
+  double lit = 0, factor = 0;
+  long n_lit = 0, n_dark = 0;
+  for (std::size_t k = 0; k < trials.size(); ++k) {
+    if (cycle == 0 || k % cycle < n) {
+      lit += trials[k];
+      ++n_lit;
+    } else {
+      // a dark trial scored 1 without a strike, 0 with one
+      factor += trials[k] > 0.5 ? 1 : def.wrong_factor;
+      ++n_dark;
+    }
+  }
+  const double mean = n_lit ? lit / static_cast<double>(n_lit) : 0;
+  return n_dark ? mean * factor / static_cast<double>(n_dark) : mean;
 }
 
 void LightTask::record(const Observation&, SceneRecord& out) {
   // the light holds from when it was placed for the rest of the replay (a
   // scene point holds throughout: the viewer shows it from the start)
-  if (!measuring_ || recorded_) return;
+  if (!measuring_ || recorded_ || dark_) return;
   out.points.push_back({"light", light_, kLightSize, kLightColor});
   out.markers.push_back({"light on", t_start_});
   recorded_ = true;

@@ -7,17 +7,22 @@
 // a light source" with "a fitness term to discourage an initial
 // wrong-direction turn" and thirteen directions "particularly near the
 // front"; RETREAT, "maximize its average distance from a light target" with
-// "penalties for initial wrong-direction moves". The paper gives no formula;
-// LightDef's are ours (docs/config.md, "The light tasks").
+// "penalties for initial wrong-direction moves"; ATTACK, "an average across
+// four directions of distance from the target when the first sufficiently
+// strong ground impact occurs (with a penalty for producing such an impact
+// when the scene contains no light)". The paper gives no formula; LightDef's
+// are ours (docs/config.md, "The light tasks").
 #pragma once
 
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "core/math.h"
 #include "physics/world.h"
 #include "task/locomotion.h"
+#include "task/strike.h"
 #include "task/task.h"
 
 namespace bx {
@@ -30,6 +35,7 @@ enum class LightGoal {
   Approach,  ///< get to it (skill 5, MOVE TO LIGHT)
   FaceAway,  ///< turn to face away from it (skill 8, TURN FROM LIGHT)
   Retreat,   ///< get away from it (skill 9, RETREAT)
+  Attack,    ///< get to it and strike the ground there (skill 7, ATTACK)
 };
 
 /// A light task. As lessin2015's forward locomotion (the dialect's
@@ -54,7 +60,14 @@ enum class LightGoal {
 ///   approach:  (d0 - least d) / d0, in [0, 1];
 ///   retreat:   max(0, mean of d - d0 over the measured steps) / distance,
 ///              times `wrong_factor` when d fell below d0 by more than
-///              `wrong_move` within the first `early_seconds`.
+///              `wrong_move` within the first `early_seconds`;
+///   attack:    max(0, 1 - ds / d0), ds the d at the first strike (an
+///              impact reaching strike.threshold, measured as the strike
+///              task measures it: StrikeDef, ImpactMeter), which ends the
+///              trial; 0 without a strike. A dark trial (below) scores 1
+///              without a strike and 0 with one, and attack_fold() folds
+///              the trials: the lit ones' mean times the dark ones' mean
+///              of 1 (no strike) or wrong_factor (a strike).
 /// Never settling scores 0.
 struct LightDef {
   LightGoal goal = LightGoal::Face;
@@ -67,6 +80,11 @@ struct LightDef {
   /// +-72, +-144), face_away and retreat thirteen (0, +-10, +-20, +-30,
   /// +-45, +-90, +-135: seven within 30 degrees of the front), docs/config.md.
   std::vector<double> headings = {45, 135, -135, -45};
+  /// attack: after the headings, this many trials with no light at all
+  /// (the paper's penalty "for producing such an impact when the scene
+  /// contains no light"): trial k is dark when k mod (n + dark_trials) >= n,
+  /// n the headings' count. Only for attack.
+  int dark_trials = 0;
   /// From the centre of mass, on the ground (m): two and a half lengths of
   /// the 1.2 m lessin_crawler, so a creature must travel to reach it and
   /// can turn without touching it.
@@ -115,6 +133,11 @@ struct LightDef {
   friend bool operator==(const LightDef&, const LightDef&) = default;
 };
 
+/// attack's fold of an evaluation's trial scores (TaskRow::fold): the mean
+/// of the lit trials' times the mean over the dark trials of 1 (no strike)
+/// or wrong_factor (a strike); trial k lit or dark as LightTask's.
+double attack_fold(const LightDef& def, std::span<const double> trials);
+
 /// The light task of one trial. Its settle-then-measure phases are a
 /// LocomotionTask's (its activation "settled"), which it drives; it places
 /// the light (act(): World::set_lights) before the first measured step and
@@ -122,8 +145,9 @@ struct LightDef {
 class LightTask : public Task {
  public:
   /// Trial `trial` (0-based) of an evaluation: its light at
-  /// def.headings[trial % def.headings.size()] (0 degrees if there is none).
-  LightTask(const LightDef& def, double dt, int n_parts, int trial);
+  /// def.headings[trial % (n + def.dark_trials)] (0 degrees if there is
+  /// none), or none (a dark trial); `strike` measures attack's strikes.
+  LightTask(const LightDef& def, const StrikeDef& strike, double dt, int n_parts, int trial);
 
   Scenario scenario() const override { return {def_.drop_height}; }
   /// The settling timeout and the measured span, and a step.
@@ -133,13 +157,16 @@ class LightTask : public Task {
   void act(const CreatureModel&, std::span<const double>, World& w, const Observation&) override;
   void observe(const Observation& o) override;
   bool controller_on() const override { return phases_.controller_on(); }
-  bool done() const override { return phases_.done(); }
+  /// The measured span is over, or (attack) the first strike came.
+  bool done() const override { return phases_.done() || (def_.goal == LightGoal::Attack && struck()); }
   /// Fitness (LightDef); distance: the end's d (m); metrics: bearing (deg,
   /// the light from the heading at the end, counterclockwise positive),
   /// facing (the goal's facing score, before any penalty: the light for
   /// face and approach, away from it for face_away and retreat),
   /// start_distance, end_distance, least_distance (m), wrong_turn (deg),
-  /// wrong_move (m) and muscle_work (J, while measured).
+  /// wrong_move (m) and muscle_work (J, while measured); attack adds
+  /// strike_time (s into the measured span, -1: none) and strike_distance
+  /// (m, the d at the strike; -1: none).
   TaskScore score(const CreatureModel& m) const override;
   std::string note() const override { return phases_.note(); }
   /// The light, as a ScenePoint "light", and the moment it came on ("light on").
@@ -148,6 +175,11 @@ class LightTask : public Task {
 
   /// This trial's bearing (degrees).
   double bearing() const { return bearing_; }
+  /// Whether this trial has no light (attack's dark trials).
+  bool dark() const { return dark_; }
+  /// attack: whether the first strike has come (while measured), and d then (m).
+  bool struck() const { return strike_d_ >= 0; }
+  double strike_distance() const { return strike_d_; }
   /// The light, once measuring has begun.
   std::optional<Light> light() const;
   /// The goal's facing score (face: (1 + cos a) / 2; face_away: (1 - cos
@@ -181,6 +213,9 @@ class LightTask : public Task {
 
   LightDef def_;
   LocomotionTask phases_;
+  ImpactMeter meter_;
+  bool dark_ = false;
+  double strike_d_ = -1;  // d at the first strike (attack), -1 before
   double bearing_ = 0;       // deg
   double side_ = 0;          // +1 light on the left, -1 on the right, 0 ahead or behind
   bool measuring_ = false;

@@ -86,7 +86,7 @@ TEST(Light, TrialKPutsTheLightAtTheKthHeadingFromTheForward) {
   const LightDef def = def_of(LightGoal::Face);
   const double h0 = 0.3;
   for (int k = 0; k < 6; ++k) {
-    LightTask task(def, dt, 1, k);
+    LightTask task(def, StrikeDef{}, dt, 1, k);
     const double b = def.headings[static_cast<std::size_t>(k) % 4];  // trials 4 and 5 take headings 0 and 1
     EXPECT_EQ(task.bearing(), b);
     Creature o;
@@ -113,7 +113,7 @@ TEST(Light, TrialKPutsTheLightAtTheKthHeadingFromTheForward) {
 }
 
 TEST(Light, TheLightGoesOnOnceMeasuringBeginsAndTheSceneShowsIt) {
-  LightTask task(def_of(LightGoal::Face), dt, 1, 0);
+  LightTask task(def_of(LightGoal::Face), StrikeDef{}, dt, 1, 0);
   Creature o;
   World w{PhysicsDef{}};
   SceneRecord scene;
@@ -140,7 +140,7 @@ TEST(Light, TheLightGoesOnOnceMeasuringBeginsAndTheSceneShowsIt) {
 TEST(Light, FaceScoresOneFacingTheLightAndZeroFacingAway) {
   const double h0 = -2.9, b = 135;
   auto score = [&](double off) {
-    LightTask task(def_of(LightGoal::Face, {b}), dt, 1, 0);
+    LightTask task(def_of(LightGoal::Face, {b}), StrikeDef{}, dt, 1, 0);
     Creature o;
     o.h = h0;
     run(task, o, facing_off(h0, b * deg, off));
@@ -151,7 +151,7 @@ TEST(Light, FaceScoresOneFacingTheLightAndZeroFacingAway) {
   EXPECT_NEAR(score(kPi / 2), 0.5, 1e-12);
   EXPECT_NEAR(score(-kPi / 3), 0.75, 1e-12);  // (1 + cos a) / 2 on either side
   // doing nothing: (1 + cos bearing) / 2, 0.146 at 135 degrees
-  LightTask still(def_of(LightGoal::Face, {b}), dt, 1, 0);
+  LightTask still(def_of(LightGoal::Face, {b}), StrikeDef{}, dt, 1, 0);
   Creature o;
   run(still, o, [](double, Creature&) {});
   EXPECT_NEAR(still.fitness(), (1 + std::cos(b * deg)) / 2, 1e-12);
@@ -164,7 +164,7 @@ TEST(Light, FaceIsTheMeanOverTheSecondHalfAndATippedRootFacesNowhere) {
   // score a half and nine score 1
   const double b = 45;
   auto turner = [&](double s, Creature& o) { o.h = s < 2 ? b * deg + kPi : s < 3 ? b * deg - kPi / 2 : b * deg; };
-  LightTask task(def_of(LightGoal::Face, {b}), dt, 1, 0);
+  LightTask task(def_of(LightGoal::Face, {b}), StrikeDef{}, dt, 1, 0);
   Creature o;
   o.h = 0;
   run(task, o, turner);
@@ -172,13 +172,13 @@ TEST(Light, FaceIsTheMeanOverTheSecondHalfAndATippedRootFacesNowhere) {
   // from the start of the span (score_from = 0): the first half's 15 steps facing away count 0
   LightDef all = def_of(LightGoal::Face, {b});
   all.score_from = 0;
-  LightTask whole(all, dt, 1, 0);
+  LightTask whole(all, StrikeDef{}, dt, 1, 0);
   Creature o2;
   run(whole, o2, turner);
   EXPECT_NEAR(whole.fitness(), (8 * 0.5 + 9 * 1.0) / 32, 1e-12);
   // facing the light with its root pitched up 70 degrees (x axis 0.34 of
   // its length on the ground, under min_level) from 3 s on: those steps count 0
-  LightTask tipped(def_of(LightGoal::Face, {b}), dt, 1, 0);
+  LightTask tipped(def_of(LightGoal::Face, {b}), StrikeDef{}, dt, 1, 0);
   Creature o3;
   run(tipped, o3, [&](double s, Creature& o) {
     o.h = b * deg;
@@ -190,7 +190,7 @@ TEST(Light, FaceIsTheMeanOverTheSecondHalfAndATippedRootFacesNowhere) {
 TEST(Light, FaceAwayScoresTheOppositeAndPunishesAnInitialTurnTowardsTheLight) {
   const double b = 30;  // ahead and to the left: the way away is a right turn
   auto run_with = [&](const LightDef& def, const std::function<void(double, Creature&)>& pose) {
-    LightTask task(def, dt, 1, 0);
+    LightTask task(def, StrikeDef{}, dt, 1, 0);
     Creature o;
     run(task, o, pose);
     return task;
@@ -250,7 +250,7 @@ TEST(Light, FaceAwayScoresTheOppositeAndPunishesAnInitialTurnTowardsTheLight) {
 TEST(Light, ApproachScoresTheShareOfTheDistanceClosed) {
   const double b = -72;
   auto approach = [&](double share_closed_at_most, bool back) {
-    LightTask task(def_of(LightGoal::Approach, {b}), dt, 1, 0);
+    LightTask task(def_of(LightGoal::Approach, {b}), StrikeDef{}, dt, 1, 0);
     Creature o;
     o.h = 0.4;
     const Vec3 c0 = o.com, to{std::cos(0.4 + b * deg), std::sin(0.4 + b * deg), 0};
@@ -275,7 +275,7 @@ TEST(Light, ApproachScoresTheShareOfTheDistanceClosed) {
 TEST(Light, RetreatScoresTheMeanDistanceGainedAndPunishesAnInitialMoveTowardsTheLight) {
   const double b = 10;
   auto retreat = [&](const LightDef& def, const std::function<double(double)>& gain) {
-    LightTask task(def, dt, 1, 0);
+    LightTask task(def, StrikeDef{}, dt, 1, 0);
     Creature o;
     const Vec3 c0 = o.com, from{-std::cos(b * deg), -std::sin(b * deg), 0};  // away from the light
     run(task, o, [&](double s, Creature& c) { c.com = c0 + gain(s) * from; });
@@ -309,7 +309,7 @@ TEST(Light, RetreatScoresTheMeanDistanceGainedAndPunishesAnInitialMoveTowardsThe
 
 TEST(Light, NeverSettlingScoresNothingAndNoLightComesOn) {
   const LightDef def = def_of(LightGoal::Face, {0});
-  LightTask task(def, dt, 1, 0);
+  LightTask task(def, StrikeDef{}, dt, 1, 0);
   EXPECT_EQ(task.max_steps(), std::lround((def.settle.timeout + def.seconds) / dt) + 1);
   Creature o;
   World w{PhysicsDef{}};
