@@ -82,6 +82,7 @@ struct Mat3 {
         r.m[i][j] = a.m[i][0] * b.m[0][j] + a.m[i][1] * b.m[1][j] + a.m[i][2] * b.m[2][j];
     return r;
   }
+  friend bool operator==(const Mat3&, const Mat3&) = default;
 };
 
 /// Rotation from intrinsic x-y-z Euler angles (roll about x, then pitch about the
@@ -114,12 +115,24 @@ inline Quat to_quat(const Mat3& r) {
   }
   return q;
 }
+/// The rotation matrix of quaternion q, normalized first (a file's quaternion
+/// is rounded); q must not be 0.
+inline Mat3 from_quat(Quat q) {
+  const double n = std::sqrt(q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z);
+  const double w = q.w / n, x = q.x / n, y = q.y / n, z = q.z / n;
+  Mat3 r;
+  r.m = {{{1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)},
+          {2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)},
+          {2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)}}};
+  return r;
+}
 
 /// A rigid placement: position and proper rotation (local -> world).
 struct Pose {
   Vec3 p;
   Mat3 R;
   Vec3 apply(Vec3 local) const { return p + R * local; }
+  friend bool operator==(const Pose&, const Pose&) = default;
 };
 
 constexpr double kPi = 3.14159265358979323846;

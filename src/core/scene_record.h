@@ -3,7 +3,8 @@
 // member of its own in EvalResult, Replay or the task interface
 // (docs/replay-format.md, `scene.record`). Two halves:
 // - items that hold for the whole replay: named moments (a catapult's
-//   release), named points (its target), named parts to highlight (its
+//   release), named points (its target), props (solids shown from a time
+//   on: a fight-or-flight target), named parts to highlight (its
 //   projectile), and the kinds of cell a grid may hold;
 // - events in time order, each stamped with its time: a grid laid, one cell
 //   changed, an item carried, a field over the grid, a counter's new value.
@@ -36,6 +37,24 @@ struct ScenePoint {
   double size = 0.1;
   std::string color;
   friend bool operator==(const ScenePoint&, const ScenePoint&) = default;
+};
+
+/// A solid shown beside the creature from time `t` (s) on (a fight-or-flight
+/// target): shaped as a creature's part is ("box", "sphere", "capsule" or
+/// "cylinder"; a capsule's or cylinder's axis along its pose's x axis, its
+/// length size.x and diameter size.y; a sphere's diameter size.x), at `pose`
+/// (world frame) when it appears, turning from then on about the world's
+/// vertical through its centre at `spin` rad/s (counterclockwise seen from
+/// above), in `color` ("#rrggbb").
+struct SceneProp {
+  std::string name;
+  std::string shape;
+  Vec3 size;
+  Pose pose;
+  double spin = 0;
+  double t = 0;
+  std::string color;
+  friend bool operator==(const SceneProp&, const SceneProp&) = default;
 };
 
 /// A named part of the creature, drawn in `color`: a catapult's "projectile".
@@ -111,6 +130,7 @@ struct SceneEvent {
 struct SceneRecord {
   std::vector<SceneMarker> markers;
   std::vector<ScenePoint> points;
+  std::vector<SceneProp> props;
   std::vector<ScenePart> parts;
   std::vector<SceneCellKind> cell_kinds;
   std::vector<SceneEvent> events;
@@ -127,7 +147,7 @@ struct SceneRecord {
     return std::nullopt;
   }
   bool empty() const {
-    return markers.empty() && points.empty() && parts.empty() && cell_kinds.empty() && events.empty();
+    return markers.empty() && points.empty() && props.empty() && parts.empty() && cell_kinds.empty() && events.empty();
   }
   friend bool operator==(const SceneRecord&, const SceneRecord&) = default;
 };

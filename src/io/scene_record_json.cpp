@@ -1,7 +1,9 @@
 #include "io/scene_record_json.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <iterator>
 #include <stdexcept>
 #include <type_traits>
 
@@ -15,6 +17,14 @@ namespace {
 using nlohmann::json;
 
 json vec_json(Vec3 v) { return json::array({round_to(v.x, 1e-6), round_to(v.y, 1e-6), round_to(v.z, 1e-6)}); }
+
+// a pose as a replay's frames hold one: [x, y, z, qw, qx, qy, qz]
+json pose_json(const Pose& p) {
+  const Quat q = to_quat(p.R);
+  json a = vec_json(p.p);
+  for (double v : {q.w, q.x, q.y, q.z}) a.push_back(round_to(v, 1e-6));
+  return a;
+}
 
 // one event's payload, under its type's name
 json event_json(const SceneEvent& e) {
@@ -117,6 +127,23 @@ Vec3 vec(const json& j, const std::string& path, const char* key) {
   return out;
 }
 
+// a pose as pose_json writes it; its quaternion of unit length, but for the
+// file's rounding (or a hand-written one's)
+Pose pose(const json& j, const std::string& path, const char* key) {
+  const json& v = at(j, path, key);
+  const char* what = "expected [x, y, z, qw, qx, qy, qz] with a unit quaternion";
+  if (!v.is_array() || v.size() != 7) fail(path + "." + key, what, v);
+  double x[7];
+  for (std::size_t i = 0; i < 7; ++i) {
+    if (!v[i].is_number()) fail(path + "." + key, what, v);
+    x[i] = v[i].get<double>();
+  }
+  const double n = std::sqrt(x[3] * x[3] + x[4] * x[4] + x[5] * x[5] + x[6] * x[6]);
+  if (!(std::abs(n - 1) <= 1e-3)) fail(path + "." + key, what, v);
+  return {{x[0], x[1], x[2]}, from_quat({x[3], x[4], x[5], x[6]})};
+}
+
+const char* const kShapes[] = {"box", "sphere", "capsule", "cylinder"};
 constexpr int kMaxCells = 1 << 20;
 const char* const kEventTypes[] = {"grid", "cell", "carry", "field", "counter"};
 
@@ -215,6 +242,18 @@ json scene_record_to_json(const SceneRecord& r) {
       a.push_back({{"name", p.name}, {"p", vec_json(p.p)}, {"size", round_to(p.size, 1e-6)}, {"color", p.color}});
     j["points"] = a;
   }
+  if (!r.props.empty()) {
+    json a = json::array();
+    for (const SceneProp& p : r.props)
+      a.push_back({{"name", p.name},
+                   {"shape", p.shape},
+                   {"size", vec_json(p.size)},
+                   {"pose", pose_json(p.pose)},
+                   {"spin", round_to(p.spin, 1e-6)},
+                   {"t", round_to(p.t, 1e-6)},
+                   {"color", p.color}});
+    j["props"] = a;
+  }
   if (!r.parts.empty()) {
     json a = json::array();
     for (const ScenePart& p : r.parts) a.push_back({{"name", p.name}, {"part", p.part}, {"color", p.color}});
@@ -251,6 +290,24 @@ Result<SceneRecord> scene_record_from_json(const json& j, const std::string& pat
                    color(points[i], at_, "color")};
       if (!(p.size > 0)) fail(at_ + ".size", "expected a diameter > 0", points[i]["size"]);
       r.points.push_back(std::move(p));
+    }
+    const json& props = list(j, path, "props");
+    for (std::size_t i = 0; i < props.size(); ++i) {
+      const std::string at_ = path + ".props[" + std::to_string(i) + "]";
+      const json& d = object(props[i], at_);
+      SceneProp p;
+      p.name = text(d, at_, "name");
+      p.shape = text(d, at_, "shape");
+      if (std::find(std::begin(kShapes), std::end(kShapes), p.shape) == std::end(kShapes))
+        fail(at_ + ".shape", "expected one of box, sphere, capsule, cylinder", d["shape"]);
+      p.size = vec(d, at_, "size");
+      if (!(p.size.x > 0 && p.size.y > 0 && p.size.z > 0)) fail(at_ + ".size", "expected extents > 0", d["size"]);
+      p.pose = pose(d, at_, "pose");
+      p.spin = number(d, at_, "spin");
+      p.t = number(d, at_, "t");
+      if (!(p.t >= 0)) fail(at_ + ".t", "expected a time >= 0", d["t"]);
+      p.color = color(d, at_, "color");
+      r.props.push_back(std::move(p));
     }
     const json& parts = list(j, path, "parts");
     for (std::size_t i = 0; i < parts.size(); ++i) {

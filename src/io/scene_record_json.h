@@ -11,8 +11,9 @@
 
 namespace bx {
 
-/// The record as JSON: lists left empty are left out; times and positions
-/// rounded to 1e-6, field values to 1e-3. The same record gives the same text.
+/// The record as JSON: lists left empty are left out; times, positions,
+/// sizes, rates and quaternions rounded to 1e-6, field values to 1e-3. The
+/// same record gives the same text.
 nlohmann::json scene_record_to_json(const SceneRecord& r);
 
 /// Reads what scene_record_to_json wrote (a missing list is empty); an error

@@ -1,6 +1,7 @@
 // The scene record's JSON form: every item and event comes back as it was
-// written (at the file's precision), an empty list is left out, and a bad
-// record is refused with the path of the field and what was wrong.
+// written (at the file's precision), an empty list is left out, a prop's
+// pose is written as a frame's, and a bad record is refused with the path of
+// the field and what was wrong.
 #include "io/scene_record_json.h"
 
 #include <gtest/gtest.h>
@@ -15,6 +16,11 @@ SceneRecord everything() {
   SceneRecord r;
   r.markers = {{"begin", 0}, {"release", 0.5}};
   r.points = {{"target", {3, -1.25, 0.075}, 0.12, "#d6336c"}};
+  // a disc lying on the ground (its axis, x, turned up: a quaternion the
+  // file keeps) and a box standing on it turning at 2 rad/s, from 2 s on
+  const Mat3 up = from_quat({0.707107, 0, -0.707107, 0});
+  r.props = {{"disc", "cylinder", {0.02, 0.6, 0.6}, {{2, 0, 0.01}, up}, 0, 2, "#3b82c4"},
+             {"stack", "box", {0.1, 0.1, 0.3}, {{2, 0, 0.17}, Mat3::identity()}, 2, 2, "#e8590c"}};
   r.parts = {{"projectile", 2, "#ffc61a"}};
   r.cell_kinds = {{"grass", "#a3c98a", false}, {"stone", "#7c838b", true}};
   r.add(0, SceneGrid{{-0.05, 1.5, 0}, 0.1, 3, 2, {0, 1, 0, 0, 0, 1}});
@@ -49,11 +55,30 @@ TEST(SceneRecordJson, RoundsTimesAndFieldValuesAndLeavesEmptyListsOut) {
   EXPECT_EQ(j["events"][0]["t"], 0.333333);
   EXPECT_EQ(j["events"][0]["field"]["values"][0], 0.123);
   EXPECT_FALSE(j.contains("points"));
+  EXPECT_FALSE(j.contains("props"));
   EXPECT_FALSE(j.contains("cell_kinds"));
   EXPECT_EQ(scene_record_to_json(SceneRecord{}), json::object());
   auto empty = scene_record_from_json(json::object());
   ASSERT_TRUE(empty.ok()) << empty.error();
   EXPECT_TRUE(empty->empty());
+}
+
+TEST(SceneRecordJson, APropsPoseIsWrittenAsAFramesIs) {
+  const json j = scene_record_to_json(everything());
+  EXPECT_EQ(j["props"][0], json::parse(R"({"name": "disc", "shape": "cylinder", "size": [0.02, 0.6, 0.6],
+    "pose": [2, 0, 0.01, 0.707107, 0, -0.707107, 0], "spin": 0, "t": 2, "color": "#3b82c4"})"));
+  // a hand-written quaternion of 4 digits is near enough unit length: a
+  // quarter turn about the vertical, its x axis turned to y
+  json hand = j;
+  hand["props"][1]["pose"] = json::parse("[1, 2, 3, 0.7071, 0, 0, 0.7071]");
+  auto back = scene_record_from_json(hand);
+  ASSERT_TRUE(back.ok()) << back.error();
+  const Pose& p = back->props[1].pose;
+  EXPECT_EQ(p.p, (Vec3{1, 2, 3}));
+  const Vec3 x = p.R * Vec3{1, 0, 0};
+  EXPECT_NEAR(x.x, 0, 1e-12);
+  EXPECT_NEAR(x.y, 1, 1e-12);
+  EXPECT_NEAR(x.z, 0, 1e-12);
 }
 
 // the error of reading `j` with its part at json pointer `where` replaced by `with`
@@ -67,6 +92,14 @@ std::string error_with(const char* where, const json& with) {
 TEST(SceneRecordJson, ABadRecordNamesTheFieldAndWhatWasWrong) {
   EXPECT_EQ(error_with("/markers/1/t", "soon"), "scene.record.markers[1].t: expected a number, got \"soon\"");
   EXPECT_EQ(error_with("/points/0/color", "red"), "scene.record.points[0].color: expected \"#rrggbb\", got \"red\"");
+  EXPECT_EQ(error_with("/props/0/shape", "cone"),
+            "scene.record.props[0].shape: expected one of box, sphere, capsule, cylinder, got \"cone\"");
+  EXPECT_EQ(error_with("/props/1/size/2", 0), "scene.record.props[1].size: expected extents > 0, got [0.1,0.1,0]");
+  EXPECT_EQ(error_with("/props/1/color", "orange"), "scene.record.props[1].color: expected \"#rrggbb\", got \"orange\"");
+  EXPECT_EQ(error_with("/props/1/t", -1), "scene.record.props[1].t: expected a time >= 0, got -1");
+  EXPECT_EQ(error_with("/props/1/spin", "fast"), "scene.record.props[1].spin: expected a number, got \"fast\"");
+  EXPECT_EQ(error_with("/props/1/pose", json::parse("[0, 0, 0, 0.5, 0, 0, 0]")),
+            "scene.record.props[1].pose: expected [x, y, z, qw, qx, qy, qz] with a unit quaternion, got [0,0,0,0.5,0,0,0]");
   EXPECT_EQ(error_with("/parts/0/part", -1), "scene.record.parts[0].part: expected a part index >= 0, got -1");
   EXPECT_EQ(error_with("/cell_kinds/1/item", 1), "scene.record.cell_kinds[1].item: expected true or false, got 1");
   EXPECT_EQ(error_with("/events/0/grid/cells/4", 2),

@@ -127,7 +127,7 @@ export function createViewer(ui, data) {
     player.setThrow(s.throw !== null, s.throw?.release ?? null, s.T);
     // what the scene record draws on the ground and on the parts, its legend
     s.record = recordOf(entry.replay);
-    if (s.record.points.length || hasWorld(s.record)) {
+    if (s.record.points.length || s.record.props.length || hasWorld(s.record)) {
       world = createRecordView(s.record, entry.replay, bodies);
       world.showField(s.field);
       stage.scene.add(world.group);

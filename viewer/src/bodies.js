@@ -21,7 +21,8 @@ const AXIS_COLORS = [0xd8342c, 0x2f9e44];
 /** Joint types that use axis2 as well as axis1. */
 const TWO_AXES = new Set(['universal', 'spherical']);
 
-function solid(shape, size, color, opacity = 1) {
+/** A part's or prop's mesh: its true shape in `color`, casting and taking shadows. */
+export function solid(shape, size, color, opacity = 1) {
   const mesh = new Mesh(
     shapeGeometry(shape, size),
     new MeshStandardMaterial({

@@ -1,18 +1,23 @@
-// The scene record drawn (scene_record.js): its points as spheres, the grid's
-// cells on the ground in their kinds' colours, an item kind's cells (stones)
-// as small boxes standing on them, an item carried as a box on its part, and
-// a field as a heat map over the grid that changes at its recorded times.
+// The scene record drawn (scene_record.js): its points as spheres, its props
+// as solids from their times on (a spinning one turned about the world's
+// vertical, z, through its centre), the grid's cells on the ground in their
+// kinds' colours, an item kind's cells (stones) as small boxes standing on
+// them, an item carried as a box on its part, and a field as a heat map over
+// the grid that changes at its recorded times.
 // Textures are redrawn only when what they show changed.
 import {
   AlwaysDepth, BoxGeometry, DataTexture, Group, LinearFilter, Mesh, MeshBasicMaterial, MeshStandardMaterial, NearestFilter,
-  PlaneGeometry, RGBAFormat, SphereGeometry, SRGBColorSpace,
+  PlaneGeometry, Quaternion, RGBAFormat, SphereGeometry, SRGBColorSpace, Vector3,
 } from 'three';
+import { solid } from './bodies.js';
 import { CELL_PX, paintCells, paintField } from './cell_paint.js';
 import { cellsAt, sceneAt } from './scene_record.js';
 import { GROUND_ORDER } from './stage.js';
 
 /** An item's box, in cell widths: a flat stone. */
 export const ITEM_SIZE = [0.5, 0.5, 0.3];
+
+const UP = new Vector3(0, 0, 1);
 
 function texture(data, w, h, filter) {
   const t = new DataTexture(data, w, h, RGBAFormat);
@@ -49,6 +54,16 @@ export function createRecordView(rec, replay, bodies) {
     group.add(m);
     return m;
   });
+  // props: hidden until they appear; each one's rotation when it appears
+  // (w last in three), that its spin turns about the vertical from then on
+  const props = rec.props.map((d) => {
+    const m = solid(d.shape, d.size, d.color);
+    m.position.set(d.pose[0], d.pose[1], d.pose[2]);
+    m.visible = false;
+    group.add(m);
+    return m;
+  });
+  const propTurns = rec.props.map((d) => new Quaternion(d.pose[4], d.pose[5], d.pose[6], d.pose[3]).normalize());
 
   // the grid: a cells plane, a heat map plane over it, item boxes on it
   // (on the ground itself: drawn right after it (stage.js's GROUND_ORDER)
@@ -154,6 +169,10 @@ export function createRecordView(rec, replay, bodies) {
   return {
     group,
     setTime(t) {
+      rec.props.forEach((d, i) => {
+        props[i].visible = t >= d.t;
+        if (props[i].visible) props[i].quaternion.setFromAxisAngle(UP, d.spin * (t - d.t)).multiply(propTurns[i]);
+      });
       const s = sceneAt(rec, t);
       if (s.grid !== shown.grid) {
         shown.grid = s.grid;
@@ -183,7 +202,8 @@ export function createRecordView(rec, replay, bodies) {
     /**
      * What is drawn: the grid's size in cells (or null), the item boxes
      * shown, whether an item is carried, the time of the field shown (or
-     * null) and whether the heat map is visible; the points drawn.
+     * null) and whether the heat map is visible; the points drawn; the
+     * props shown.
      */
     state() {
       return {
@@ -193,6 +213,7 @@ export function createRecordView(rec, replay, bodies) {
         field: shown.field ? shown.field.t : null,
         heat: heatMesh ? heatMesh.visible : false,
         points: points.length,
+        props: props.filter((m) => m.visible).length,
       };
     },
     /** The cells' texture (RGBA bytes), or null before a grid: for tests. */
@@ -211,6 +232,7 @@ export function createRecordView(rec, replay, bodies) {
       heat.dispose();
       itemMaterials.forEach((m) => m?.dispose());
       points.forEach((m) => m.material.dispose());
+      props.forEach((m) => m.traverse((o) => o.material?.dispose()));
     },
   };
 }

@@ -1,13 +1,15 @@
 // A replay's scene record (docs/replay-format.md, scene.record): what the
 // task and its controller show beside the creature, in one generic shape.
 // What holds throughout: named moments (a catapult's "release"), named
-// points (its "target"), named parts to highlight (its "projectile"), the
-// kinds of grid cell. Then events in time order: a grid laid, a cell
-// changed, an item carried, a field over the grid (a heat map), a counter's
-// value. This module checks a record and says what the scene is at a time;
-// record_view.js draws it.
+// points (its "target"), props (solids shown from a time on, a spinning one
+// turning about the vertical: fight-or-flight targets), named parts to
+// highlight (its "projectile"), the kinds of grid cell. Then events in time
+// order: a grid laid, a cell changed, an item carried, a field over the grid
+// (a heat map), a counter's value. This module checks a record and says what
+// the scene is at a time; record_view.js draws it.
 import { DataError, numbers } from './data.js';
 import { parseCssColor, PROJECTILE_COLOR } from './palette.js';
+import { DRAWABLE } from './shapes.js';
 
 /** The events' types, each the key of its payload. */
 export const EVENT_TYPES = ['grid', 'cell', 'carry', 'field', 'counter'];
@@ -42,6 +44,15 @@ function color(v, path) {
   return c;
 }
 
+// a pose as the frames hold one, [x, y, z, qw, qx, qy, qz]: its quaternion
+// of unit length, but for the file's rounding (or a hand-written one's)
+function pose(v, path) {
+  const what = 'expected [x, y, z, qw, qx, qy, qz] with a unit quaternion';
+  if (!Array.isArray(v) || v.length !== 7 || !v.every(isNum)) fail(path, what, v);
+  if (!(Math.abs(Math.hypot(v[3], v[4], v[5], v[6]) - 1) <= 1e-3)) fail(path, what, v);
+  return v;
+}
+
 /**
  * Checks a record (the JSON of scene.record) for a creature of `nParts`
  * parts and returns it in the viewer's form: colours as numbers, events as
@@ -60,6 +71,18 @@ export function parseRecord(rec, nParts, path = 'scene.record') {
     obj(p, at);
     if (!(isNum(p.size) && p.size > 0)) fail(`${at}.size`, 'expected a diameter > 0', p.size);
     return { name: str(p.name, `${at}.name`), p: numbers(p.p, 3, `${at}.p`), size: p.size, color: color(p.color, `${at}.color`) };
+  });
+  const props = list(rec.props, `${path}.props`).map((d, i) => {
+    const at = `${path}.props[${i}]`;
+    obj(d, at);
+    const name = str(d.name, `${at}.name`);
+    if (!DRAWABLE.includes(d.shape)) fail(`${at}.shape`, `expected one of ${DRAWABLE.join(', ')}`, d.shape);
+    const size = numbers(d.size, 3, `${at}.size`);
+    if (!size.every((v) => v > 0)) fail(`${at}.size`, 'expected extents > 0', d.size);
+    const where = pose(d.pose, `${at}.pose`);
+    if (!isNum(d.spin)) fail(`${at}.spin`, 'expected a number', d.spin);
+    if (!(isNum(d.t) && d.t >= 0)) fail(`${at}.t`, 'expected a time >= 0', d.t);
+    return { name, shape: d.shape, size, pose: where, spin: d.spin, t: d.t, color: color(d.color, `${at}.color`) };
   });
   const parts = list(rec.parts, `${path}.parts`).map((p, i) => {
     const at = `${path}.parts[${i}]`;
@@ -121,10 +144,10 @@ export function parseRecord(rec, nParts, path = 'scene.record') {
         return { t: e.t, type, name: str(w.name, `${where}.name`), value: w.value };
     }
   });
-  return { markers, points, parts, cellKinds, events };
+  return { markers, points, props, parts, cellKinds, events };
 }
 
-const EMPTY = { markers: [], points: [], parts: [], cellKinds: [], events: [] };
+const EMPTY = { markers: [], points: [], props: [], parts: [], cellKinds: [], events: [] };
 const parsed = new WeakMap();
 
 /**

@@ -4,8 +4,9 @@
 // neuron and the effector following sin(t), a joint-angle sensor reading the
 // angle over 2 and a contact sensor always touching; a catapult throwing
 // its projectile (makeCatapult), written as before replays held sensors and
-// joint angles; a river crossing's scene record (makeRiver); and a
-// lessin2015 creature with two muscles and an eye (makeLessin).
+// joint angles; a river crossing's scene record (makeRiver); a lessin2015
+// creature with two muscles and an eye (makeLessin); and fight-or-flight
+// targets as the scene record's props (makeTargets).
 
 /** Quaternion [w, x, y, z] for `angle` radians about z. */
 export function aboutZ(angle) {
@@ -217,5 +218,25 @@ export function makeLessin() {
     f.effectors = [2 * Math.sin(f.t), f.t / 2];
     f.sensors = [f.t / 4, 0.5];
   });
+  return r;
+}
+
+/** Quaternion [w, x, y, z] turning a prop's axis (its x) up: -90 degrees about y. */
+export const AXIS_UP = [Math.SQRT1_2, 0, -Math.SQRT1_2, 0];
+
+/**
+ * The fixture replay (makeReplay, 2 s) with fight-or-flight targets, its
+ * scene record's props, from 0.5 s: a disc lying on the ground at (1, 1)
+ * (a cylinder 0.02 m long and 0.6 m across, its axis up) and on it a stack
+ * (a cylinder 0.3 m tall and 0.1 m across) turning at 2 rad/s.
+ */
+export function makeTargets() {
+  const r = makeReplay();
+  r.scene.record = {
+    props: [
+      { name: 'disc', shape: 'cylinder', size: [0.02, 0.6, 0.6], pose: [1, 1, 0.01, ...AXIS_UP], spin: 0, t: 0.5, color: '#3b82c4' },
+      { name: 'stack', shape: 'cylinder', size: [0.3, 0.1, 0.1], pose: [1, 1, 0.17, ...AXIS_UP], spin: 2, t: 0.5, color: '#e8590c' },
+    ],
+  };
   return r;
 }

@@ -1,16 +1,17 @@
 // The scene record drawn: the grid's cells on the ground under the grid,
 // stones as boxes on their cells and on the carrying part, the heat map
 // changing at the field's recorded times, a catapult's target as a sphere,
-// and the legend's entries.
+// props from their times on, a spinning one turned about the vertical, and
+// the legend's entries.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { Vector3 } from 'three';
+import { Box3, Matrix4, Quaternion, Vector3 } from 'three';
 import { createBodies } from '../src/bodies.js';
 import { createRecordView } from '../src/record_view.js';
 import { legendOf } from '../src/cells_legend.js';
 import { CELL_PX } from '../src/cell_paint.js';
 import { recordOf } from '../src/scene_record.js';
-import { makeCatapult, makeReplay, makeRiver } from './fixture.mjs';
+import { AXIS_UP, makeCatapult, makeReplay, makeRiver, makeTargets } from './fixture.mjs';
 
 function view(replay) {
   const bodies = createBodies(replay);
@@ -21,7 +22,7 @@ function view(replay) {
 test('the grid lies on the ground where the record lays it, in its kinds colours', () => {
   const { world } = view(makeRiver());
   world.setTime(0);
-  assert.deepEqual(world.state(), { grid: [4, 3], items: 2, carried: false, field: 0, heat: true, points: 0 });
+  assert.deepEqual(world.state(), { grid: [4, 3], items: 2, carried: false, field: 0, heat: true, points: 0, props: 0 });
   const tiles = world.group.children.find((m) => m.material?.map?.image?.width === 4 * CELL_PX);
   assert.ok(tiles, 'a plane with the cells texture');
   tiles.geometry.computeBoundingBox();
@@ -81,11 +82,44 @@ test("a catapult's target is a sphere at its point; its projectile in the record
   const replay = makeCatapult({ target: [2, 0, 0.075] });
   const { bodies, world } = view(replay);
   world.setTime(0);
-  assert.deepEqual(world.state(), { grid: null, items: 0, carried: false, field: null, heat: false, points: 1 });
+  assert.deepEqual(world.state(), { grid: null, items: 0, carried: false, field: null, heat: false, points: 1, props: 0 });
   const ball = world.group.children[0];
   assert.deepEqual(ball.position.toArray(), [2, 0, 0.075]);
   assert.equal(ball.material.color.getHex(), 0xd6336c);
   assert.equal(bodies.parts[2].material.color.getHex(), 0xffc61a);
+  world.dispose();
+});
+
+test('props appear at their time, lie as their poses say, and a spinning one turns about the vertical', () => {
+  const { world } = view(makeTargets());
+  const [disc, stack] = world.group.children;
+  world.setTime(0.4);
+  assert.equal(world.state().props, 0);
+  assert.deepEqual([disc.visible, stack.visible], [false, false]);
+  world.setTime(0.5);
+  assert.equal(world.state().props, 2);
+  assert.equal(disc.material.color.getHex(), 0x3b82c4);
+  assert.equal(disc.castShadow, true);
+  // the disc's axis is up: 0.6 m across on the ground, 0.02 m thick (to
+  // the geometry's single precision)
+  world.group.updateMatrixWorld(true);
+  const box = new Box3().setFromObject(disc);
+  const extents = box.max.clone().sub(box.min).toArray();
+  [0.6, 0.6, 0.02].forEach((v, k) => assert.ok(Math.abs(extents[k] - v) < 1e-6, String(extents)));
+  assert.ok(Math.abs(box.min.z) < 1e-6, String(box.min.z));
+  // 1 s later the stack has turned 2 rad about the world's vertical through
+  // its centre, after its own rotation: Rz(2) R
+  world.setTime(1.5);
+  assert.deepEqual(stack.position.toArray(), [1, 1, 0.17]);
+  const [w, x, y, z] = AXIS_UP;
+  const want = new Matrix4().makeRotationZ(2).multiply(new Matrix4().makeRotationFromQuaternion(new Quaternion(x, y, z, w)));
+  const got = new Matrix4().makeRotationFromQuaternion(stack.quaternion);
+  got.elements.forEach((v, k) => assert.ok(Math.abs(v - want.elements[k]) < 1e-12, `${got.elements} vs ${want.elements}`));
+  // the disc, not spinning, as it appeared
+  assert.ok(disc.quaternion.angleTo(new Quaternion(x, y, z, w)) < 1e-12);
+  // back before their time: hidden again
+  world.setTime(0.2);
+  assert.equal(world.state().props, 0);
   world.dispose();
 });
 

@@ -4,7 +4,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { cellsAt, countersText, hasWorld, markerTime, parseRecord, partNamed, pointNamed, recordOf, sceneAt } from '../src/scene_record.js';
-import { makeCatapult, makeReplay, makeRiver } from './fixture.mjs';
+import { AXIS_UP, makeCatapult, makeReplay, makeRiver, makeTargets } from './fixture.mjs';
 
 test("a catapult's record names its projectile and target and marks its release", () => {
   const rec = recordOf(makeCatapult({ target: [2, 0, 0.075] }));
@@ -64,6 +64,34 @@ test('a new grid replaces the last, and the changes start over from it', () => {
   assert.deepEqual(sceneAt(rec, 1.85).grid.origin, [5, 5, 0]);
   assert.deepEqual(cellsAt(rec, 1.85), [1, 1]);
   assert.deepEqual(cellsAt(rec, 2), [1, 0]);
+});
+
+test("a record's props: each one's shape, size, pose, spin, time and colour", () => {
+  const rec = recordOf(makeTargets());
+  assert.deepEqual(rec.props[0], {
+    name: 'disc', shape: 'cylinder', size: [0.02, 0.6, 0.6], pose: [1, 1, 0.01, ...AXIS_UP], spin: 0, t: 0.5, color: 0x3b82c4,
+  });
+  assert.equal(rec.props[1].spin, 2);
+  assert.equal(hasWorld(rec), false);
+  assert.deepEqual(recordOf(makeReplay()).props, []);
+});
+
+test('a bad prop names its field and what was wrong', () => {
+  const cases = [
+    [(p) => (p.shape = 'cone'), /^scene\.record\.props\[1\]\.shape: expected one of box, sphere, capsule, cylinder, got "cone"$/],
+    [(p) => (p.size = [0.3, 0, 0.1]), /^scene\.record\.props\[1\]\.size: expected extents > 0, got \[0\.3,0,0\.1\]$/],
+    [(p) => (p.color = 'orange'), /^scene\.record\.props\[1\]\.color: expected "#rrggbb", got "orange"$/],
+    [(p) => (p.t = -1), /^scene\.record\.props\[1\]\.t: expected a time >= 0, got -1$/],
+    [(p) => (p.spin = 'fast'), /^scene\.record\.props\[1\]\.spin: expected a number, got "fast"$/],
+    [(p) => (p.pose = [0, 0, 0, 0.5, 0, 0, 0]),
+      /^scene\.record\.props\[1\]\.pose: expected \[x, y, z, qw, qx, qy, qz\] with a unit quaternion, got \[0,0,0,0\.5,0,0,0\]$/],
+    [(p) => (p.pose = [0, 0, 0]), /^scene\.record\.props\[1\]\.pose: expected \[x, y, z, qw, qx, qy, qz\]/],
+  ];
+  for (const [spoil, message] of cases) {
+    const r = makeTargets();
+    spoil(r.scene.record.props[1]);
+    assert.throws(() => recordOf(r), { message });
+  }
 });
 
 test('a bad record names the field and what was wrong', () => {
