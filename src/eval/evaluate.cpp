@@ -72,7 +72,7 @@ void report(const CreatureModel& m, EvalState& s, EvalResult& res, const SceneRe
   // the task's moments, as its scene names them
   SceneRecord own;
   if (!scene) {
-    s.task->record(WorldObservation(m, s.world), own);
+    s.task->record(WorldObservation(m, s.world, s.front), own);
     scene = &own;
   }
   res.markers = scene->markers;

@@ -10,6 +10,7 @@
 #include "develop/develop.h"
 #include "genome/genome.h"
 #include "physics/physics_def.h"
+#include "task/fight_or_flight.h"
 #include "task/light.h"
 #include "task/locomotion.h"
 #include "task/river/river_def.h"
@@ -26,7 +27,8 @@ enum class TaskKind {
   River,       ///< SimConfig::river's task (the river crossing; its quadruped only)
   Turn,        ///< SimConfig::turn (lessin2015 V, skills 2 and 3: turning in place)
   Strike,      ///< SimConfig::strike (lessin2015 V, skill 6: an impact on the ground)
-  Light,       ///< SimConfig::light (lessin2015 V, skills 4, 5, 8 and 9: a point light's tasks)
+  Light,       ///< SimConfig::light (lessin2015 V, skills 4, 5, 7, 8 and 9: a point light's tasks)
+  Fight,       ///< SimConfig::fight with light and strike (lessin2015 V, skill 10: FIGHT OR FLIGHT)
 };
 
 /// What a genotype develops into: a body and its controller (eval/creature.h,
@@ -58,12 +60,20 @@ struct SimConfig {
   TurnDef turn;    ///< the turn task (task.kind = "turn": the [turn] keys)
   StrikeDef strike;  ///< the strike task (task.kind = "strike": the [strike] keys)
   LightDef light;  ///< the light tasks (task.kind = "light": the [light] keys)
+  /// Fight or flight's targets (task.kind = "fight_or_flight": the [fight]
+  /// keys; its lights and strikes those of [light] and [strike]).
+  FightDef fight;
   /// The pre-evolved CTRNN motif every copy in the river crossing's pattern
   /// generator shares (the [motif] keys), and the file it came from.
   Motif motif = found_motif();
   MotifSource motif_source;
   /// How genotype.kind = "motif" scores and breeds motifs ([motif_fitness]).
   MotifKindDef motif_kind;
+  /// The creature's front, an axis of its root part's frame: what every
+  /// task's heading is (turn, light, fight_or_flight, task.metric =
+  /// "forward"). +x by default; a creature that lies on its side and moves
+  /// along another axis of its root names it (lessin_crawler: -z).
+  RootAxis front = RootAxis::PlusX;
   /// Evaluations per creature under different physics seeds; its fitness is
   /// their mean (QuickStep's randomised solver makes a chaotic motion, such
   /// as a throw, depend on the seed).

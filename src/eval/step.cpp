@@ -11,6 +11,7 @@ namespace bx {
 EvalState::EvalState(const CreatureModel& m, const ControllerModel& c, const SimConfig& cfg,
                      std::unique_ptr<Task> t, StartPose start)
     : world(cfg.physics),
+      front(axis_vector(cfg.front)),
       controller(c.make_state()),
       task(std::move(t)),
       sensor_readings(m.sensors.size(), 0.0),
@@ -30,7 +31,7 @@ EvalState::EvalState(const CreatureModel& m, const ControllerModel& c, const Sim
   const double drop = task->scenario().drop_height + start.lift;
   world.add_creature(m, {{0, 0, drop - m.min_z()}, Mat3::rotation({0, 0, 1}, start.yaw)});
   signals = motors_off;
-  task->begin(WorldObservation(m, world));
+  task->begin(WorldObservation(m, world, front));
 }
 
 namespace {
@@ -55,7 +56,7 @@ void think(const CreatureModel& m, const SimConfig& cfg, EvalState& s, const Obs
 }  // namespace
 
 bool step(const CreatureModel& m, const SimConfig& cfg, EvalState& s) {
-  const WorldObservation obs(m, s.world);
+  const WorldObservation obs(m, s.world, s.front);
   // sense, think, and what the actions do
   think(m, cfg, s, obs);
   s.task->act(m, s.controller->task_outputs(), s.world, obs);
@@ -91,7 +92,7 @@ bool step(const CreatureModel& m, const SimConfig& cfg, EvalState& s) {
 }
 
 void record_scene(const CreatureModel& m, EvalState& s, SceneRecord& out) {
-  s.task->record(WorldObservation(m, s.world), out);
+  s.task->record(WorldObservation(m, s.world, s.front), out);
   s.controller->record(s.world.time(), out);
 }
 

@@ -22,17 +22,20 @@ namespace bx {
 /// quantity read when asked.
 class WorldObservation : public Observation {
  public:
-  WorldObservation(const CreatureModel& m, const World& w) : m_(m), w_(w) {}
+  WorldObservation(const CreatureModel& m, const World& w, Vec3 front = {1, 0, 0}) : m_(m), w_(w), front_(front) {}
   double time() const override { return w_.time(); }
   Vec3 centre_of_mass() const override { return w_.centre_of_mass(); }
   int n_parts() const override { return m_.n_parts(); }
   Pose part_pose(int i) const override { return w_.part_pose(i); }
   bool touches_part(int i) const override { return w_.touches_part(i); }
   double muscle_work() const override { return w_.muscle_work(); }
+  bool touches_prop(int k) const override { return w_.prop_touched(k); }
+  Vec3 front() const override { return front_; }
 
  private:
   const CreatureModel& m_;
   const World& w_;
+  Vec3 front_;
 };
 
 /// How one evaluation's start differs from the task's scenario: what a
@@ -55,6 +58,7 @@ struct EvalState {
             std::unique_ptr<Task> task, StartPose start = {});
 
   World world;
+  Vec3 front;  ///< the creature's front in its root's frame (task.front)
   std::unique_ptr<ControllerState> controller;
   std::unique_ptr<Task> task;
   long physics_steps = 0;

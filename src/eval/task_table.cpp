@@ -4,6 +4,7 @@
 
 #include "eval/evaluate.h"
 
+#include "task/fight_or_flight.h"
 #include "task/light.h"
 #include "task/locomotion.h"
 #include "task/river/river_task.h"
@@ -136,6 +137,41 @@ std::string light_fold_name(const SimConfig& c) {
   return "attack fold (the lit trials' mean times the dark ones' mean of 1, or light.wrong_factor after a strike)";
 }
 
+// lessin2015's fight or flight (skill 10): trials 2k and 2k+1 the k-th
+// direction's vulnerable and dangerous targets
+Result<std::unique_ptr<Task>> make_fight(const CreatureModel& m, const SimConfig& cfg, std::uint64_t, int trial) {
+  return std::unique_ptr<Task>(
+      new FightOrFlightTask(cfg.fight, cfg.light, cfg.strike, cfg.physics.dt, m.n_parts(), trial));
+}
+
+std::vector<SimField> fight_fields() {
+  return {
+      {"fight", "headings", SimField::Reals, -360, 360, {}, [](SimConfig& c) -> void* { return &c.fight.headings; }, "fight_or_flight: the target's bearing from the creature's forward when measuring begins (degrees, counterclockwise positive), one per direction: trials 2k and 2k+1 take the (k mod n)-th of these n, the vulnerable target then the dangerous one, so task.trials must be a whole multiple of 2n (the target's light, its distance and height, the measured span and settling: the light.* keys; the strike: the strike.* keys)"},
+      {"fight", "disc_diameter", SimField::Real, 1e-3, 100, {}, [](SimConfig& c) -> void* { return &c.fight.disc_diameter; }, "fight_or_flight: a target's disc is an upright cylinder this wide (m) ..."},
+      {"fight", "disc_height", SimField::Real, 1e-3, 100, {}, [](SimConfig& c) -> void* { return &c.fight.disc_height; }, "... and this tall (m); the vulnerable target is one disc, which the creature should attack"},
+      {"fight", "stack_discs", SimField::Int, 1, 100, {}, [](SimConfig& c) -> void* { return &c.fight.stack_discs; }, "fight_or_flight: the dangerous target is this many discs one on another, whose lights add (light.strength each), which destroy the creature if it touches any (the trial ends, scoring 0) ..."},
+      {"fight", "spin", SimField::Real, -1e3, 1e3, {}, [](SimConfig& c) -> void* { return &c.fight.spin; }, "... turning about the vertical at this rate (rad/s, counterclockwise seen from above)"},
+  };
+}
+
+// every direction its pair of trials
+Status fight_check(const SimConfig& c) {
+  const std::size_t n = c.fight.headings.size();
+  if (n == 0) return Error{"fight.headings: needs at least one heading, got []"};
+  if (c.trials % static_cast<int>(2 * n) != 0)
+    return Error{"task.trials: the fight_or_flight task runs two trials (the vulnerable target, then the dangerous "
+                 "one) for each of fight.headings' n = " +
+                 std::to_string(n) + " headings, so task.trials must be a whole multiple of " + std::to_string(2 * n) +
+                 ", got " + std::to_string(c.trials)};
+  return Ok{};
+}
+
+double fight_fold_of(const SimConfig&, std::span<const double> trials) { return fight_fold(trials); }
+std::string fight_fold_name(const SimConfig&) {
+  return "fight-or-flight fold ((f+ + 2n f-) / (2n + 1), f+ and f- the mean larger and smaller score of each "
+         "direction's two targets, n directions)";
+}
+
 double& locomotion_seconds(SimConfig& c) { return c.task.seconds; }
 double& strike_seconds(SimConfig& c) { return c.strike.seconds; }
 double strike_drop(const SimConfig& c) { return c.strike.drop_height; }
@@ -162,6 +198,8 @@ const TaskRow kTasks[] = {
      strike_fields},
     {TaskKind::Light, "light", make_light, light_seconds, light_drop, "light.seconds", "light.drop_height", light_fields,
      light_check, light_fold, light_fold_name},
+    {TaskKind::Fight, "fight_or_flight", make_fight, light_seconds, light_drop, "light.seconds", "light.drop_height",
+     fight_fields, fight_check, fight_fold_of, fight_fold_name},
 };
 
 }  // namespace

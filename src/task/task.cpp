@@ -5,17 +5,22 @@
 
 namespace bx {
 
+Vec3 axis_vector(RootAxis a) {
+  const double sign = static_cast<int>(a) % 2 == 0 ? 1 : -1;
+  Vec3 v;
+  v[static_cast<int>(a) / 2] = sign;
+  return v;
+}
+
 double heading(const Observation& o) {
-  // the root's x axis is the first column of its rotation
-  const Mat3& R = o.part_pose(0).R;
-  const double x = R.m[0][0], y = R.m[1][0];
-  if (std::hypot(x, y) < 1e-12) return 0;
-  return std::atan2(y, x);
+  const Vec3 f = o.part_pose(0).R * o.front();
+  if (std::hypot(f.x, f.y) < 1e-12) return 0;
+  return std::atan2(f.y, f.x);
 }
 
 double root_level(const Observation& o) {
-  const Mat3& R = o.part_pose(0).R;
-  return std::hypot(R.m[0][0], R.m[1][0]);
+  const Vec3 f = o.part_pose(0).R * o.front();
+  return std::hypot(f.x, f.y);
 }
 
 double heading_step(double from, double to) { return std::remainder(to - from, 2 * kPi); }

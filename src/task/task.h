@@ -18,6 +18,12 @@ namespace bx {
 class World;
 struct CreatureModel;
 
+/// An axis of the creature's root part's frame: which way is its front
+/// (SimConfig::front, the config's task.front).
+enum class RootAxis { PlusX, MinusX, PlusY, MinusY, PlusZ, MinusZ };
+/// The axis as a unit vector of the root's frame.
+Vec3 axis_vector(RootAxis a);
+
 /// What a task may read of the world after a step. The loop's is a view of
 /// its world, read when asked (eval/step.cpp); a test's may be a fake.
 class Observation {
@@ -34,14 +40,21 @@ class Observation {
   virtual bool touches_part(int i) const = 0;
   /// The work the creature's muscles have done so far (J; World::muscle_work).
   virtual double muscle_work() const { return 0; }
+  /// The creature's front: a unit axis of its root part's frame (task.front;
+  /// +x unless the config says otherwise), what heading() and root_level() read.
+  virtual Vec3 front() const { return {1, 0, 0}; }
+  /// Whether any part of the creature touched prop k in the last step
+  /// (World::prop_touched; a task knows its props' indices).
+  virtual bool touches_prop(int) const { return false; }
 };
 
-/// The creature's heading: the angle (rad, from +x towards +y) of its root
-/// part's x axis projected onto the ground; 0 when that axis is vertical.
+/// The creature's heading: the angle (rad, from +x towards +y) of its front
+/// (Observation::front: its root part's x axis unless the config names
+/// another) projected onto the ground; 0 when that axis is vertical.
 double heading(const Observation& o);
 
-/// How level the root is: the length of its x axis projected onto the
-/// ground (1: level, 0: vertical). A heading means something only while
+/// How level the front is: the length of the front axis projected onto
+/// the ground (1: level, 0: vertical). A heading means something only while
 /// this is not small (TurnDef::min_level, LightDef::min_level).
 double root_level(const Observation& o);
 

@@ -438,6 +438,15 @@ TEST(LightEval, EachTrialHasItsHeadingAndTheEyesSeeTheLightOnceItIsOn) {
   ASSERT_FALSE(r2.failed);
   EXPECT_NEAR(r2.fitness, (1 + std::cos(135 * deg)) / 2, 1e-3);
   for (const ReplayFrame& f : behind.frames) EXPECT_EQ(f.sensors[0] + f.sensors[1], 0) << f.t;
+  // task.front = "+y": the creature's front is its root's y axis, so the
+  // light dead ahead of it sits on the world's +y side
+  Replay side;
+  const EvalResult r3 = evaluate(*d.model, light_config("face", 1, {"light.headings=[0]", "task.front=+y"}), 1, &side);
+  ASSERT_FALSE(r3.failed);
+  ASSERT_EQ(side.scene.points.size(), 1u);
+  const Vec3 com = side.frames.front().com;
+  EXPECT_NEAR(side.scene.points[0].p.x - com.x, 0, 0.1);
+  EXPECT_NEAR(side.scene.points[0].p.y - com.y, 3, 0.1);
 }
 
 }  // namespace

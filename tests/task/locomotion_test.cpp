@@ -140,6 +140,8 @@ namespace {
 // an observation of a lone root part turned by R
 struct OnePart : Observation {
   Mat3 R;
+  Vec3 f{1, 0, 0};
+  Vec3 front() const override { return f; }
   double time() const override { return 0; }
   Vec3 centre_of_mass() const override { return {}; }
   int n_parts() const override { return 1; }
@@ -160,6 +162,27 @@ TEST(Heading, IsTheRootsXAxisTurnedOnTheGround) {
   // nose straight up: no heading
   o.R = Mat3::rotation({0, 1, 0}, -kPi / 2);
   EXPECT_DOUBLE_EQ(heading(o), 0);
+  EXPECT_NEAR(root_level(o), 0, 1e-12);
+}
+
+// task.front: another axis of the root is the creature's front
+TEST(Heading, IsTheFrontAxisTheConfigNames) {
+  EXPECT_EQ(axis_vector(RootAxis::PlusX), (Vec3{1, 0, 0}));
+  EXPECT_EQ(axis_vector(RootAxis::MinusY), (Vec3{0, -1, 0}));
+  EXPECT_EQ(axis_vector(RootAxis::MinusZ), (Vec3{0, 0, -1}));
+  OnePart o;
+  o.R = Mat3::rotation({0, 0, 1}, 0.5);
+  o.f = axis_vector(RootAxis::MinusX);
+  EXPECT_NEAR(heading(o), 0.5 - kPi, 1e-12);
+  o.f = axis_vector(RootAxis::PlusY);
+  EXPECT_NEAR(heading(o), 0.5 + kPi / 2, 1e-12);
+  // lying on its side (rolled a quarter turn about x: its -z along +y), turned by 0.5
+  o.R = Mat3::rotation({0, 0, 1}, 0.5) * Mat3::rotation({1, 0, 0}, kPi / 2);
+  o.f = axis_vector(RootAxis::MinusZ);
+  EXPECT_NEAR(heading(o), 0.5 + kPi / 2, 1e-12);
+  EXPECT_NEAR(root_level(o), 1, 1e-12);
+  o.f = axis_vector(RootAxis::PlusY);  // now vertical: no heading
+  EXPECT_NEAR(root_level(o), 0, 1e-12);
 }
 
 }  // namespace
