@@ -5,6 +5,7 @@
 
 #include "brain/river/found_motif.h"
 #include "io/config.h"
+#include "io/syllabus.h"
 
 namespace bx {
 namespace {
@@ -12,7 +13,8 @@ namespace {
 TEST(Presets, EveryPresetReadsAndDocumentsItself) {
   ASSERT_GE(presets().size(), 6u);
   for (const auto& p : presets()) {
-    auto cfg = read_run_config(p.text, p.name);
+    // a config, or a syllabus of stages (every stage a config)
+    auto cfg = read_syllabus(p.text, p.name);
     EXPECT_TRUE(cfg.ok()) << p.name << ": " << cfg.error();
     EXPECT_FALSE(preset_summary(p).empty()) << p.name;
     // the comment block names the paper or says why not, what to expect and the deviations
