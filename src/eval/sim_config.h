@@ -13,6 +13,7 @@
 #include "task/fight_or_flight.h"
 #include "task/light.h"
 #include "task/locomotion.h"
+#include "task/reach.h"
 #include "task/river/river_def.h"
 #include "task/throwing.h"
 #include "task/strike.h"
@@ -29,6 +30,7 @@ enum class TaskKind {
   Strike,      ///< SimConfig::strike (lessin2015 V, skill 6: an impact on the ground)
   Light,       ///< SimConfig::light (lessin2015 V, skills 4, 5, 7, 8 and 9: a point light's tasks)
   Fight,       ///< SimConfig::fight with light and strike (lessin2015 V, skill 10: FIGHT OR FLIGHT)
+  Reach,       ///< SimConfig::reach (lessin2015 VII-B: the high-reach task)
 };
 
 /// What a genotype develops into: a body and its controller (eval/creature.h,
@@ -63,6 +65,7 @@ struct SimConfig {
   /// Fight or flight's targets (task.kind = "fight_or_flight": the [fight]
   /// keys; its lights and strikes those of [light] and [strike]).
   FightDef fight;
+  ReachDef reach;  ///< the high-reach task (task.kind = "high_reach": the [reach] keys)
   /// The pre-evolved CTRNN motif every copy in the river crossing's pattern
   /// generator shares (the [motif] keys), and the file it came from.
   Motif motif = found_motif();

@@ -7,6 +7,7 @@
 #include "task/fight_or_flight.h"
 #include "task/light.h"
 #include "task/locomotion.h"
+#include "task/reach.h"
 #include "task/river/river_task.h"
 #include "task/throwing.h"
 #include "task/strike.h"
@@ -172,6 +173,24 @@ std::string fight_fold_name(const SimConfig&) {
          "direction's two targets, n directions)";
 }
 
+// lessin2015's high reach (VII-B)
+Result<std::unique_ptr<Task>> make_reach(const CreatureModel& m, const SimConfig& cfg, std::uint64_t, int) {
+  return std::unique_ptr<Task>(new ReachTask(cfg.reach, m, cfg.physics.dt));
+}
+
+std::vector<SimField> reach_fields() {
+  return {
+      {"reach", "seconds", SimField::Real, 0, 1e6, {}, [](SimConfig& c) -> void* { return &c.reach.seconds; }, "high_reach: the measured span (s), after the creature settled with its controller off; fitness = the greatest height above the ground any point of the creature reaches in it (m)"},
+      {"reach", "drop_height", SimField::Real, 0, 1e3, {}, [](SimConfig& c) -> void* { return &c.reach.drop_height; }, "high_reach: gap between the lowest part and the ground at the start (m)"},
+      {"reach", "settle_speed", SimField::Real, 0, 1e3, {}, [](SimConfig& c) -> void* { return &c.reach.settle.speed; }, "high_reach: settled when every part moves less than this times the step length in each step (m/s) ..."},
+      {"reach", "settle_seconds", SimField::Real, 0, 1e4, {}, [](SimConfig& c) -> void* { return &c.reach.settle.seconds; }, "... for this long without a break (s)"},
+      {"reach", "settle_timeout", SimField::Real, 0, 1e4, {}, [](SimConfig& c) -> void* { return &c.reach.settle.timeout; }, "high_reach: never settled within this (s): fitness 0"},
+  };
+}
+
+double& reach_seconds(SimConfig& c) { return c.reach.seconds; }
+double reach_drop(const SimConfig& c) { return c.reach.drop_height; }
+
 double& locomotion_seconds(SimConfig& c) { return c.task.seconds; }
 double& strike_seconds(SimConfig& c) { return c.strike.seconds; }
 double strike_drop(const SimConfig& c) { return c.strike.drop_height; }
@@ -200,6 +219,8 @@ const TaskRow kTasks[] = {
      light_check, light_fold, light_fold_name},
     {TaskKind::Fight, "fight_or_flight", make_fight, light_seconds, light_drop, "light.seconds", "light.drop_height",
      fight_fields, fight_check, fight_fold_of, fight_fold_name},
+    {TaskKind::Reach, "high_reach", make_reach, reach_seconds, reach_drop, "reach.seconds", "reach.drop_height",
+     reach_fields},
 };
 
 }  // namespace

@@ -233,7 +233,7 @@ TEST(Config, BadCatapultInputNamesTheKeyAndTheValue) {
   EXPECT_EQ(apply_error("[catapult]\nrelease_delay_steps = 1\n"),
             "run.toml: catapult.release_delay_steps: out of range [2, 1001], got 1");
   EXPECT_EQ(apply_error("[task]\nkind = \"fly\"\n"),
-            "run.toml: task.kind: expected one of locomotion, throwing, river, turn, strike, light, fight_or_flight, got \"fly\"");
+            "run.toml: task.kind: expected one of locomotion, throwing, river, turn, strike, light, fight_or_flight, high_reach, got \"fly\"");
   // keys that must agree
   EXPECT_EQ(read_run_config("[task]\nkind = \"throwing\"\n[genome]\ndialect = \"chaumont2007\"\n", "r.toml").error(),
             "r.toml: task.kind: \"throwing\" needs catapult.enabled = true");
