@@ -128,13 +128,17 @@ Status light_check(const SimConfig& c) {
   return Ok{};
 }
 
-// the light task folds attack's trials its own way (attack_fold)
+// the light task's trials are its headings, which the paper averages
+// ("an average over four runs, each with a fixed light source at a
+// different heading"), whatever task.trial_score (which still folds the
+// elite's repeated evaluations): the least over headings would score a
+// creature by its hardest heading alone; attack's fold is its own
 double light_fold(const SimConfig& c, std::span<const double> trials) {
   if (c.light.goal == LightGoal::Attack) return attack_fold(c.light, trials);
-  return fold_scores(c.trial_score, trials);
+  return fold_scores(TrialScore::Mean, trials);
 }
 std::string light_fold_name(const SimConfig& c) {
-  if (c.light.goal != LightGoal::Attack) return score_name(c.trial_score);
+  if (c.light.goal != LightGoal::Attack) return "mean (the light task averages its headings)";
   return "attack fold (the lit trials' mean times the dark ones' mean of 1, or light.wrong_factor after a strike)";
 }
 

@@ -167,7 +167,13 @@ TEST(Attack, TheConfigCountsTheDarkTrialsAndOnlyAttackHasThem) {
   EXPECT_EQ(ok->sim.light.goal, LightGoal::Attack);
   EXPECT_EQ(ok->sim.light.dark_trials, 1);
   EXPECT_EQ(trial_fold_name(ok->sim).rfind("attack fold", 0), 0u);
-  EXPECT_EQ(trial_fold_name(attack_config({"light.goal=face", "task.trials=4"})), "mean");
+  EXPECT_EQ(trial_fold_name(attack_config({"light.goal=face", "task.trials=4"})),
+            "mean (the light task averages its headings)");
+  // the other goals average their headings, even with task.trial_score =
+  // min (which folds the elite's repeated evaluations, not the headings)
+  const SimConfig face = attack_config({"light.goal=face", "task.trials=4", "task.trial_score=min"});
+  const double headings[] = {0.2, 0.8, 0.4, 0.6};
+  EXPECT_NEAR(fold_trials(face, headings), 0.5, 1e-12);
 }
 
 // end to end: lessin_eyes has no muscles, so it never strikes: each lit
