@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <toml++/toml.h>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -58,6 +59,20 @@ std::string joined_sets(const std::vector<std::string>& set) {
 }
 
 Status apply_seconds(Subject& c, const std::optional<double>& seconds) { return set_seconds(c.cfg.sim, seconds); }
+
+// --trial K: one of the evaluation's task.trials (all of them still run: the
+// fitness is their fold), so it keeps the settings as scored
+Status apply_trial(Subject& c, const std::optional<int>& trial) {
+  if (!trial) return Ok{};
+  if (!has_body(c.cfg.sim.creature)) return Error{"--trial: " + no_body(c.cfg.sim.creature, "no trials to pick")};
+  const int n = std::max(1, c.cfg.sim.trials);
+  if (*trial < 1 || *trial > n)
+    return Error{"--trial: " + std::to_string(*trial) + ", but the evaluation has " +
+                 (n == 1 ? std::string("one trial") : std::to_string(n) + " trials") + " (task.trials = " +
+                 std::to_string(n) + "): expected " + (n == 1 ? std::string("1") : "1 to " + std::to_string(n))};
+  c.trial = *trial - 1;
+  return Ok{};
+}
 
 // whether two run configs evaluate a creature alike: the same simulation and
 // the same evolution (which says how the elite was re-evaluated); check's
@@ -341,11 +356,21 @@ void add_creature_options(CLI::App* cmd, std::string& target, CreatureFlags& f) 
   cmd->add_option("--seconds", f.seconds, "Simulated seconds (default: the config's task.seconds, or throwing.seconds)");
 }
 
+void add_trial_option(CLI::App* cmd, CreatureFlags& f) {
+  cmd->add_option("--trial", f.trial,
+                  "Watch trial K (from 1) of an evaluation of task.trials: its replay and measures (every trial still "
+                  "runs: the fitness is their fold; default 1)")
+      ->check(whole_number(1, INT32_MAX));
+}
+
 bool names_run(const std::string& target) { return split_run(target).has_value(); }
 
 Result<Subject> resolve_creature(const std::string& target, const CreatureFlags& flags) {
-  if (auto run = split_run(target)) return from_run(*run, flags);
-  return from_genome(target, flags);
+  auto run = split_run(target);
+  auto c = run ? from_run(*run, flags) : from_genome(target, flags);
+  if (!c) return c;
+  if (Status s = apply_trial(*c, flags.trial); !s) return Error{s.error()};
+  return c;
 }
 
 json provenance_json(const Subject& c, const std::string& config_text) {

@@ -39,6 +39,9 @@ struct CreatureFlags {
   std::optional<std::int64_t> id;     ///< --id: a run's individual
   std::optional<int> gen;             ///< --gen: the best of a run's generation
   std::optional<double> seconds;      ///< --seconds: the evaluation's length
+  /// --trial: which of the evaluation's trials to watch, from 1 (simulate,
+  /// show, render: add_trial_option); unset: the first (show: every one).
+  std::optional<int> trial;
 };
 
 /// A creature to evaluate, with the config and seed to evaluate it with.
@@ -55,6 +58,10 @@ struct Subject {
   int evaluations = 1;
   std::optional<Individual> individual; ///< a run's individual, as stored
   std::string run_dir;                  ///< its run, if any
+  /// The trial (0-based, below task.trials) --trial chose to watch, whose
+  /// replay and measures a command shows (evaluate_trial; the fitness stays
+  /// the whole evaluation's); unset when not chosen.
+  std::optional<int> trial;
   /// Its run's config as a genome file's provenance carries it: the stored
   /// text, or for a multi-stage run its stage's config (every key).
   std::string run_config_text;
@@ -112,6 +119,9 @@ std::string metrics_line(const std::vector<Metric>& metrics);
 /// The target positional and the flags above, as every command that takes a
 /// creature declares them.
 void add_creature_options(CLI::App* cmd, std::string& target, CreatureFlags& flags);
+/// --trial, for the commands that watch one evaluation (simulate, show,
+/// render): check's gates and best's file are of the whole evaluation.
+void add_trial_option(CLI::App* cmd, CreatureFlags& flags);
 
 /// The shortest text that reads back as the same double (fitness reports
 /// that can be compared bit for bit).

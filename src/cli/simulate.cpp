@@ -131,7 +131,8 @@ int cmd_simulate(const SimulateArgs& a) {
   }
   const CreatureModel& m = *dev->body;
   Replay replay;
-  EvalResult res = evaluate(*dev, cfg, seed, a.replay.empty() ? nullptr : &replay);
+  // every trial runs; the replay and the measures are the watched one's (--trial, else the first)
+  EvalResult res = evaluate_trial(*dev, cfg, seed, creature->trial.value_or(0), a.replay.empty() ? nullptr : &replay);
   if (!a.replay.empty()) {
     ReplayInfo info{creature->label, seed, cfg.physics.dt, cfg.physics.friction, replay_creature(cfg)};
     if (Status s = save_replay(a.replay, m, replay, res, info); !s) return fail(s.error());
@@ -161,7 +162,11 @@ int cmd_simulate(const SimulateArgs& a) {
     out["failed"] = res.failed;
     out["failure"] = res.failure;
     out["note"] = res.note;
-    if (!res.trial_fitness.empty()) out["trial_fitness"] = res.trial_fitness;
+    if (!res.trial_fitness.empty()) {
+      out["trial_fitness"] = res.trial_fitness;
+      out["trial"] = res.trial + 1;  // the one the other fields and the replay are of, from 1
+      if (!res.setup.empty()) out["setup"] = res.setup;
+    }
     if (!res.metrics.empty()) {
       nlohmann::json metrics = nlohmann::json::object();
       for (const Metric& mt : res.metrics) metrics[mt.name] = mt.value;
@@ -192,6 +197,10 @@ int cmd_simulate(const SimulateArgs& a) {
   if (!creature->settings.empty()) std::printf("%s\n", creature->settings.c_str());
   std::printf("simulated %.2f s (%ld steps), seed %llu\n", res.seconds, res.steps,
               static_cast<unsigned long long>(seed));
+  // which trial the lines below are of, and what it set up (Task::describe)
+  if (!res.trial_fitness.empty() && (creature->trial || !res.setup.empty()))
+    std::printf("trial %d of %zu%s\n", res.trial + 1, res.trial_fitness.size(),
+                res.setup.empty() ? "" : (": " + res.setup).c_str());
   if (res.failed) std::printf("failed: %s\n", res.failure.c_str());
   if (!res.note.empty()) std::printf("note: %s\n", res.note.c_str());
   if (cfg.task_kind == TaskKind::Throwing) {
@@ -223,9 +232,10 @@ int cmd_simulate(const SimulateArgs& a) {
     std::printf("\n%s\n", fitness_line(mean, creature->stored_fitness).c_str());
   }
   if (!res.trial_fitness.empty()) {
-    // task.trials > 1: the lines above are the first trial's, the fitness their fold (mean, least, the task's own)
-    std::printf("fitness is the %s of %zu trials (the lines above are the first's):", trial_fold_name(cfg).c_str(),
-                res.trial_fitness.size());
+    // task.trials > 1: the lines above are the watched trial's, the fitness their fold (mean, least, the task's own)
+    const std::string which = res.trial == 0 ? "the first's" : "trial " + std::to_string(res.trial + 1) + "'s";
+    std::printf("fitness is the %s of %zu trials (the other lines above are %s):", trial_fold_name(cfg).c_str(),
+                res.trial_fitness.size(), which.c_str());
     for (double f : res.trial_fitness) std::printf(" %.6g", f);
     std::printf("\n");
   }
@@ -263,6 +273,7 @@ void add_simulate_commands(CLI::App& app) {
   static SimulateArgs sim;
   auto* s = app.add_subcommand("simulate", "Grow a genome and simulate it on flat ground");
   add_creature_options(s, sim.genome, sim.flags);
+  add_trial_option(s, sim.flags);
   s->add_option("--replay", sim.replay, "Write a replay file here (folders are made)");
   s->add_flag("--json", sim.json, "Print one JSON object instead of text");
   s->callback([] { std::exit(cmd_simulate(sim)); });

@@ -27,6 +27,7 @@
 #include "cli/creature.h"
 #include "core/files.h"
 #include "eval/evaluate.h"
+#include "eval/task_table.h"
 #include "genome/encapsulate.h"
 #include "io/config.h"
 #include "io/fitness_plot.h"
@@ -58,22 +59,43 @@ struct WatchArgs {
 
 /// What simulating gave: the page's entry and the result.
 struct Watched {
-  LabelledReplay entry;
+  LabelledReplay entry;  ///< labelled with the creature alone (its trial: trial_text)
   EvalResult result;
 };
 
-// develop and simulate with a replay, as `simulate --replay` does
-Result<Watched> simulate(const Subject& c) {
+// show puts at most this many of an evaluation's trials on its page, each a
+// replay: a fight-or-flight of eight directions is sixteen
+constexpr int kMaxTrialsShown = 16;
+
+// develop and simulate with a replay of each of the trials `trials` names, as
+// `simulate --replay` does, in one evaluation: the trial --trial chose (else
+// the first) when `trials` is 0, else each of the first `trials`
+Result<std::vector<Watched>> simulate(const Subject& c, int trials = 0) {
   auto dev = c.develop();
   if (!dev) return Error{c.label + ": not viable: " + dev.error()};
   const CreatureModel& m = *dev->body;
-  Replay replay;
-  EvalResult res = evaluate(*dev, c.cfg.sim, c.seed, &replay);
+  std::vector<Replay> replays(static_cast<std::size_t>(std::max(1, trials)));
+  std::vector<EvalResult> results;
+  if (trials > 0)
+    results = evaluate_trials(m, *dev->controller, c.cfg.sim, c.seed, replays);
+  else
+    results.push_back(evaluate_trial(*dev, c.cfg.sim, c.seed, c.trial.value_or(0), &replays.front()));
   ReplayInfo info{c.label, c.seed, c.cfg.sim.physics.dt, c.cfg.sim.physics.friction, replay_creature(c.cfg.sim)};
   std::string label = c.individual ? "individual " + std::to_string(c.individual->id) + " (generation " +
                                          std::to_string(c.individual->generation) + ")"
                                    : fs::path(c.label).stem().string();
-  return Watched{{label, replay_to_string(m, replay, res, info)}, res};
+  std::vector<Watched> out;
+  for (std::size_t k = 0; k < results.size(); ++k)
+    out.push_back({{label, replay_to_string(m, replays[k], results[k], info)}, results[k]});
+  return out;
+}
+
+// which of several trials a replay is, and what it set up (Task::describe):
+// ", trial 2 of 4: light at 135 degrees"; "" for a single trial
+std::string trial_text(const EvalResult& res) {
+  if (res.trial_fitness.empty()) return "";
+  return ", trial " + std::to_string(res.trial + 1) + " of " + std::to_string(res.trial_fitness.size()) +
+         (res.setup.empty() ? "" : ": " + res.setup);
 }
 
 void print_result(const Subject& c, const EvalResult& res) {
@@ -83,6 +105,11 @@ void print_result(const Subject& c, const EvalResult& res) {
   if (std::string note = c.evaluations_note(); !note.empty()) std::printf("%s\n", note.c_str());
   if (!res.metrics.empty()) std::printf("%s\n", metrics_line(res.metrics).c_str());
   if (res.failed) std::printf("failed: %s\n", res.failure.c_str());
+  if (!res.trial_fitness.empty())
+    // the measures are one trial's, the fitness the fold of all
+    std::printf("trial %d of %zu%s: the lines above are its own, but the fitness, the %s of the %zu trials'\n",
+                res.trial + 1, res.trial_fitness.size(), res.setup.empty() ? "" : (" (" + res.setup + ")").c_str(),
+                trial_fold_name(c.cfg.sim).c_str(), res.trial_fitness.size());
 }
 
 // A run directory: its context and fitness curves, the overall best, the
@@ -132,6 +159,8 @@ int cmd_show(WatchArgs a) {
     if (!a.flags.config.empty() || a.flags.seed || !a.flags.set.empty())
       return fail("--config/--seed/--set: a run's page shows its creatures as they were scored "
                   "(name one, RUN_DIR:ID, to vary its settings)");
+    if (a.flags.trial)
+      return fail("--trial: a run's page shows each creature's first trial (name one, RUN_DIR:ID, to watch its trials)");
     return cmd_show_run(a);
   }
   // inputs first, then the simulation, then the page
@@ -142,24 +171,40 @@ int cmd_show(WatchArgs a) {
     a.out = c->individual ? (fs::path(c->run_dir) / ("individual-" + std::to_string(c->individual->id) + ".html")).string()
                           : fs::path(a.genome).replace_extension(".html").string();
   if (Status s = make_parent_dir("--out", a.out); !s) return fail(s.error());
-  auto w = simulate(*c);
+  // an evaluation of several trials (task.trials: the light's headings, the
+  // fight's targets): each trial's scenario, one replay each, from one
+  // evaluation, unless --trial chose one
+  const int trials = std::max(1, c->cfg.sim.trials);
+  const int shown = c->trial ? 0 : std::min(trials, kMaxTrialsShown);
+  auto w = simulate(*c, shown);
   if (!w) return fail(w.error());
-  std::vector<LabelledReplay> entries{w->entry};
   // an ESP creature (lessin2015 IV-B): each encapsulated skill alone, too
-  // (brain.skill), unless one is chosen already; the page's picker switches
+  // (brain.skill), unless one is chosen already; the page's picker switches.
+  // Each skill alone is of the watched trial only (the first, or --trial's):
+  // every skill in every trial would multiply the page
   const std::vector<std::string> skills =
       c->graph_genome() && c->cfg.sim.develop.skill.empty() ? skills_of(*c->graph_genome()) : std::vector<std::string>{};
+  std::vector<LabelledReplay> entries;
+  for (Watched& t : *w) {
+    t.entry.label += (skills.empty() ? "" : ", its brain free") + trial_text(t.result);
+    entries.push_back(std::move(t.entry));
+  }
   for (const std::string& skill : skills) {
     Subject alone = *c;
     alone.cfg.sim.develop.skill = skill;
     auto ws = simulate(alone);
     if (!ws) return fail(ws.error());
-    ws->entry.label += ", skill \"" + skill + "\" alone";
-    entries.push_back(std::move(ws->entry));
+    Watched& one = ws->front();
+    one.entry.label += ", skill \"" + skill + "\" alone" + trial_text(one.result);
+    entries.push_back(std::move(one.entry));
   }
-  if (!skills.empty()) entries.front().label += ", its brain free";
   if (Status s = save_view_html(a.out, entries); !s) return fail(s.error());
-  print_result(*c, w->result);
+  print_result(*c, w->front().result);
+  if (w->size() > 1)
+    std::printf("%zu trials, each its own replay (task.trials): pick them on the page\n", w->size());
+  if (!c->trial && shown < trials)
+    std::printf("the first %d of the %d trials are on the page; the other %d were left out (--trial K watches any one)\n",
+                shown, trials, trials - shown);
   if (!skills.empty())
     std::printf("%zu skill(s) each alone beside it (brain.skill): pick them on the page\n", skills.size());
   std::printf("viewer written to %s\n", a.out.c_str());
@@ -328,8 +373,10 @@ int cmd_render(const WatchArgs& a) {
   // simulate, and write the page into a fresh temporary folder
   if (!a.quiet) std::printf("simulating %s ...\n", c->label.c_str());
   std::fflush(stdout);
-  auto w = simulate(*c);
-  if (!w) return fail(w.error());
+  auto watched = simulate(*c);
+  if (!watched) return fail(watched.error());
+  Watched* w = &watched->front();
+  w->entry.label += trial_text(w->result);
   std::string tmpl = (fs::temp_directory_path() / "bestiary-render-XXXXXX").string();
   if (!::mkdtemp(tmpl.data())) return fail("render: cannot make a temporary folder in " + fs::temp_directory_path().string());
   fs::path work = tmpl;
@@ -478,6 +525,7 @@ void add_watch_commands(CLI::App& app) {
   static WatchArgs show, render;
   auto* s = app.add_subcommand("show", "Write a self-contained HTML viewer of a genome, or of a run directory (curves and the best of each generation)");
   add_creature_options(s, show.genome, show.flags);
+  add_trial_option(s, show.flags);
   s->add_option("--out", show.out,
                 "HTML file to write (default: the genome's name with .html, RUN_DIR/view.html for a run, "
                 "RUN_DIR/individual-ID.html for one of its creatures)");
@@ -485,6 +533,7 @@ void add_watch_commands(CLI::App& app) {
 
   auto* r = app.add_subcommand("render", "Simulate a genome and make a video of it (mp4 or gif)");
   add_creature_options(r, render.genome, render.flags);
+  add_trial_option(r, render.flags);
   r->add_option("--out", render.out, "Video file to write: .mp4 or .gif")->required();
   r->add_option("--width", render.width, "Width in pixels")->default_val(1280);
   r->add_option("--height", render.height, "Height in pixels")->default_val(720);

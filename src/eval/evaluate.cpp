@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <stdexcept>
 
 #include "core/rng.h"
 #include "geometry/ode.h"  // PhysicsFault
@@ -103,11 +104,13 @@ EvalResult evaluate_once(const CreatureModel& m, const ControllerModel& controll
     drawn->motor.response_time = d.response_time;
   }
   const SimConfig& cfg = drawn ? *drawn : given;
+  res.trial = trial;
   auto task = make_task(m, cfg, seed, trial);
   if (!task) {
     res.note = task.error();
     return res;
   }
+  res.setup = (*task)->describe();
   std::optional<EvalState> s;
   std::optional<ReplayRecorder> recorder;
   if (replay) recorder.emplace(cfg, *replay);
@@ -131,6 +134,46 @@ EvalResult evaluate_once(const CreatureModel& m, const ControllerModel& controll
   }
   if (recorder) recorder->finish(m, *s);
   report(m, *s, res, recorder ? &recorder->scene() : nullptr);
+  return res;
+}
+
+// Every trial of an evaluation, as evaluate() runs them: trial k under
+// trial_seed(seed, k), recording into replays[k] when there is one.
+std::vector<EvalResult> run_trials(const CreatureModel& m, const ControllerModel& controller, const SimConfig& cfg,
+                                   std::uint64_t seed, std::span<Replay* const> replays) {
+  const int n = std::max(1, cfg.trials);
+  std::vector<EvalResult> out;
+  out.reserve(static_cast<std::size_t>(n));
+  for (int k = 0; k < n; ++k)
+    out.push_back(evaluate_once(m, controller, cfg, trial_seed(seed, k), k,
+                                k < static_cast<int>(replays.size()) ? replays[k] : nullptr));
+  return out;
+}
+
+// The evaluation of these trials seen through trial `shown`: its own fields,
+// with the whole evaluation's fitness, steps and failure.
+EvalResult shown_trial(std::span<const EvalResult> trials, int shown, const SimConfig& cfg) {
+  EvalResult res = trials[static_cast<std::size_t>(shown)];
+  if (trials.size() <= 1) return res;
+  res.trial_fitness.clear();
+  res.steps = res.brain_steps = 0;
+  res.failed = false;
+  res.failure.clear();
+  const int n = static_cast<int>(trials.size());
+  for (int k = 0; k < n; ++k) {
+    const EvalResult& t = trials[static_cast<std::size_t>(k)];
+    res.trial_fitness.push_back(t.fitness);
+    res.steps += t.steps;
+    res.brain_steps += t.brain_steps;
+    if (t.failed && !res.failed) {
+      res.failed = true;
+      // the shown trial's own failure needs no saying which
+      res.failure = k == shown ? t.failure
+                               : "trial " + std::to_string(k + 1) + " of " + std::to_string(n) + ": " + t.failure;
+    }
+  }
+  // a creature that blows up in any trial is discarded (5.4), as in one
+  res.fitness = res.failed ? 0 : fold_trials(cfg, res.trial_fitness);
   return res;
 }
 
@@ -249,25 +292,34 @@ EvalResult evaluate(const CreatureModel& m, const SimConfig& cfg, std::uint64_t 
 
 EvalResult evaluate(const CreatureModel& m, const ControllerModel& controller, const SimConfig& cfg,
                     std::uint64_t seed, Replay* replay) {
-  EvalResult res = evaluate_once(m, controller, cfg, seed, 0, replay);
-  if (cfg.trials <= 1) return res;
   // the first trial is the one a replay shows and the one distance, release
   // and target miss describe; the others only score
-  res.trial_fitness = {res.fitness};
-  for (int k = 1; k < cfg.trials; ++k) {
-    EvalResult t = evaluate_once(m, controller, cfg, trial_seed(seed, k), k, nullptr);
-    res.trial_fitness.push_back(t.fitness);
-    res.steps += t.steps;
-    res.brain_steps += t.brain_steps;
-    if (t.failed && !res.failed) {
-      res.failed = true;
-      res.failure = "trial " + std::to_string(k + 1) + " of " + std::to_string(cfg.trials) + ": " +
-                    t.failure;
-    }
-  }
-  // a creature that blows up in any trial is discarded (5.4), as in one
-  res.fitness = res.failed ? 0 : fold_trials(cfg, res.trial_fitness);
-  return res;
+  return evaluate_trial(m, controller, cfg, seed, 0, replay);
+}
+
+EvalResult evaluate_trial(const CreatureModel& m, const ControllerModel& controller, const SimConfig& cfg,
+                          std::uint64_t seed, int trial, Replay* replay) {
+  if (trial < 0 || trial >= std::max(1, cfg.trials))
+    throw std::logic_error("evaluate_trial: trial " + std::to_string(trial) + " of an evaluation of " +
+                           std::to_string(std::max(1, cfg.trials)) + " trials");
+  std::vector<Replay*> replays(static_cast<std::size_t>(trial) + 1, nullptr);
+  replays.back() = replay;
+  std::vector<EvalResult> trials = run_trials(m, controller, cfg, seed, replays);
+  if (trials.size() == 1) return std::move(trials.front());  // a single trial is the evaluation
+  return shown_trial(trials, trial, cfg);
+}
+
+std::vector<EvalResult> evaluate_trials(const CreatureModel& m, const ControllerModel& controller,
+                                        const SimConfig& cfg, std::uint64_t seed, std::span<Replay> replays) {
+  if (replays.empty() || replays.size() > static_cast<std::size_t>(std::max(1, cfg.trials)))
+    throw std::logic_error("evaluate_trials: " + std::to_string(replays.size()) + " replays of an evaluation of " +
+                           std::to_string(std::max(1, cfg.trials)) + " trials");
+  std::vector<Replay*> each;
+  for (Replay& r : replays) each.push_back(&r);
+  const std::vector<EvalResult> trials = run_trials(m, controller, cfg, seed, each);
+  std::vector<EvalResult> out;
+  for (int k = 0; k < static_cast<int>(replays.size()); ++k) out.push_back(shown_trial(trials, k, cfg));
+  return out;
 }
 
 }  // namespace bx

@@ -60,20 +60,28 @@ struct EvalResult {
   double fitness = 0;
   double distance = 0;      ///< m, by the task's metric (throwing: D_p)
   /// The task's own measures by name (TaskScore::metrics: an aim task's
-  /// "target miss", the river crossing's levels and food); the first trial's.
+  /// "target miss", the river crossing's levels and food); the shown trial's
+  /// (`trial`: the first, unless evaluate_trial showed another).
   std::vector<Metric> metrics;
   /// The task's named moments (its scene record's markers, SceneRecord: a
   /// throw's "begin", "release" and "touch end"), whether or not a replay was
-  /// recorded; the first trial's.
+  /// recorded; the shown trial's.
   std::vector<SceneMarker> markers;
-  double seconds = 0;       ///< simulated time
+  double seconds = 0;       ///< simulated time, the shown trial's
   long steps = 0;            ///< physics steps
   long brain_steps = 0;      ///< brain steps run (at SimConfig::brain_hz; not those the task had the brain wait)
   std::vector<std::string> warnings;
-  /// SimConfig::trials > 1: each trial's fitness, the first being the one
-  /// a replay shows (`fitness` is their mean or least: trial_score); empty for a single trial.
+  /// SimConfig::trials > 1: each trial's fitness, in trial order (`fitness`
+  /// is their fold: fold_trials); empty for a single trial.
   std::vector<double> trial_fitness;
-  /// The first trial's.
+  /// Which trial (0-based) the per-trial fields (distance, metrics, markers,
+  /// seconds, note, diagnostics, setup) and a replay are of: 0 unless
+  /// evaluate_trial showed another.
+  int trial = 0;
+  /// What the shown trial set up, for a viewer's label (Task::describe:
+  /// "light at 135 degrees"), or empty when its task does not say.
+  std::string setup;
+  /// The shown trial's.
   EvalDiagnostics diagnostics;
 
   /// The metric of this name, if the task reported it.
@@ -94,7 +102,8 @@ struct EvalResult {
 /// fitness is the trials' mean (each in trial_fitness), steps and
 /// brain_steps their sums, and a numerical explosion in any trial fails the
 /// whole evaluation; the rest (distance, metrics, markers, seconds, the
-/// replay) is the first trial's, whose seed is `seed` itself.
+/// replay) is the first trial's, whose seed is `seed` itself (evaluate_trial
+/// shows another).
 EvalResult evaluate(const CreatureModel& body, const ControllerModel& controller, const SimConfig& cfg,
                     std::uint64_t seed, Replay* replay = nullptr);
 inline EvalResult evaluate(const Creature& c, const SimConfig& cfg, std::uint64_t seed, Replay* replay = nullptr) {
@@ -102,6 +111,27 @@ inline EvalResult evaluate(const Creature& c, const SimConfig& cfg, std::uint64_
 }
 /// A graph creature's body, driven by its own brain (GraphBrain).
 EvalResult evaluate(const CreatureModel& m, const SimConfig& cfg, std::uint64_t seed, Replay* replay = nullptr);
+
+/// evaluate(), showing trial `trial` (0-based, below cfg.trials) in place of
+/// the first: every trial runs as evaluate() runs it (trial k under
+/// trial_seed(seed, k), its task made for trial k), so fitness,
+/// trial_fitness, steps, brain_steps and a failure are the whole
+/// evaluation's, bit for bit evaluate()'s; the replay and the per-trial
+/// fields (EvalResult::trial) are trial `trial`'s. A user watching a
+/// creature sees each trial's scenario so (`bestiary simulate --trial`).
+EvalResult evaluate_trial(const CreatureModel& body, const ControllerModel& controller, const SimConfig& cfg,
+                          std::uint64_t seed, int trial, Replay* replay = nullptr);
+inline EvalResult evaluate_trial(const Creature& c, const SimConfig& cfg, std::uint64_t seed, int trial,
+                                 Replay* replay = nullptr) {
+  return evaluate_trial(*c.body, *c.controller, cfg, seed, trial, replay);
+}
+
+/// evaluate_trial for each of the first replays.size() trials at once, from
+/// one evaluation (each trial runs once): the k-th result and replays[k] are
+/// what evaluate_trial(..., k, &replays[k]) gives. replays.size() must be
+/// at least 1 and at most cfg.trials (1 for a single trial).
+std::vector<EvalResult> evaluate_trials(const CreatureModel& body, const ControllerModel& controller,
+                                        const SimConfig& cfg, std::uint64_t seed, std::span<Replay> replays);
 
 /// The brain's schedule: how many brain steps have run by the end of the
 /// first `physics_steps` physics steps of `dt`. Brain step k (from 0) runs

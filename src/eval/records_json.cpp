@@ -130,6 +130,8 @@ json outcome_to_json(const EvalOutcome& o) {
           {"brain_steps", r.brain_steps},
           {"warnings", r.warnings},
           {"trial_fitness", nums(r.trial_fitness)},
+          {"trial", r.trial},
+          {"setup", r.setup},
           {"diagnostics",
            {{"max_joint_gap", num(d.max_joint_gap)},
             {"worst_joint", d.worst_joint},
@@ -159,6 +161,8 @@ Result<EvalOutcome> outcome_from_json(const json& j) {
     r.brain_steps = get<long>(j, "brain_steps");
     r.warnings = get<std::vector<std::string>>(j, "warnings");
     r.trial_fitness = get_nums(j, "trial_fitness");
+    r.trial = get<int>(j, "trial");
+    r.setup = get<std::string>(j, "setup");
     const json& d = field(j, "diagnostics");
     if (!d.is_object()) throw std::runtime_error("diagnostics is not an object");
     EvalDiagnostics& g = r.diagnostics;

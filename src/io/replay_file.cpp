@@ -183,6 +183,9 @@ std::string replay_to_string(const CreatureModel& m, const Replay& r, const Eval
                  {"seconds", res.seconds},   {"steps", res.steps},
                  {"warnings", res.warnings}};
   if (!res.trial_fitness.empty()) j["result"]["trial_fitness"] = res.trial_fitness;
+  // the frames of a later trial than the first (evaluate_trial): which, from
+  // 1; written only then, so every other replay reads as before
+  if (res.trial > 0) j["result"]["trial"] = res.trial + 1;
   // the task's own measures by name, when it has any (an aim task's target miss, a
   // river crossing's levels); its moments are the scene record's markers
   if (!res.metrics.empty()) {

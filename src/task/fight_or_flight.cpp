@@ -27,6 +27,10 @@ FightOrFlightTask::FightOrFlightTask(const FightDef& fight, const LightDef& ligh
                                      int n_parts, int trial)
     : def_(fight), dangerous_(trial % 2 == 1), inner_(inner_def(fight, light, trial), strike, dt, n_parts, 0) {}
 
+std::string FightOrFlightTask::describe() const {
+  return std::string(dangerous_ ? "dangerous" : "vulnerable") + " target at " + degrees_text(inner_.bearing());
+}
+
 void FightOrFlightTask::act(const CreatureModel& m, std::span<const double> out, World& w, const Observation& o) {
   inner_.act(m, out, w, o);
   const auto light = inner_.light();

@@ -73,6 +73,8 @@ class FightOrFlightTask : public Task {
   /// `dangerous` (1 for the stack) and `destroyed` (1: it touched the stack).
   TaskScore score(const CreatureModel& m) const override;
   std::string note() const override { return inner_.note(); }
+  /// "vulnerable target at B degrees" or "dangerous target at B degrees".
+  std::string describe() const override;
   /// The inner task's light, and the target as scene props ("target", from
   /// when it appeared; the stack's discs "target 1", "target 2", ...).
   void record(const Observation& o, SceneRecord& out) override;

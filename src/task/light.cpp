@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace bx {
 
@@ -15,6 +16,12 @@ bool towards(LightGoal g) { return g == LightGoal::Face || g == LightGoal::Appro
 
 }  // namespace
 
+std::string degrees_text(double deg) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g degrees", deg);
+  return buf;
+}
+
 LightTask::LightTask(const LightDef& def, const StrikeDef& strike, double dt, int n_parts, int trial)
     : def_(def),
       phases_(settled_phases(def.seconds, def.drop_height, def.settle), dt, n_parts),
@@ -27,6 +34,8 @@ LightTask::LightTask(const LightDef& def, const StrikeDef& strike, double dt, in
   const double b = std::remainder(bearing_, 360.0);
   side_ = std::abs(b) < 1e-9 || std::abs(b) > 180 - 1e-9 ? 0 : b > 0 ? 1 : -1;
 }
+
+std::string LightTask::describe() const { return dark_ ? "no light" : "light at " + degrees_text(bearing_); }
 
 void LightTask::begin(const Observation& o) {
   phases_.begin(o);

@@ -138,6 +138,10 @@ struct LightDef {
 /// or wrong_factor (a strike); trial k lit or dark as LightTask's.
 double attack_fold(const LightDef& def, std::span<const double> trials);
 
+/// A bearing for a label: "135 degrees", "-22.5 degrees" (the light and
+/// fight tasks' describe()).
+std::string degrees_text(double deg);
+
 /// The light task of one trial. Its settle-then-measure phases are a
 /// LocomotionTask's (its activation "settled"), which it drives; it places
 /// the light (act(): World::set_lights) before the first measured step and
@@ -169,6 +173,8 @@ class LightTask : public Task {
   /// (m, the d at the strike; -1: none).
   TaskScore score(const CreatureModel& m) const override;
   std::string note() const override { return phases_.note(); }
+  /// "light at B degrees" (B the trial's bearing), or "no light" (a dark trial).
+  std::string describe() const override;
   /// The light, as a ScenePoint "light", and the moment it came on ("light on").
   void record(const Observation& o, SceneRecord& out) override;
   Phase phase() const { return phases_.phase(); }

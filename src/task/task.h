@@ -159,6 +159,10 @@ class Task {
   virtual TaskScore score(const CreatureModel& m) const = 0;
   /// Why the score is 0 by rule (e.g. never settled), or empty.
   virtual std::string note() const { return {}; }
+  /// What this trial sets up, for a viewer's label, where trials differ in
+  /// more than their seed ("light at 135 degrees", "no light", "dangerous
+  /// target at 90 degrees"); empty when there is nothing to tell.
+  virtual std::string describe() const { return {}; }
   /// What a replay shows beside the creature (core/scene_record.h): appends
   /// to `out` what is new since the last call, stamped with the
   /// observation's time (or a moment's own). The loop calls it while it

@@ -49,6 +49,8 @@ void expect_same(const EvalOutcome& a, const EvalOutcome& b) {
   EXPECT_EQ(x.brain_steps, y.brain_steps);
   EXPECT_EQ(x.warnings, y.warnings);
   expect_same_nums(x.trial_fitness, y.trial_fitness, "trial_fitness");
+  EXPECT_EQ(x.trial, y.trial);
+  EXPECT_EQ(x.setup, y.setup);
   const EvalDiagnostics &d = x.diagnostics, &e = y.diagnostics;
   EXPECT_TRUE(same_bits(d.max_joint_gap, e.max_joint_gap));
   EXPECT_EQ(d.worst_joint, e.worst_joint);
@@ -77,6 +79,8 @@ TEST(OutcomeJson, EveryFieldRoundTripsBitForBit) {
   r.brain_steps = 7;
   r.warnings = {"a", "b\tc"};
   r.trial_fitness = {0.3, 2.0 / 3.0, 5e-324};
+  r.trial = 2;
+  r.setup = "light at -135 degrees";
   r.diagnostics = {0.038123, 21, 0.138, 0.0335, {-1, 0.25, 1.0 / 7.0}, {0, 0.899, 0.57}, {0, 29.97, 1.0 / 3.0}};
   auto back = outcome_from_json(nlohmann::json::parse(outcome_to_json(o).dump()));
   ASSERT_TRUE(back.ok()) << back.error();

@@ -106,6 +106,20 @@ TEST(Fight, EachDirectionHasTheDiscThenTheStackUnderTheLight) {
   }
 }
 
+// what a viewer labels each trial's replay with (Task::describe): each
+// direction's disc, then its stack
+TEST(Fight, DescribeSaysWhichTargetEachTrialShowsAndWhere) {
+  FightDef fight;
+  fight.headings = {0, 90, -22.5};
+  const char* want[] = {"vulnerable target at 0 degrees",    "dangerous target at 0 degrees",
+                        "vulnerable target at 90 degrees",   "dangerous target at 90 degrees",
+                        "vulnerable target at -22.5 degrees", "dangerous target at -22.5 degrees",
+                        "vulnerable target at 0 degrees"};
+  for (int trial = 0; trial < 7; ++trial)
+    EXPECT_EQ(FightOrFlightTask(fight, light_def(), StrikeDef{}, 0.01, 1, trial).describe(), want[trial])
+        << "trial " << trial;
+}
+
 TEST(Fight, TheReplayShowsTheTargetFromWhenItAppeared) {
   FightDef fight;
   fight.headings = {90};

@@ -112,6 +112,18 @@ TEST(Light, TrialKPutsTheLightAtTheKthHeadingFromTheForward) {
   }
 }
 
+// what a viewer labels each trial's replay with (Task::describe)
+TEST(Light, DescribeSaysWhereEachTrialsLightIsOrThatThereIsNone) {
+  LightDef def = def_of(LightGoal::Attack);
+  def.dark_trials = 1;  // trials 0-3 lit at the four headings, 4 dark, then again
+  const char* want[] = {"light at 45 degrees", "light at 135 degrees", "light at -135 degrees",
+                        "light at -45 degrees", "no light", "light at 45 degrees"};
+  for (int k = 0; k < 6; ++k) EXPECT_EQ(LightTask(def, StrikeDef{}, dt, 1, k).describe(), want[k]) << "trial " << k;
+  // a bearing as it was given, a fraction included
+  EXPECT_EQ(LightTask(def_of(LightGoal::Face, {-22.5, 0}), StrikeDef{}, dt, 1, 0).describe(), "light at -22.5 degrees");
+  EXPECT_EQ(LightTask(def_of(LightGoal::Face, {-22.5, 0}), StrikeDef{}, dt, 1, 1).describe(), "light at 0 degrees");
+}
+
 TEST(Light, TheLightGoesOnOnceMeasuringBeginsAndTheSceneShowsIt) {
   LightTask task(def_of(LightGoal::Face), StrikeDef{}, dt, 1, 0);
   Creature o;
@@ -447,6 +459,60 @@ TEST(LightEval, EachTrialHasItsHeadingAndTheEyesSeeTheLightOnceItIsOn) {
   const Vec3 com = side.frames.front().com;
   EXPECT_NEAR(side.scene.points[0].p.x - com.x, 0, 0.1);
   EXPECT_NEAR(side.scene.points[0].p.y - com.y, 3, 0.1);
+}
+
+// evaluate_trial: trial k's replay and measures, the whole evaluation's
+// fitness; evaluate_trials: every trial's at once, each as evaluate_trial's
+TEST(LightEval, EvaluateTrialShowsTrialKOfTheSameEvaluation) {
+  const SimConfig c = light_config("face", 4);
+  Development d = eyes(c);
+  const GraphBrain brain(d.model->brain);
+  Replay first;
+  const EvalResult whole = evaluate(*d.model, c, 1, &first);
+  EXPECT_EQ(whole.trial, 0);
+  EXPECT_EQ(whole.setup, "light at 45 degrees");
+  Replay third;
+  const EvalResult r = evaluate_trial(*d.model, brain, c, 1, 2, &third);
+  ASSERT_FALSE(r.failed) << r.failure;
+  // the evaluation's score, bit for bit, and its steps
+  EXPECT_EQ(r.fitness, whole.fitness);
+  EXPECT_EQ(r.trial_fitness, whole.trial_fitness);
+  EXPECT_EQ(r.steps, whole.steps);
+  EXPECT_EQ(r.brain_steps, whole.brain_steps);
+  // trial 3's own: the light at -135 degrees, seen in its replay
+  EXPECT_EQ(r.trial, 2);
+  EXPECT_EQ(r.setup, "light at -135 degrees");
+  EXPECT_NEAR(*r.metric("bearing"), -135, 0.1);
+  // the light's bearing from the box's forward (its root's x axis) at the end of a replay (degrees)
+  auto bearing_in = [](const Replay& rp) {
+    EXPECT_EQ(rp.scene.points.size(), 1u);
+    const ReplayFrame& f = rp.frames.back();
+    const Vec3 x = from_quat({f.poses[3], f.poses[4], f.poses[5], f.poses[6]}) * Vec3{1, 0, 0};
+    const Vec3 l = rp.scene.points.at(0).p;
+    return heading_step(std::atan2(x.y, x.x), std::atan2(l.y - f.com.y, l.x - f.com.x)) / deg;
+  };
+  EXPECT_NEAR(bearing_in(third), -135, 0.5);
+  EXPECT_NEAR(bearing_in(first), 45, 0.5);
+  // without a replay, the same trial alike
+  const EvalResult quiet = evaluate_trial(*d.model, brain, c, 1, 2);
+  EXPECT_EQ(quiet.fitness, r.fitness);
+  EXPECT_EQ(*quiet.metric("bearing"), *r.metric("bearing"));
+  // all four at once, from one evaluation
+  std::vector<Replay> replays(4);
+  const std::vector<EvalResult> all = evaluate_trials(*d.model, brain, c, 1, replays);
+  ASSERT_EQ(all.size(), 4u);
+  const double h[] = {45, 135, -135, -45};
+  for (int k = 0; k < 4; ++k) {
+    EXPECT_EQ(all[k].trial, k);
+    EXPECT_EQ(all[k].fitness, whole.fitness) << "trial " << k;
+    EXPECT_NEAR(*all[k].metric("bearing"), h[k], 0.1) << "trial " << k;
+    EXPECT_FALSE(replays[k].frames.empty());
+  }
+  ASSERT_EQ(replays[2].frames.size(), third.frames.size());
+  EXPECT_EQ(replays[2].frames.back().poses, third.frames.back().poses);
+  EXPECT_EQ(replays[0].frames.back().poses, first.frames.back().poses);
+  // a trial the evaluation does not have is a caller's mistake
+  EXPECT_THROW(evaluate_trial(*d.model, brain, c, 1, 4), std::logic_error);
 }
 
 }  // namespace

@@ -51,12 +51,14 @@ export function infoRows(entry) {
   rows.push(['fitness', num(res.fitness, fitness)]);
   // task.trials > 1: the fitness is their mean or, under task.trial_score =
   // min, the least (a copy of one trial's: a mean equals the least only when
-  // all are equal); what is shown is the first trial
+  // all are equal); what is shown is the first trial unless result.trial
+  // names another (bestiary simulate --trial, show's page of every trial)
   const trials = res.trial_fitness;
   if (Array.isArray(trials) && trials.length > 1) {
     const least = Math.min(...trials);
     const word = res.fitness === least && trials.some((f) => f !== least) ? 'least' : 'mean';
-    rows.push(['trials', `${word} of ${trials.length}: ${trials.map(fitness).join(', ')} (shown: the first)`]);
+    const shown = Number.isInteger(res.trial) && res.trial > 1 ? `trial ${res.trial}` : 'the first';
+    rows.push(['trials', `${word} of ${trials.length}: ${trials.map(fitness).join(', ')} (shown: ${shown})`]);
   }
   return rows;
 }

@@ -69,5 +69,8 @@ test('a fitness averaged over trials says so, and which trial is shown', () => {
   // all equal: their mean and least agree
   replay.result.trial_fitness = [1, 1, 1];
   assert.equal(rows(replay).trials, 'mean of 3: 1, 1, 1 (shown: the first)');
+  // a later trial's frames (bestiary simulate --trial 3) say which
+  replay.result.trial = 3;
+  assert.equal(rows(replay).trials, 'mean of 3: 1, 1, 1 (shown: trial 3)');
   assert.equal(rows(makeCatapult()).trials, undefined); // one trial: no row
 });
