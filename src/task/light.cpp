@@ -23,8 +23,8 @@ std::string degrees_text(double deg) {
 }
 
 LightTask::LightTask(const LightDef& def, const StrikeDef& strike, double dt, int n_parts, int trial)
-    : def_(def),
-      phases_(settled_phases(def.seconds, def.drop_height, def.settle), dt, n_parts),
+    : SettledTask(def.seconds, def.drop_height, def.settle, dt, n_parts),
+      def_(def),
       meter_(strike.window, strike.threshold, dt) {
   const std::size_t n = def_.headings.size(), cycle = n + static_cast<std::size_t>(std::max(0, def_.dark_trials));
   const std::size_t slot = cycle ? static_cast<std::size_t>(std::max(0, trial)) % cycle : 0;
@@ -37,13 +37,7 @@ LightTask::LightTask(const LightDef& def, const StrikeDef& strike, double dt, in
 
 std::string LightTask::describe() const { return dark_ ? "no light" : "light at " + degrees_text(bearing_); }
 
-void LightTask::begin(const Observation& o) {
-  phases_.begin(o);
-  if (phases_.phase() == Phase::Measure) begin_measure(o);
-}
-
 void LightTask::begin_measure(const Observation& o) {
-  measuring_ = true;
   t_start_ = o.time();
   heading_ = heading(o);
   level_ = root_level(o) >= def_.min_level;
@@ -58,7 +52,7 @@ void LightTask::begin_measure(const Observation& o) {
 }
 
 void LightTask::act(const CreatureModel&, std::span<const double>, World& w, const Observation&) {
-  if (!measuring_ || placed_ || dark_) return;
+  if (!measuring() || placed_ || dark_) return;
   w.set_lights({Light{light_, def_.strength, def_.range}});
   placed_ = true;
 }
@@ -75,14 +69,7 @@ double LightTask::bearing_of(const Observation& o) const {
   return heading_step(heading(o), std::atan2(dy, dx));
 }
 
-void LightTask::observe(const Observation& o) {
-  const bool was_measuring = phases_.phase() == Phase::Measure;
-  phases_.observe(o);
-  if (!was_measuring) {
-    // the step on which settling ended: measuring begins here
-    if (phases_.phase() == Phase::Measure) begin_measure(o);
-    return;
-  }
+void LightTask::measure(const Observation& o) {
   const double s = o.time() - t_start_;
   // the heading, unwrapped from one level enough step to the next (as the turn task's)
   const double h = heading(o);
@@ -113,7 +100,7 @@ void LightTask::observe(const Observation& o) {
 }
 
 std::optional<Light> LightTask::light() const {
-  if (!measuring_ || dark_) return std::nullopt;
+  if (!measuring() || dark_) return std::nullopt;
   return Light{light_, def_.strength, def_.range};
 }
 
@@ -132,7 +119,7 @@ bool LightTask::penalized() const {
 }
 
 double LightTask::fitness() const {
-  if (!measuring_) return 0;
+  if (!measuring()) return 0;
   double f = 0;
   switch (def_.goal) {
     case LightGoal::Face:
@@ -157,7 +144,7 @@ TaskScore LightTask::score(const CreatureModel&) const {
                  {"least_distance", d_min_},
                  {"wrong_turn", wrong_turn()},
                  {"wrong_move", wrong_move_},
-                 {"muscle_work", phases_.measured_work()}}};
+                 {"muscle_work", phases().measured_work()}}};
   if (def_.goal == LightGoal::Attack) {
     const double t = meter_.first_strike();
     out.metrics.push_back({"strike_time", struck() ? t - t_start_ : -1});
@@ -187,7 +174,7 @@ double attack_fold(const LightDef& def, std::span<const double> trials) {
 void LightTask::record(const Observation&, SceneRecord& out) {
   // the light holds from when it was placed for the rest of the replay (a
   // scene point holds throughout: the viewer shows it from the start)
-  if (!measuring_ || recorded_ || dark_) return;
+  if (!measuring() || recorded_ || dark_) return;
   out.points.push_back({"light", light_, kLightSize, kLightColor});
   out.markers.push_back({"light on", t_start_});
   recorded_ = true;

@@ -22,6 +22,7 @@
 #include "core/math.h"
 #include "physics/world.h"
 #include "task/locomotion.h"
+#include "task/settled.h"
 #include "task/strike.h"
 #include "task/task.h"
 
@@ -142,27 +143,20 @@ double attack_fold(const LightDef& def, std::span<const double> trials);
 /// fight tasks' describe()).
 std::string degrees_text(double deg);
 
-/// The light task of one trial. Its settle-then-measure phases are a
-/// LocomotionTask's (its activation "settled"), which it drives; it places
-/// the light (act(): World::set_lights) before the first measured step and
-/// follows the heading and the centre of mass while measured.
-class LightTask : public Task {
+/// The light task of one trial: a SettledTask that places the light (act():
+/// World::set_lights) before the first measured step and follows the
+/// heading and the centre of mass while measured.
+class LightTask : public SettledTask {
  public:
   /// Trial `trial` (0-based) of an evaluation: its light at
   /// def.headings[trial % (n + def.dark_trials)] (0 degrees if there is
   /// none), or none (a dark trial); `strike` measures attack's strikes.
   LightTask(const LightDef& def, const StrikeDef& strike, double dt, int n_parts, int trial);
 
-  Scenario scenario() const override { return {def_.drop_height}; }
-  /// The settling timeout and the measured span, and a step.
-  long max_steps() const override { return phases_.max_steps(); }
-  void begin(const Observation& o) override;
   /// Places the light once measuring has begun (dark until then).
   void act(const CreatureModel&, std::span<const double>, World& w, const Observation&) override;
-  void observe(const Observation& o) override;
-  bool controller_on() const override { return phases_.controller_on(); }
   /// The measured span is over, or (attack) the first strike came.
-  bool done() const override { return phases_.done() || (def_.goal == LightGoal::Attack && struck()); }
+  bool done() const override { return SettledTask::done() || (def_.goal == LightGoal::Attack && struck()); }
   /// Fitness (LightDef); distance: the end's d (m); metrics: bearing (deg,
   /// the light from the heading at the end, counterclockwise positive),
   /// facing (the goal's facing score, before any penalty: the light for
@@ -172,12 +166,10 @@ class LightTask : public Task {
   /// strike_time (s into the measured span, -1: none) and strike_distance
   /// (m, the d at the strike; -1: none).
   TaskScore score(const CreatureModel& m) const override;
-  std::string note() const override { return phases_.note(); }
   /// "light at B degrees" (B the trial's bearing), or "no light" (a dark trial).
   std::string describe() const override;
   /// The light, as a ScenePoint "light", and the moment it came on ("light on").
   void record(const Observation& o, SceneRecord& out) override;
-  Phase phase() const { return phases_.phase(); }
 
   /// This trial's bearing (degrees).
   double bearing() const { return bearing_; }
@@ -207,24 +199,22 @@ class LightTask : public Task {
   double wrong_move() const { return wrong_move_; }
   /// Whether the goal's wrong-direction penalty applies.
   bool penalized() const;
-  double measured_seconds() const { return phases_.measured_seconds(); }
   double fitness() const;
 
  private:
-  void begin_measure(const Observation& o);
+  void begin_measure(const Observation& o) override;
+  void measure(const Observation& o) override;
   // the horizontal distance from the centre of mass to the light, and the
   // light's bearing from the heading (rad)
   double distance_of(const Observation& o) const;
   double bearing_of(const Observation& o) const;
 
   LightDef def_;
-  LocomotionTask phases_;
   ImpactMeter meter_;
   bool dark_ = false;
   double strike_d_ = -1;  // d at the first strike (attack), -1 before
   double bearing_ = 0;       // deg
   double side_ = 0;          // +1 light on the left, -1 on the right, 0 ahead or behind
-  bool measuring_ = false;
   Vec3 light_;               // where the light is, once measuring
   bool placed_ = false;      // in the world
   bool recorded_ = false;    // in the scene record

@@ -24,9 +24,7 @@ double part_top(const PartModel& part, const Pose& pose) {
 }
 
 ReachTask::ReachTask(const ReachDef& def, const CreatureModel& m, double dt)
-    : def_(def),
-      parts_(m.parts),
-      phases_(settled_phases(def.seconds, def.drop_height, def.settle), dt, m.n_parts()) {}
+    : SettledTask(def.seconds, def.drop_height, def.settle, dt, m.n_parts()), def_(def), parts_(m.parts) {}
 
 double ReachTask::top(const Observation& o) const {
   double t = -1e300;
@@ -35,27 +33,12 @@ double ReachTask::top(const Observation& o) const {
   return t;
 }
 
-void ReachTask::begin(const Observation& o) {
-  phases_.begin(o);
-  if (phases_.phase() == Phase::Measure) {
-    measuring_ = true;
-    t_start_ = reach_t_ = o.time();
-    start_top_ = reach_ = top(o);
-  }
+void ReachTask::begin_measure(const Observation& o) {
+  t_start_ = reach_t_ = o.time();
+  start_top_ = reach_ = top(o);
 }
 
-void ReachTask::observe(const Observation& o) {
-  const bool was_measuring = phases_.phase() == Phase::Measure;
-  phases_.observe(o);
-  if (!was_measuring) {
-    // the step on which settling ended: measuring begins here
-    if (phases_.phase() == Phase::Measure) {
-      measuring_ = true;
-      t_start_ = reach_t_ = o.time();
-      start_top_ = reach_ = top(o);
-    }
-    return;
-  }
+void ReachTask::measure(const Observation& o) {
   if (const double t = top(o); t > reach_) {
     reach_ = t;
     reach_t_ = o.time();
@@ -64,11 +47,11 @@ void ReachTask::observe(const Observation& o) {
 
 TaskScore ReachTask::score(const CreatureModel&) const {
   return {reach(),
-          phases_.scored_distance(),
+          phases().scored_distance(),
           {{"reach", reach()},
-           {"start_top", measuring_ ? start_top_ : 0},
-           {"reach_time", measuring_ ? reach_t_ - t_start_ : 0},
-           {"muscle_work", phases_.measured_work()}}};
+           {"start_top", measuring() ? start_top_ : 0},
+           {"reach_time", measuring() ? reach_t_ - t_start_ : 0},
+           {"muscle_work", phases().measured_work()}}};
 }
 
 }  // namespace bx

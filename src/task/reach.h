@@ -11,6 +11,7 @@
 
 #include "core/math.h"
 #include "task/locomotion.h"
+#include "task/settled.h"
 #include "task/task.h"
 
 namespace bx {
@@ -40,35 +41,28 @@ struct ReachDef {
 /// length, size.y their diameter; a sphere's diameter size.x) at `pose`.
 double part_top(const PartModel& part, const Pose& pose);
 
-/// The high-reach task; its settle-then-measure phases are a
-/// LocomotionTask's (activation "settled"), which it drives.
-class ReachTask : public Task {
+/// The high-reach task: a SettledTask that follows the creature's top
+/// while measured.
+class ReachTask : public SettledTask {
  public:
   /// For creature `m` (its parts' shapes and sizes).
   ReachTask(const ReachDef& def, const CreatureModel& m, double dt);
 
-  Scenario scenario() const override { return {def_.drop_height}; }
-  long max_steps() const override { return phases_.max_steps(); }
-  void begin(const Observation& o) override;
-  void observe(const Observation& o) override;
-  bool controller_on() const override { return phases_.controller_on(); }
-  bool done() const override { return phases_.done(); }
   /// Fitness: the reach (m; 0 without settling); distance: the centre of
   /// mass's travel on the ground while measured; metrics: reach (m),
   /// start_top (m: the top when measuring began), reach_time (s into the
   /// measured span) and muscle_work (J).
   TaskScore score(const CreatureModel& m) const override;
-  std::string note() const override { return phases_.note(); }
-  Phase phase() const { return phases_.phase(); }
   /// The creature's top now (m).
   double top(const Observation& o) const;
-  double reach() const { return measuring_ ? reach_ : 0; }
+  double reach() const { return measuring() ? reach_ : 0; }
 
  private:
+  void begin_measure(const Observation& o) override;
+  void measure(const Observation& o) override;
+
   ReachDef def_;
   std::vector<PartModel> parts_;
-  LocomotionTask phases_;
-  bool measuring_ = false;
   double t_start_ = 0, start_top_ = 0, reach_ = 0, reach_t_ = 0;
 };
 

@@ -30,41 +30,26 @@ void ImpactMeter::observe(double t, double z) {
 }
 
 StrikeTask::StrikeTask(const StrikeDef& def, double dt, int n_parts)
-    : def_(def), phases_(settled_phases(def.seconds, def.drop_height, def.settle), dt, n_parts), meter_(def.window, def.threshold, dt) {}
+    : SettledTask(def.seconds, def.drop_height, def.settle, dt, n_parts),
+      def_(def),
+      meter_(def.window, def.threshold, dt) {}
 
-void StrikeTask::begin(const Observation& o) {
-  phases_.begin(o);
-  if (phases_.phase() == Phase::Measure) {
-    measuring_ = true;
-    t_start_ = o.time();
-    meter_.start(o.time(), o.centre_of_mass().z);
-  }
+void StrikeTask::begin_measure(const Observation& o) {
+  t_start_ = o.time();
+  meter_.start(o.time(), o.centre_of_mass().z);
 }
 
-void StrikeTask::observe(const Observation& o) {
-  const bool was_measuring = phases_.phase() == Phase::Measure;
-  phases_.observe(o);
-  if (!was_measuring) {
-    // the step on which settling ended: measuring begins here
-    if (phases_.phase() == Phase::Measure) {
-      measuring_ = true;
-      t_start_ = o.time();
-      meter_.start(o.time(), o.centre_of_mass().z);
-    }
-    return;
-  }
-  meter_.observe(o.time(), o.centre_of_mass().z);
-}
+void StrikeTask::measure(const Observation& o) { meter_.observe(o.time(), o.centre_of_mass().z); }
 
 TaskScore StrikeTask::score(const CreatureModel&) const {
-  const double impact = measuring_ ? meter_.peak() : 0;
+  const double impact = measuring() ? meter_.peak() : 0;
   const double strike = meter_.first_strike();
   return {impact,
-          phases_.scored_distance(),
+          phases().scored_distance(),
           {{"impact", impact},
-           {"impact_time", measuring_ ? meter_.peak_time() - t_start_ : 0},
+           {"impact_time", measuring() ? meter_.peak_time() - t_start_ : 0},
            {"strike_time", strike < 0 ? -1 : strike - t_start_},
-           {"muscle_work", phases_.measured_work()}}};
+           {"muscle_work", phases().measured_work()}}};
 }
 
 }  // namespace bx

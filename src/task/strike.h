@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "task/locomotion.h"
+#include "task/settled.h"
 #include "task/task.h"
 
 namespace bx {
@@ -72,32 +73,24 @@ class ImpactMeter {
   double peak_ = 0, peak_t_ = 0, first_ = -1;
 };
 
-/// The strike task; its settle-then-measure phases are a LocomotionTask's
-/// (activation "settled"), which it drives.
-class StrikeTask : public Task {
+/// The strike task: a SettledTask that meters the impacts while measured.
+class StrikeTask : public SettledTask {
  public:
   StrikeTask(const StrikeDef& def, double dt, int n_parts);
 
-  Scenario scenario() const override { return {def_.drop_height}; }
-  long max_steps() const override { return phases_.max_steps(); }
-  void begin(const Observation& o) override;
-  void observe(const Observation& o) override;
-  bool controller_on() const override { return phases_.controller_on(); }
-  bool done() const override { return phases_.done(); }
   /// Fitness: the peak impact (m/s); distance: the centre of mass's travel
   /// on the ground while measured; metrics: impact (m/s), impact_time (s
   /// into the measured span), strike_time (s into it of the first impact
   /// reaching the threshold, -1: none), muscle_work (J).
   TaskScore score(const CreatureModel& m) const override;
-  std::string note() const override { return phases_.note(); }
-  Phase phase() const { return phases_.phase(); }
   const ImpactMeter& meter() const { return meter_; }
 
  private:
+  void begin_measure(const Observation& o) override;
+  void measure(const Observation& o) override;
+
   StrikeDef def_;
-  LocomotionTask phases_;
   ImpactMeter meter_;
-  bool measuring_ = false;
   double t_start_ = 0;
 };
 

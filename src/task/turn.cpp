@@ -6,15 +6,11 @@
 namespace bx {
 
 TurnTask::TurnTask(const TurnDef& def, double dt, int n_parts)
-    : def_(def), phases_(settled_phases(def.seconds, def.drop_height, def.settle), dt, n_parts), sign_(def.direction == TurnDirection::Left ? 1 : -1) {}
-
-void TurnTask::begin(const Observation& o) {
-  phases_.begin(o);
-  if (phases_.phase() == Phase::Measure) begin_measure(o);
-}
+    : SettledTask(def.seconds, def.drop_height, def.settle, dt, n_parts),
+      def_(def),
+      sign_(def.direction == TurnDirection::Left ? 1 : -1) {}
 
 void TurnTask::begin_measure(const Observation& o) {
-  measuring_ = true;
   heading_ = heading(o);
   level_ = root_level(o) >= def_.min_level;
   turned_ = 0;
@@ -25,14 +21,7 @@ void TurnTask::begin_measure(const Observation& o) {
   marks_.assign(1, 0.0);
 }
 
-void TurnTask::observe(const Observation& o) {
-  const bool was_measuring = phases_.phase() == Phase::Measure;
-  phases_.observe(o);
-  if (!was_measuring) {
-    // the step on which settling ended: measuring begins here
-    if (phases_.phase() == Phase::Measure) begin_measure(o);
-    return;
-  }
+void TurnTask::measure(const Observation& o) {
   // the heading counts only from one level enough step to the next (TurnDef::min_level)
   const double h = heading(o);
   const bool level = root_level(o) >= def_.min_level;
@@ -48,7 +37,7 @@ void TurnTask::observe(const Observation& o) {
 }
 
 double TurnTask::scored_turn() const {
-  if (!measuring_) return 0;
+  if (!measuring()) return 0;
   if (def_.windows <= 1) return sign_ * turned_;
   if (static_cast<int>(marks_.size()) < def_.windows + 1) return 0;
   double least = sign_ * (marks_[1] - marks_[0]);
@@ -71,7 +60,7 @@ TaskScore TurnTask::score(const CreatureModel&) const {
           {{"turn_rate", turn_rate()},
            {"turned", sign_ * turned_},
            {"travel", travel_},
-           {"muscle_work", phases_.measured_work()}}};
+           {"muscle_work", phases().measured_work()}}};
 }
 
 }  // namespace bx

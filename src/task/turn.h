@@ -11,6 +11,7 @@
 
 #include "core/math.h"
 #include "task/locomotion.h"
+#include "task/settled.h"
 #include "task/task.h"
 
 namespace bx {
@@ -64,27 +65,17 @@ struct TurnDef {
   friend bool operator==(const TurnDef&, const TurnDef&) = default;
 };
 
-/// The turn task. Its settle-then-measure phases are a LocomotionTask's (its
-/// activation "settled"), which it drives; it follows the heading and the
-/// centre of mass while that one measures.
-class TurnTask : public Task {
+/// The turn task: a SettledTask that follows the heading and the centre of
+/// mass while measured.
+class TurnTask : public SettledTask {
  public:
   TurnTask(const TurnDef& def, double dt, int n_parts);
 
-  Scenario scenario() const override { return {def_.drop_height}; }
-  /// The settling timeout and the measured span, and a step.
-  long max_steps() const override { return phases_.max_steps(); }
-  void begin(const Observation& o) override;
-  void observe(const Observation& o) override;
-  bool controller_on() const override { return phases_.controller_on(); }
-  bool done() const override { return phases_.done(); }
   /// Fitness (TurnDef); distance: travel(); metrics: turn_rate (rad/s, the
   /// rate that scores, negative when the least window turned the wrong
   /// way), turned (rad, the whole span's turn in `direction`), travel (m)
   /// and muscle_work (J, while measured).
   TaskScore score(const CreatureModel& m) const override;
-  std::string note() const override { return phases_.note(); }
-  Phase phase() const { return phases_.phase(); }
 
   /// The unwrapped heading change while measured (rad, counterclockwise
   /// positive; 0 before measuring).
@@ -97,16 +88,14 @@ class TurnTask : public Task {
   /// The farthest horizontal distance of the centre of mass from where it
   /// was when measuring began (m).
   double travel() const { return travel_; }
-  double measured_seconds() const { return phases_.measured_seconds(); }
   double fitness() const;
 
  private:
-  void begin_measure(const Observation& o);
+  void begin_measure(const Observation& o) override;
+  void measure(const Observation& o) override;
 
   TurnDef def_;
-  LocomotionTask phases_;
   double sign_;              // +1 left, -1 right
-  bool measuring_ = false;
   double heading_ = 0;       // the last counted step's heading (rad)
   bool level_ = true;        // whether the last step's root was level enough (TurnDef::min_level)
   double turned_ = 0;        // rad, counterclockwise
