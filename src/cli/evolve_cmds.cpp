@@ -208,14 +208,23 @@ int cmd_presets() {
   };
   std::vector<Row> rows{{"NAME", "PAPER", "BUDGET", "TIME (2 CORES)", "WHAT IT RUNS"}};
   for (const auto& p : presets()) {
-    auto cfg = read_run_config(p.text, p.name);
-    if (!cfg) return fail(cfg.error());  // a broken built-in preset: the build's tests catch it
-    const EvolutionDef& e = cfg->evolution;
+    // a config, or a run of stages (an ESP syllabus)
+    auto syl = read_syllabus(p.text, p.name);
+    if (!syl) return fail(syl.error());  // a broken built-in preset: the build's tests catch it
+    const RunConfig& cfg = syl->stages.front().cfg;
+    const EvolutionDef& e = cfg.evolution;
     std::string budget = e.algorithm == Algorithm::Generational
                              ? grouped(e.population) + " x " + grouped(e.generations) + " generations"
                              : grouped(e.population) + ", " + grouped(e.evaluations) +
                                    (e.tournament_evaluates == TournamentEvaluates::All ? " tournaments" : " evaluations");
-    rows.push_back({p.name, paper_of(*cfg), budget, preset_time(p), preset_summary(p)});
+    if (syl->staged()) {
+      // the first stage's population over every stage's generations
+      long generations = 0;
+      for (const StageDef& st : syl->stages) generations += total_generations(st.cfg.evolution);
+      budget = grouped(e.population) + " x " + grouped(generations) + " generations in " +
+               std::to_string(syl->stages.size()) + " stages";
+    }
+    rows.push_back({p.name, paper_of(cfg), budget, preset_time(p), preset_summary(p)});
   }
   std::size_t w[4] = {};
   for (const auto& r : rows)

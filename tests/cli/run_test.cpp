@@ -365,6 +365,9 @@ TEST_F(RunCli, PresetsAreListedOneLineEach) {
   // a steady state that evaluates a tournament's three counts tournaments (evolution.evaluations)
   EXPECT_NE(line_of("rivercrossing-small").find(" tournaments "), std::string::npos) << r.out;
   EXPECT_NE(line_of("miconi2006-small").find(" evaluations "), std::string::npos) << r.out;
+  // a run of stages (an ESP syllabus): its stages' generations, from the first stage's population
+  EXPECT_NE(line_of("lessin2015-fast-small").find("Lessin et al. 2015"), std::string::npos) << r.out;
+  EXPECT_NE(line_of("lessin2015-fast-small").find("30 x 100 generations in 10 stages"), std::string::npos) << r.out;
 }
 
 }  // namespace
