@@ -10,7 +10,6 @@
 
 namespace bx {
 
-/// Levenshtein distance (insertions, deletions, substitutions).
 /// A number as printf's %g prints it, for messages.
 inline std::string g_number(double v) {
   char buf[32];
@@ -18,6 +17,7 @@ inline std::string g_number(double v) {
   return buf;
 }
 
+/// Levenshtein distance (insertions, deletions, substitutions).
 inline std::size_t edit_distance(std::string_view a, std::string_view b) {
   std::vector<std::size_t> row(b.size() + 1);
   for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;

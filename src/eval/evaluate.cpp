@@ -302,10 +302,11 @@ EvalResult evaluate_trial(const CreatureModel& m, const ControllerModel& control
   if (trial < 0 || trial >= std::max(1, cfg.trials))
     throw std::logic_error("evaluate_trial: trial " + std::to_string(trial) + " of an evaluation of " +
                            std::to_string(std::max(1, cfg.trials)) + " trials");
+  // a single trial is the evaluation (every run's usual case: no vectors on the way)
+  if (cfg.trials <= 1) return evaluate_once(m, controller, cfg, seed, 0, replay);
   std::vector<Replay*> replays(static_cast<std::size_t>(trial) + 1, nullptr);
   replays.back() = replay;
-  std::vector<EvalResult> trials = run_trials(m, controller, cfg, seed, replays);
-  if (trials.size() == 1) return std::move(trials.front());  // a single trial is the evaluation
+  const std::vector<EvalResult> trials = run_trials(m, controller, cfg, seed, replays);
   return shown_trial(trials, trial, cfg);
 }
 

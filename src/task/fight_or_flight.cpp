@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "core/text.h"
 #include "physics/world.h"
 
 namespace bx {
@@ -28,7 +29,7 @@ FightOrFlightTask::FightOrFlightTask(const FightDef& fight, const LightDef& ligh
     : def_(fight), dangerous_(trial % 2 == 1), inner_(inner_def(fight, light, trial), strike, dt, n_parts, 0) {}
 
 std::string FightOrFlightTask::describe() const {
-  return std::string(dangerous_ ? "dangerous" : "vulnerable") + " target at " + degrees_text(inner_.bearing());
+  return std::string(dangerous_ ? "dangerous" : "vulnerable") + " target at " + g_number(inner_.bearing()) + " degrees";
 }
 
 void FightOrFlightTask::act(const CreatureModel& m, std::span<const double> out, World& w, const Observation& o) {

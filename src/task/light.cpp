@@ -2,7 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
+
+#include "core/text.h"
 
 namespace bx {
 
@@ -15,12 +16,6 @@ constexpr double kLightSize = 0.2;
 bool towards(LightGoal g) { return g == LightGoal::Face || g == LightGoal::Approach; }
 
 }  // namespace
-
-std::string degrees_text(double deg) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g degrees", deg);
-  return buf;
-}
 
 LightTask::LightTask(const LightDef& def, const StrikeDef& strike, double dt, int n_parts, int trial)
     : SettledTask(def.seconds, def.drop_height, def.settle, dt, n_parts),
@@ -35,7 +30,7 @@ LightTask::LightTask(const LightDef& def, const StrikeDef& strike, double dt, in
   side_ = std::abs(b) < 1e-9 || std::abs(b) > 180 - 1e-9 ? 0 : b > 0 ? 1 : -1;
 }
 
-std::string LightTask::describe() const { return dark_ ? "no light" : "light at " + degrees_text(bearing_); }
+std::string LightTask::describe() const { return dark_ ? "no light" : "light at " + g_number(bearing_) + " degrees"; }
 
 void LightTask::begin_measure(const Observation& o) {
   t_start_ = o.time();

@@ -111,7 +111,7 @@ struct LightDef {
   /// span on (0.5: its second half), so the creature has the first half to
   /// turn and must then hold its aim (a spinning creature averages 0.5).
   double score_from = 0.5;
-  /// The heading counts only while the root's x axis lies within 60
+  /// The heading counts only while the front (task.front) lies within 60
   /// degrees of the ground (its projection at least this long), as the turn
   /// task's turn.min_level: a root tipped up has no heading to aim.
   double min_level = 0.5;
@@ -138,10 +138,6 @@ struct LightDef {
 /// of the lit trials' times the mean over the dark trials of 1 (no strike)
 /// or wrong_factor (a strike); trial k lit or dark as LightTask's.
 double attack_fold(const LightDef& def, std::span<const double> trials);
-
-/// A bearing for a label: "135 degrees", "-22.5 degrees" (the light and
-/// fight tasks' describe()).
-std::string degrees_text(double deg);
 
 /// The light task of one trial: a SettledTask that places the light (act():
 /// World::set_lights) before the first measured step and follows the

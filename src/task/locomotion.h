@@ -17,7 +17,7 @@ enum class DistanceMetric {
   Planar,  ///< horizontal distance (x, y) of the centre of mass
   AlongX,  ///< signed displacement along +x (miconi2006 5.2)
   /// signed displacement along the creature's forward when measuring began:
-  /// its heading (task.h's heading(), the root's x axis on the ground), the
+  /// its heading (task.h's heading(), its front on the ground), the
   /// forward lessin2015's light tasks aim (task/light.h)
   Forward,
 };

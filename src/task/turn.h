@@ -27,7 +27,7 @@ enum class TurnDirection {
 /// A turning task. As lessin2015's forward locomotion (the dialect's
 /// task.activation = "settled"), the creature first settles with its
 /// controller off, then is measured for `seconds` with it on. Over that span
-/// the heading (heading(): the root's x axis on the ground) is unwrapped
+/// the heading (heading(): the front, task.front, on the ground) is unwrapped
 /// step by step, and
 ///   fitness = max(0, rate) / (1 + travel / travel_scale),
 /// rate being the turn in `direction` (rad/s; windows below) and travel the
@@ -54,7 +54,7 @@ struct TurnDef {
   /// 1.2 m lessin_crawler, so a pivot shuffling a few centimetres keeps
   /// 80-90% while walking off at 0.5 m/s (5 m in 10 s) keeps under 5%.
   double travel_scale = 0.25;
-  /// The heading counts only while the root's x axis lies within 60 degrees
+  /// The heading counts only while the front (task.front) lies within 60 degrees
   /// of the ground (its projection on the ground at least this long: 0.5);
   /// over a steeper stretch it is taken up again where the axis comes out,
   /// so a root tipped over the vertical (its heading flipping by pi) or
