@@ -104,13 +104,19 @@ Evolution::Child Evolution::viable(Child c, Rng& rng, long& rejected,
 
 // the algorithm's asexual child of `a`
 Evolution::Child Evolution::mutant(const Individual& a, Rng& r) const {
-  Child c{a.genotype, a.id, -1, "mutation"};
-  if (evo_.algorithm == Algorithm::Generational) {
-    c.genotype = ops_->mutate(*a.genotype, evo_.asexual_rate, r);
-  } else {
-    for (int m = 0; m < evo_.asexual_mutations; ++m) c.genotype = ops_->mutate(*c.genotype, evo_.mutation_rate, r);
+  for (int tries = 0;; ++tries) {
+    Child c{a.genotype, a.id, -1, "mutation"};
+    if (evo_.algorithm == Algorithm::Generational) {
+      c.genotype = ops_->mutate(*a.genotype, evo_.asexual_rate, r);
+    } else {
+      for (int m = 0; m < evo_.asexual_mutations; ++m) c.genotype = ops_->mutate(*c.genotype, evo_.mutation_rate, r);
+    }
+    if (tries >= evo_.max_regenerations || !copies_parent(c, *a.genotype, *a.genotype)) return c;
   }
-  return c;
+}
+
+bool Evolution::copies_parent(const Child& c, const Genotype& a, const Genotype& b) const {
+  return evo_.distinct_children && (c.genotype->equals(a) || c.genotype->equals(b));
 }
 
 Evolution::Child Evolution::random_child(Rng& rng, long& rejected) const {
@@ -303,15 +309,18 @@ GenerationResult Evolution::generational(EvolutionState& s, Evaluator& eval) con
   for (int k = 0; k < evo_.population - elite; ++k) {
     Rng rng(stream_seed({seed_, kBreed, static_cast<std::uint64_t>(g), static_cast<std::uint64_t>(k)}));
     auto make = [&](Rng& r) {
-      const Individual& a = survivors[select_survivor(survivors, evo_.selection, r)];
-      double u = r.uniform();
-      if (u < evo_.p_asexual) return mutant(a, r);
-      const Individual& b = survivors[select_survivor(survivors, evo_.selection, r)];
-      bool cross = u < evo_.p_asexual + evo_.p_crossover;
-      Child c{cross ? ops_->crossover(*a.genotype, *b.genotype, r) : ops_->graft(*a.genotype, *b.genotype, r),
-              a.id, b.id, cross ? "crossover" : "graft"};
-      if (r.chance(evo_.sexual_mutation_chance)) c.genotype = ops_->mutate(*c.genotype, evo_.sexual_rate, r);
-      return c;
+      for (int tries = 0;; ++tries) {
+        const Individual& a = survivors[select_survivor(survivors, evo_.selection, r)];
+        double u = r.uniform();
+        if (u < evo_.p_asexual) return mutant(a, r);
+        const Individual& b = survivors[select_survivor(survivors, evo_.selection, r)];
+        bool cross = u < evo_.p_asexual + evo_.p_crossover;
+        Child c{cross ? ops_->crossover(*a.genotype, *b.genotype, r) : ops_->graft(*a.genotype, *b.genotype, r),
+                a.id, b.id, cross ? "crossover" : "graft"};
+        if (r.chance(evo_.sexual_mutation_chance)) c.genotype = ops_->mutate(*c.genotype, evo_.sexual_rate, r);
+        // a copy of a parent is made again, parents and operator drawn anew (distinct_children)
+        if (tries >= evo_.max_regenerations || !copies_parent(c, *a.genotype, *b.genotype)) return c;
+      }
     };
     children.push_back(viable(make(rng), rng, rejected, make));
   }
@@ -403,13 +412,15 @@ GenerationResult Evolution::steady_state(EvolutionState& s, Evaluator& eval) con
       // four mutations of the best, crossover + mutation or grafting +
       // mutation (5.2: a third each), in the shares p_asexual, p_crossover, p_graft
       auto make = [&](Rng& r) {
-        const double u = r.uniform();
-        if (u < evo_.p_asexual) return mutant(a, r);
-        const bool cross = u < evo_.p_asexual + evo_.p_crossover;
-        Child c{cross ? ops_->crossover(*a.genotype, *b.genotype, r) : ops_->graft(*a.genotype, *b.genotype, r),
-                a.id, b.id, cross ? "crossover" : "graft"};
-        c.genotype = ops_->mutate(*c.genotype, evo_.mutation_rate, r);
-        return c;
+        for (int tries = 0;; ++tries) {
+          const double u = r.uniform();
+          if (u < evo_.p_asexual) return mutant(a, r);
+          const bool cross = u < evo_.p_asexual + evo_.p_crossover;
+          Child c{cross ? ops_->crossover(*a.genotype, *b.genotype, r) : ops_->graft(*a.genotype, *b.genotype, r),
+                  a.id, b.id, cross ? "crossover" : "graft"};
+          c.genotype = ops_->mutate(*c.genotype, evo_.mutation_rate, r);
+          if (tries >= evo_.max_regenerations || !copies_parent(c, *a.genotype, *b.genotype)) return c;
+        }
       };
       children.push_back(viable(make(rng), rng, rejected, make));
       replaced.push_back(tri[2]);

@@ -77,6 +77,14 @@ struct EvolutionDef {
   /// at dt/4 only, such as a topple the step decides, is lost too (issue 11).
   bool elite_quarter_step = false;
   int max_regenerations = 1000;   ///< non-viable children redrawn at most this often, then a random genome
+  /// A child whose genotype equals a parent's is made again (new parents,
+  /// new operator), up to max_regenerations times, then kept. A stage whose
+  /// genomes are mostly locked (lessin2015's Fast ESP: the body and every
+  /// learned skill frozen) otherwise spends half its evaluations on copies:
+  /// crossover of two frozen genomes that differ in a few free genes gives
+  /// one of them, and most mutations find nothing they may change. Off in
+  /// every dialect's defaults (our choice where on: the ESP presets).
+  bool distinct_children = false;
   double evaluation_timeout = 120;  ///< seconds before a worker's evaluation is abandoned
   /// Fitness of an evaluation that blew up, crashed or timed out: "an
   /// arbitrary low value" (chaumont2007 5.4). 0 suits tasks whose scores are

@@ -540,6 +540,7 @@ struct GraphMutator {
   }
 
   void add_neuron() {
+    if (def.p_wired_neuron > 0 && rng.chance(def.p_wired_neuron) && add_wired_neuron()) return;
     NeuronGene nr = random_neuron(g.dialect, def, rng);
     int owner = r.global_neurons && rng.chance(def.p_global_neuron)
                     ? -1
@@ -716,6 +717,47 @@ struct GraphMutator {
   std::vector<InputGene>& inputs_of(const UnitRef& u) {
     if (u.effector) return g.nodes[u.owner].effectors[u.index].inputs;
     return u.owner < 0 ? g.global_neurons[u.index].inputs : g.nodes[u.owner].neurons[u.index].inputs;
+  }
+
+  // a units that may take one more input (wired_units, a neuron below its
+  // function's input limit)
+  std::vector<UnitRef> open_units() {
+    std::vector<UnitRef> out;
+    for (const UnitRef& u : wired_units()) {
+      if (!u.effector) {
+        const NeuronGene& nr = u.owner < 0 ? g.global_neurons[u.index] : g.nodes[u.owner].neurons[u.index];
+        int most = spec_of(g, nr)->max_inputs;
+        if (r.max_inputs_per_neuron > 0) most = std::min(most, r.max_inputs_per_neuron);
+        if (static_cast<int>(nr.inputs.size()) >= most) continue;
+      }
+      out.push_back(u);
+    }
+    return out;
+  }
+
+  // add_neuron in front of a unit (OperatorDef::p_wired_neuron): a random
+  // neuron in a random open unit's node (or global, for a global unit),
+  // wired as add_neuron wires one, and read by that unit with a random
+  // weight. False (nothing drawn past the unit) when no unit is open.
+  bool add_wired_neuron() {
+    std::vector<UnitRef> units = open_units();
+    if (units.empty()) return false;
+    const UnitRef u = units[rng.below(units.size())];
+    NeuronGene nr = random_neuron(g.dialect, def, rng);
+    auto& list = u.owner < 0 ? g.global_neurons : g.nodes[u.owner].neurons;
+    list.push_back(nr);
+    const int k = static_cast<int>(list.size()) - 1;
+    int count = new_input_count(g, nr, def, rng);
+    std::vector<InputGene> ins = random_inputs(g, u.owner, count, def, rng);
+    (u.owner < 0 ? g.global_neurons : g.nodes[u.owner].neurons)[k].inputs = std::move(ins);
+    Range wb = weight_bounds(def, g.dialect);
+    InputGene in;
+    in.place = u.owner < 0 ? SourcePlace::Global : SourcePlace::Self;
+    in.kind = SourceKind::Neuron;
+    in.index = k;
+    in.weight = rng.uniform(wb.lo, wb.hi);
+    inputs_of(u).push_back(in);
+    return true;
   }
 
   void add_input() {

@@ -207,6 +207,16 @@ struct OperatorDef {
   Range effector_bias_range{};
   /// Graph dialects: share of new neurons that are global. Our choice.
   double p_global_neuron = 0;
+  /// Graph dialects: the chance that the add_neuron mutation puts its neuron
+  /// in front of a unit: a random weighted-sum neuron or effector that may
+  /// take an input (as add_input draws them) reads the new neuron, placed in
+  /// that unit's node (a global unit's: global). Otherwise (and when no unit
+  /// may take one) the new neuron has no reader until a later mutation wires
+  /// it, as Sims' does. 0 in every dialect's defaults (no draw then): config
+  /// operators.wired_neurons. A new ESP skill grows its control this way in
+  /// front of the shared muscles (lessin2015 IV-B): on a frozen genome an
+  /// unread neuron changes nothing.
+  double p_wired_neuron = 0;
 
   // ---- mutation (the per-parameter rate is mutate()'s argument: the
   // evolutionary loop's EvolutionDef holds the rates and the operator mix)

@@ -568,6 +568,44 @@ TEST(TournamentEvaluatesAll, EqualEvaluationsTieAtRandom) {
   EXPECT_LT(first, 10) << "of 30";  // 300 tournaments, each losing one of three at random
 }
 
+// a mutation that moves each of 4 genes with probability 0.05 leaves all
+// four as they were 81% of the time, and crossover of two equal parents
+// gives them again: distinct_children makes such a copy again
+TEST_P(FloatLoops, DistinctChildrenAreNeverCopiesOfAParent) {
+  auto ops = std::make_shared<FloatVectorOps>(FloatVectorDef{4, -1, 1, 0.1});
+  for (bool distinct : {false, true}) {
+    EvolutionDef e = float_evolution(GetParam());
+    e.mutation_rate = e.asexual_rate = e.sexual_rate = 0.05;
+    e.sexual_mutation_chance = 0.1;
+    e.generations = 6;
+    e.evaluations = 150;
+    e.distinct_children = distinct;
+    Evolution evo(ops, e, 5);
+    TargetPoint problem(0.3);
+    EvolutionState s;
+    std::map<std::int64_t, std::shared_ptr<const Genotype>> by_id;
+    int copies = 0, children = 0;
+    while (!evo.finished(s)) {
+      GenerationResult r = evo.step(s, problem);
+      for (const auto& ind : r.born) {
+        by_id[ind.id] = ind.genotype;
+        if (ind.op == "random") continue;
+        ++children;
+        for (std::int64_t p : {ind.parent1, ind.parent2})
+          if (p >= 0 && ind.genotype->equals(*by_id.at(p))) {
+            ++copies;
+            break;
+          }
+      }
+    }
+    ASSERT_GT(children, 100);
+    if (distinct)
+      EXPECT_EQ(copies, 0) << "of " << children;
+    else
+      EXPECT_GT(copies, children / 4);
+  }
+}
+
 TEST(Breeding, GraftingNeedsAKindThatHasIt) {
   EvolutionDef e = float_evolution(Algorithm::Generational);
   FloatVectorOps floats(FloatVectorDef{4, -1, 1, 0.1});

@@ -102,6 +102,68 @@ TEST(Encapsulate, AThousandMutationsChangeNoFrozenGene) {
   EXPECT_TRUE(locks_kept(e, child).ok()) << locks_kept(e, child).error();
 }
 
+// how many inputs of units other than neuron k of `owner` (-1: global) read it
+int readers_of(const Genome& g, int owner, int k) {
+  int n = 0;
+  const NeuronGene* self = &(owner < 0 ? g.global_neurons : g.nodes[owner].neurons)[k];
+  auto count = [&](int reader, const std::vector<InputGene>& ins) {
+    if (!ins.empty() && &ins == &self->inputs) return;
+    for (const InputGene& in : ins) {
+      if (in.kind != SourceKind::Neuron || in.index != k) continue;
+      if (owner < 0 ? in.place == SourcePlace::Global : (in.place == SourcePlace::Self && reader == owner)) ++n;
+    }
+  };
+  for (int i = 0; i < static_cast<int>(g.nodes.size()); ++i) {
+    for (const NeuronGene& nr : g.nodes[i].neurons) count(i, nr.inputs);
+    for (const EffectorGene& ef : g.nodes[i].effectors) count(i, ef.inputs);
+  }
+  for (const NeuronGene& nr : g.global_neurons) count(-1, nr.inputs);
+  return n;
+}
+
+TEST(Encapsulate, AWiredNewNeuronIsReadByAMuscleOrAnOpenSwitch) {
+  Genome e = encapsulated(crawler(), "crawl");
+  open_switches(e, {"crawl"});
+  OperatorDef def = default_operators(Dialect::Lessin2015);
+  def.structure = {};
+  def.structure.add_neuron = 1;  // each mutation adds one neuron, and nothing else changes (rate 0)
+  for (double wired : {0.0, 1.0}) {
+    def.p_wired_neuron = wired;
+    Rng rng(11);
+    int read = 0, effectors = 0, switches = 0;
+    for (int k = 0; k < 200; ++k) {
+      Genome g = e;
+      mutate(g, def, 0, rng);
+      ASSERT_TRUE(validate(g).ok()) << validate(g).error();
+      ASSERT_TRUE(locks_kept(e, g).ok()) << locks_kept(e, g).error();
+      // the one new neuron: the last of its node's or of the global ones
+      int owner = -2, at = -1;
+      for (int i = 0; i < static_cast<int>(g.nodes.size()); ++i)
+        if (g.nodes[i].neurons.size() == e.nodes[i].neurons.size() + 1) owner = i, at = static_cast<int>(e.nodes[i].neurons.size());
+      if (g.global_neurons.size() == e.global_neurons.size() + 1) owner = -1, at = static_cast<int>(e.global_neurons.size());
+      ASSERT_NE(owner, -2) << "mutation " << k << " added no neuron";
+      ASSERT_FALSE((owner < 0 ? g.global_neurons : g.nodes[owner].neurons)[at].locked);
+      if (readers_of(g, owner, at) == 0) continue;
+      ++read;
+      // its reader: a muscle's free input or the open switch's (the only
+      // units that may take one), never a frozen unit's
+      for (const NodeGene& n : g.nodes)
+        for (const EffectorGene& ef : n.effectors)
+          effectors += ef.inputs.size() > static_cast<std::size_t>(gated_prefix(ef.inputs));
+      for (const NeuronGene& nr : g.global_neurons)
+        switches += nr.skill == "crawl" && !nr.inputs.empty();
+    }
+    if (wired == 0) {
+      EXPECT_EQ(read, 0);  // Sims' add_neuron: a neuron no unit reads yet
+    } else {
+      EXPECT_EQ(read, 200);
+      EXPECT_EQ(effectors + switches, 200);
+      EXPECT_GT(effectors, 100);  // two muscles, one switch: 133 and 67 expected
+      EXPECT_GT(switches, 40);
+    }
+  }
+}
+
 TEST(Encapsulate, ValidationNamesABadGateOrSwitch) {
   const Genome e = encapsulated(crawler(), "crawl");
   auto problem = [](const Genome& g) {
