@@ -10,6 +10,7 @@
 #include <cassert>
 
 #include "core/rng.h"
+#include "core/text.h"
 
 namespace bx {
 
@@ -73,10 +74,21 @@ Status check_breeding(const EvolutionDef& evo, const GenotypeOps& ops) {
 }
 
 Evolution::Evolution(std::shared_ptr<const GenotypeOps> ops, EvolutionDef evo, std::uint64_t seed,
-                     TrialScore fold, int task, std::vector<Individual> founders)
-    : ops_(std::move(ops)), evo_(evo), seed_(seed), fold_(fold), task_(task), founders_(std::move(founders)) {
+                     TrialScore fold, int task, std::vector<Individual> founders, std::vector<Retest> retests)
+    : ops_(std::move(ops)),
+      evo_(evo),
+      seed_(seed),
+      fold_(fold),
+      task_(task),
+      founders_(std::move(founders)),
+      retests_(std::move(retests)) {
   assert(ops_ && check_breeding(evo_, *ops_).ok());
+  // a tournament's fresh evaluations would have to retest each time: not supported
+  assert(retests_.empty() || evo_.algorithm == Algorithm::Generational ||
+         evo_.tournament_evaluates == TournamentEvaluates::Child);
 }
+
+bool failed_retest(const Individual& ind) { return ind.failure.rfind(kRetestFailure, 0) == 0; }
 
 bool Evolution::finished(const EvolutionDef& evo, const EvolutionState& s) {
   if (evo.algorithm == Algorithm::Generational) return s.generation + 1 >= evo.generations;
@@ -145,18 +157,35 @@ Individual Evolution::unevaluated(Child c, EvolutionState& s) const {
 std::vector<Individual> Evolution::evaluate(std::vector<Child> children, EvolutionState& s,
                                             Evaluator& eval, long& failed, MetricTally& tally) const {
   std::vector<Individual> born(children.size());
-  std::vector<EvalJob> jobs(children.size());
+  // each child's own task, then its retests (General ESP), all in one batch
+  const std::size_t per = 1 + retests_.size();
+  std::vector<EvalJob> jobs(children.size() * per);
   for (std::size_t k = 0; k < children.size(); ++k) {
     born[k] = unevaluated(std::move(children[k]), s);
     born[k].evaluations = 1;
-    jobs[k] = {born[k].genotype.get(), born[k].seed, 1, task_};
+    jobs[k * per] = {born[k].genotype.get(), born[k].seed, 1, task_};
+    for (std::size_t t = 0; t < retests_.size(); ++t)
+      jobs[k * per + 1 + t] = {born[k].genotype.get(), born[k].seed, 1, retests_[t].task};
   }
   std::vector<EvalOutcome> out = eval.evaluate(jobs);
   for (std::size_t k = 0; k < born.size(); ++k) {
     Individual& ind = born[k];
-    const EvalResult& r = out[k].result;
-    tally.add(out[k].viable && !r.failed ? r.metrics : std::vector<Metric>{});
-    if (!out[k].viable) {
+    const EvalOutcome& own = out[k * per];
+    const EvalResult& r = own.result;
+    std::vector<Metric> metrics = own.viable && !r.failed ? r.metrics : std::vector<Metric>{};
+    std::string fell;  // the first retest it fell below
+    for (std::size_t t = 0; t < retests_.size(); ++t) {
+      const EvalOutcome& o = out[k * per + 1 + t];
+      const bool ok = o.viable && !o.result.failed;
+      const double f = ok ? o.result.fitness : 0;
+      metrics.push_back({std::string(kRetestFailure) + retests_[t].skill, f});
+      if (fell.empty() && (!ok || f < retests_[t].least))
+        fell = std::string(kRetestFailure) + retests_[t].skill + ": " +
+               (ok ? g_number(f) : "failed (" + (o.viable ? o.result.failure : o.reason) + ")") + " < " +
+               g_number(retests_[t].least);
+    }
+    tally.add(own.viable && !r.failed ? metrics : std::vector<Metric>{});
+    if (!own.viable) {
       ind.failure = "not viable: " + out[k].reason;
       ind.fitness = evo_.failed_fitness;
       ++failed;
@@ -164,13 +193,18 @@ std::vector<Individual> Evolution::evaluate(std::vector<Child> children, Evoluti
       ind.failure = r.failure;
       ind.fitness = evo_.failed_fitness;
       ++failed;
+    } else if (!fell.empty()) {
+      // lessin2015 Algorithm 1: "set individual fitness to 0"
+      ind.fitness = 0;
+      ind.distance = r.distance;
+      ind.failure = fell;
     } else {
       ind.fitness = r.fitness;
       ind.distance = r.distance;
       ind.failure = r.note;
     }
   }
-  s.evaluations += static_cast<long>(born.size());
+  s.evaluations += static_cast<long>(jobs.size());
   return born;
 }
 
@@ -206,9 +240,11 @@ std::vector<Individual> Evolution::reevaluate_elite(EvolutionState& s, Evaluator
                       [&](int x, int y) { return better(s.population[x], s.population[y]); });
     // each due individual with how many evaluations it gets in this round
     std::vector<std::pair<int, int>> due;
+    // (not one that fell below a retest: its 0 stands)
     for (int k = 0; k < elite; ++k)
-      if (s.population[order[k]].evaluations < evo_.elite_evaluations) due.push_back({order[k], 1});
-    if (due.empty() && s.population[order[0]].evaluations < best_target)
+      if (s.population[order[k]].evaluations < evo_.elite_evaluations && !failed_retest(s.population[order[k]]))
+        due.push_back({order[k], 1});
+    if (due.empty() && s.population[order[0]].evaluations < best_target && !failed_retest(s.population[order[0]]))
       due.push_back({order[0], best_target - s.population[order[0]].evaluations});
     if (due.empty()) break;
     std::vector<EvalJob> jobs;

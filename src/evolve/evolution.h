@@ -103,6 +103,27 @@ Status check_breeding(const EvolutionDef& evo, const GenotypeOps& ops);
 /// times (repeated_fitness reproduces its score).
 Repeats elite_repeats(const EvolutionDef& evo, int evaluations);
 
+/// A skill that every child is evaluated on again beside its own task
+/// (lessin2015's General ESP, Algorithm 1: the body may change, so each
+/// existing leaf skill is retested): `task` is the evaluator's task it runs
+/// on (the skill alone: its stage's config with brain.skill), `least` the
+/// fitness it must keep. A child that scores less on any retest (or whose
+/// retest fails) has fitness 0 for good (`failure` says which, starting
+/// with kRetestFailure), and its metrics record each retest as "retest NAME".
+struct Retest {
+  std::string skill;
+  int task = 0;
+  double least = 0;
+  friend bool operator==(const Retest&, const Retest&) = default;
+};
+
+/// How the `failure` of a child that fell below a retest starts.
+inline constexpr std::string_view kRetestFailure = "retest ";
+
+/// Whether `ind` scored 0 for falling below a retest (Retest): the elite
+/// is not evaluated again then, so its 0 stands.
+bool failed_retest(const Individual& ind);
+
 /// An evolutionary run's algorithm.
 class Evolution {
  public:
@@ -117,8 +138,12 @@ class Evolution {
   /// first), its k-th child is founder k mod n, as it is for k < n and a
   /// mutant of it (the algorithm's asexual mutation) after that. A founder
   /// without an id (-1: read from a file) is born with operator "file".
+  ///
+  /// `retests` are the skills each child is evaluated on again (Retest),
+  /// in the same batch as its own task; none but in General ESP's stages.
   Evolution(std::shared_ptr<const GenotypeOps> ops, EvolutionDef evo, std::uint64_t seed,
-            TrialScore fold = TrialScore::Mean, int task = 0, std::vector<Individual> founders = {});
+            TrialScore fold = TrialScore::Mean, int task = 0, std::vector<Individual> founders = {},
+            std::vector<Retest> retests = {});
 
   /// True when the run has done all its generations or evaluations.
   bool finished(const EvolutionState& s) const { return finished(evo_, s); }
@@ -161,6 +186,7 @@ class Evolution {
   TrialScore fold_;
   int task_;
   std::vector<Individual> founders_;
+  std::vector<Retest> retests_;
 };
 
 }  // namespace bx

@@ -112,12 +112,22 @@ Status read_stage_keys(toml::table& t, StageDef& st, const std::string& where, b
       return Error{where + ".encapsulate: expected true or false (whether its skill is encapsulated when it ends)"};
     st.encapsulate = *v;
   }
-  for (const char* k : {"name", "uses", "group", "start", "file", "file_hash", "body", "encapsulate"}) t.erase(k);
+  if (auto* node = t.get("retest_tolerance")) {
+    auto v = node->value<double>();
+    if (!v || !(node->is_number()) || !(*v >= 0 && *v < 1))
+      return Error{where + ".retest_tolerance: expected a number in [0, 1) (the share of a leaf skill's fitness a "
+                   "child may lose), got " + (v ? g_number(*v) : std::string("something else than a number"))};
+    if (first)
+      return Error{where + ".retest_tolerance: the first stage has no skill learned before it to retest"};
+    st.retest_tolerance = *v;
+  }
+  for (const char* k : {"name", "uses", "group", "start", "file", "file_hash", "body", "encapsulate", "retest_tolerance"})
+    t.erase(k);
   for (auto&& [key, node] : t)
     if (!node.is_table())
       return Error{where + "." + one_line(key.str(), 100) +
-                   ": unknown stage key (a stage has name, uses, group, start, file, body, encapsulate and config "
-                   "sections)"};
+                   ": unknown stage key (a stage has name, uses, group, start, file, body, encapsulate, "
+                   "retest_tolerance and config sections)"};
   return Ok{};
 }
 
@@ -201,8 +211,47 @@ Result<Syllabus> read_syllabus(std::string_view text, std::string_view source,
                      evolved_name(first) + "), got " + evolved_name(st.cfg)};
     }
     out.stages.push_back(std::move(st));
+    if (out.stages.back().retest_tolerance && out.leaf_skills(static_cast<int>(i)).empty())
+      return Error{where + ".retest_tolerance: no leaf skill is learned before it (an earlier stage that "
+                   "encapsulates its skill and uses none)"};
   }
   return out;
+}
+
+std::vector<int> Syllabus::leaf_skills(int k) const {
+  std::vector<int> out;
+  for (int j = 0; j < k && j < static_cast<int>(stages.size()); ++j)
+    if (stages[j].encapsulate && stages[j].uses.empty()) out.push_back(j);
+  return out;
+}
+
+std::vector<SimConfig> task_table(const Syllabus& s) {
+  std::vector<SimConfig> rows;
+  for (const StageDef& st : s.stages) rows.push_back(st.cfg.sim);
+  for (int k = 0; k < static_cast<int>(s.stages.size()); ++k) {
+    if (!s.stages[k].retest_tolerance) continue;
+    for (int j : s.leaf_skills(k)) {
+      SimConfig alone = s.stages[j].cfg.sim;
+      alone.develop.skill = s.stages[j].name;
+      rows.push_back(std::move(alone));
+    }
+  }
+  return rows;
+}
+
+std::vector<RetestRow> retest_rows(const Syllabus& s, int k) {
+  int row = static_cast<int>(s.stages.size());
+  for (int i = 0; i < static_cast<int>(s.stages.size()); ++i) {
+    if (!s.stages[i].retest_tolerance) continue;
+    const std::vector<int> leaves = s.leaf_skills(i);
+    if (i == k) {
+      std::vector<RetestRow> out;
+      for (int j : leaves) out.push_back({j, row++});
+      return out;
+    }
+    row += static_cast<int>(leaves.size());
+  }
+  return {};
 }
 
 std::string syllabus_to_toml(const Syllabus& s) {
@@ -233,6 +282,7 @@ std::string syllabus_to_toml(const Syllabus& s) {
          << "\n";
     if (st.lock_body) ss << "body = \"locked\"\n";
     if (st.encapsulate) ss << "encapsulate = true\n";
+    if (st.retest_tolerance) ss << "retest_tolerance = " << toml::value<double>(*st.retest_tolerance) << "\n";
     const std::vector<std::string> own = lines(config_to_toml(st.cfg));
     std::string section, written;
     for (std::size_t k = 0; k < own.size() && k < b.size(); ++k) {

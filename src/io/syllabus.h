@@ -20,10 +20,14 @@
 //   group = "turn"        # its pandemonium group
 //   body = "locked"       # free | locked: its founders' bodies locked (Fast ESP)
 //   encapsulate = true    # when it ends, its skill is encapsulated (ESP, IV-B)
+//   retest_tolerance = 0.2  # General ESP (VI, Algorithm 1): every child is retested on each
+//                         #   earlier leaf skill and scores 0 if one falls below (1 - 0.2) x
+//                         #   what that skill had learned
 //   [stage.evolution]
 //   generations = 20
 #pragma once
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -60,6 +64,12 @@ struct StageDef {
   /// genome/encapsulate.h) in the next stage's founders: frozen, switched by
   /// a switch of the stage's name in its pandemonium group.
   bool encapsulate = false;
+  /// General ESP (lessin2015 VI, Algorithm 1): the body may change, so every
+  /// child is evaluated again on each leaf skill learned before (leaf_skills:
+  /// run alone, its own stage's task) and scores 0 if one falls below (1 -
+  /// tolerance) x the fitness that skill had when its stage ended. None:
+  /// no retests (Fast ESP, or a stage that changes no body).
+  std::optional<double> retest_tolerance;
   RunConfig cfg;                  ///< the base config with the stage's tables (and --set) overlaid
   friend bool operator==(const StageDef&, const StageDef&) = default;
 };
@@ -74,8 +84,26 @@ struct Syllabus {
   /// A pandemonium group's id in the genome (NeuronGene::group): the groups
   /// numbered from 0 in the order the stages first name them; -1 for "".
   int group_id(std::string_view group) const;
+  /// The leaf skills learned before stage k (lessin2015 VI-A, Fig. 19: the
+  /// skills that drive the body directly): earlier stages that encapsulate
+  /// their skill and use none, in order.
+  std::vector<int> leaf_skills(int k) const;
   friend bool operator==(const Syllabus&, const Syllabus&) = default;
 };
+
+/// One retest of a stage (StageDef::retest_tolerance): the leaf skill's
+/// stage and its row in task_table().
+struct RetestRow {
+  int stage = 0;
+  int task = 0;
+};
+
+/// The evaluator's task table of a run: row k is stage k's simulation, then
+/// one row per retest: for each stage with retests, each leaf skill before it
+/// run alone (its stage's simulation with brain.skill = its name), in stage order.
+std::vector<SimConfig> task_table(const Syllabus& s);
+/// Stage k's retests, in the order of leaf_skills(k); none without retest_tolerance.
+std::vector<RetestRow> retest_rows(const Syllabus& s, int k);
 
 /// The stages of a config text: its [[stage]] tables, each on the base (the
 /// rest of the text), then the overrides (which every stage gets); without

@@ -12,6 +12,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 
 #include "core/files.h"
 #include "core/hash.h"
@@ -198,6 +199,35 @@ Result<Individual> file_founder(const StageDef& st) {
   return f;
 }
 
+// stage k's General ESP retests (StageDef::retest_tolerance): each leaf
+// skill before it must keep (1 - tolerance) x the best fitness its stage
+// ended with (the run's record of that stage's last generation)
+Result<std::vector<Retest>> stage_retests(const Syllabus& syl, const StageRow& stage, const RunStore& store) {
+  const int k = stage.index;
+  std::vector<Retest> out;
+  const std::vector<RetestRow> rows = retest_rows(syl, k);
+  if (rows.empty()) return out;
+  const std::vector<StageRow> begun = store.stages();
+  const std::vector<GenerationStats> gens = store.generations();
+  for (const RetestRow& r : rows) {
+    const StageDef& leaf = syl.stages[r.stage];
+    // the generation before the next stage's first (this stage's row is
+    // written with its first generation: it may not be stored yet)
+    std::optional<int> next_first;
+    if (r.stage + 1 == k) next_first = stage.first_gen;
+    else if (r.stage + 1 < static_cast<int>(begun.size())) next_first = begun[r.stage + 1].first_gen;
+    std::optional<double> learned;
+    if (next_first)
+      for (const GenerationStats& g : gens)
+        if (g.generation == *next_first - 1) learned = g.best;
+    if (!learned)
+      return Error{"stage \"" + syl.stages[k].name + "\": retest of \"" + leaf.name +
+                   "\": the run has no record of the fitness that stage ended with"};
+    out.push_back({leaf.name, r.task, (1 - *syl.stages[k].retest_tolerance) * *learned});
+  }
+  return out;
+}
+
 }  // namespace
 
 Status check_run(const Syllabus& syl) {
@@ -209,6 +239,10 @@ Status check_run(const Syllabus& syl) {
       return Error{where + "body: \"locked\": genotypes of kind " + std::string(ops->kind()) + " have no body to lock"};
     if (st.start == StageStart::File)
       if (auto f = file_founder(st); !f) return Error{f.error()};
+    if (st.retest_tolerance && st.cfg.evolution.algorithm == Algorithm::SteadyState &&
+        st.cfg.evolution.tournament_evaluates == TournamentEvaluates::All)
+      return Error{where + "retest_tolerance: a stage whose tournaments evaluate all three afresh "
+                   "(evolution.tournament_evaluates = \"all\") cannot retest its children (each is retested once, at birth)"};
     if (st.encapsulate && !ops->can_encapsulate())
       return Error{where + "encapsulate: true: genotypes of kind " + std::string(ops->kind()) + " (dialect " +
                    std::string(to_string(st.cfg.dialect)) + ") have no skill switches (lessin2015's have)"};
@@ -329,13 +363,10 @@ Status drive_run(const std::string& dir, const RunOptions& opt) {
   if (stage.index + 1 == n_stages && finished_stage()) return Ok{};
 
   // one evaluator for every stage: its task table holds each stage's config
-  std::vector<SimConfig> tasks;
+  // and each General ESP retest's (task_table)
   double timeout = 0;
-  for (const StageDef& st : stages) {
-    tasks.push_back(st.cfg.sim);
-    timeout = std::max(timeout, st.cfg.evolution.evaluation_timeout);
-  }
-  auto evaluator = make_evaluator(tasks, opt.workers, timeout);
+  for (const StageDef& st : stages) timeout = std::max(timeout, st.cfg.evolution.evaluation_timeout);
+  auto evaluator = make_evaluator(task_table(run->syllabus), opt.workers, timeout);
   std::ofstream log(run_log_path(dir), std::ios::app);
   const bool tty = !opt.quiet && ::isatty(STDOUT_FILENO);
   auto t0 = std::chrono::steady_clock::now();
@@ -378,8 +409,10 @@ Status drive_run(const std::string& dir, const RunOptions& opt) {
     if (opt.stop_after > 0 && done >= opt.stop_after) break;
     const StageDef& st = stages[stage.index];
     const std::vector<Individual> founders = state.generation < 0 ? state.population : std::vector<Individual>{};
+    auto retests = stage_retests(run->syllabus, stage, store);
+    if (!retests) return Error{retests.error()};
     Evolution evo(genotype_ops(st.cfg), st.cfg.evolution, stage_seed(run->seed, stage.index), st.cfg.sim.trial_score,
-                  stage.index, founders);
+                  stage.index, founders, std::move(*retests));
     const int total = evo.total_generations();
     double first_step = 0;  // seconds
     int done_in_stage = 0;

@@ -3,6 +3,10 @@
 // muscles pulse at 6 Hz and row it along. Under the preset's muscle lag and
 // drop it crawls, scored by lessin2015's fitness (about its speed in m/s);
 // with its muscles held at a constant activation it lies still.
+// creatures/lessin_crawler_sided.json is the same creature with its two
+// right-side limbs grown from a gene of their own (a copy of the limbs'):
+// the same body and gait, bit for bit, whose sides a later skill can drive
+// apart (the ESP presets start from it).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -49,6 +53,29 @@ TEST(LessinCrawler, ItsMusclesRowItAlongAndHeldStillItLiesStill) {
     ASSERT_FALSE(r.failed) << r.failure;
     EXPECT_LT(r.fitness, 0.01) << "activation " << a;
     EXPECT_LT(r.distance, 0.1 * m.body_length()) << "activation " << a;
+  }
+}
+
+TEST(LessinCrawler, ItsSidedCopyIsTheSameCreatureWithARightSideGeneOfItsOwn) {
+  const Genome one = bxtest::load_creature("lessin_crawler.json");
+  const Genome sided = bxtest::load_creature("lessin_crawler_sided.json");
+  ASSERT_EQ(sided.nodes.size(), one.nodes.size() + 1);
+  SimConfig c = preset_like();
+  Development a = develop(one, c.develop), b = develop(sided, c.develop);
+  ASSERT_TRUE(a.viable() && b.viable());
+  ASSERT_EQ(a.model->n_parts(), b.model->n_parts());
+  // which gene grew each part: the root's, the left limb's (one gene in both), and
+  // the right limbs' (the limbs' gene in lessin_crawler, their own in the copy)
+  int own = 0;
+  for (int p = 0; p < b.model->n_parts(); ++p) {
+    EXPECT_EQ(a.model->parts[p].size, b.model->parts[p].size) << p;
+    own += b.model->parts[p].gene == 2;
+  }
+  EXPECT_EQ(own, 8);  // two limbs of four parts
+  for (std::uint64_t seed : {1, 2}) {
+    EvalResult ra = evaluate(*a.model, c, seed), rb = evaluate(*b.model, c, seed);
+    EXPECT_EQ(ra.fitness, rb.fitness) << "seed " << seed;
+    EXPECT_EQ(ra.distance, rb.distance) << "seed " << seed;
   }
 }
 

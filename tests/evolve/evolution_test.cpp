@@ -15,6 +15,7 @@
 #include "eval/evaluate.h"
 #include "genome/float_vector.h"
 #include "genome/graph_genotype.h"
+#include "core/text.h"
 #include "io/config.h"
 
 namespace bx {
@@ -604,6 +605,69 @@ TEST_P(FloatLoops, DistinctChildrenAreNeverCopiesOfAParent) {
     else
       EXPECT_GT(copies, children / 4);
   }
+}
+
+// two tasks on float vectors: task 0 is TargetPoint's, task 1 (a skill to
+// keep) scores the first gene; each batch's tasks are recorded
+class TwoTasks : public Evaluator {
+ public:
+  std::vector<EvalOutcome> evaluate(const std::vector<EvalJob>& jobs) override {
+    std::vector<EvalOutcome> out(jobs.size());
+    std::vector<int> tasks;
+    for (std::size_t i = 0; i < jobs.size(); ++i) {
+      const auto& genes = static_cast<const FloatVector&>(*jobs[i].genotype).genes;
+      tasks.push_back(jobs[i].task);
+      if (jobs[i].task == 1) {
+        out[i].result.fitness = genes[0];
+        continue;
+      }
+      double d2 = 0;
+      for (double x : genes) d2 += (x - 0.3) * (x - 0.3);
+      out[i].result.fitness = 1 / (1 + d2);
+    }
+    batches.push_back(tasks);
+    return out;
+  }
+  int workers() const override { return 1; }
+  std::vector<std::vector<int>> batches;
+};
+
+TEST(Retests, AChildBelowARetestScoresZeroForGoodAndTheRestScoreTheirOwnTask) {
+  auto ops = std::make_shared<FloatVectorOps>(FloatVectorDef{4, -1, 1, 0.3});
+  EvolutionDef e = float_evolution(Algorithm::Generational);
+  e.generations = 5;
+  e.elite_evaluations = 2;  // the elite is evaluated again: never one that fell
+  Evolution evo(ops, e, 9, TrialScore::Mean, 0, {}, {{"first", 1, 0.1}});
+  TwoTasks problem;
+  EvolutionState s;
+  int fell = 0, kept = 0;
+  while (!evo.finished(s)) {
+    GenerationResult r = evo.step(s, problem);
+    bool recorded = false;
+    for (const MetricStat& m : r.stats.metrics) recorded |= m.name == "retest first";
+    EXPECT_TRUE(recorded);
+    for (const Individual& ind : r.born) {
+      const double first = static_cast<const FloatVector&>(*ind.genotype).genes[0];
+      if (first < 0.1) {
+        ++fell;
+        EXPECT_EQ(ind.fitness, 0);
+        EXPECT_TRUE(failed_retest(ind));
+        EXPECT_EQ(ind.failure, "retest first: " + g_number(first) + " < 0.1");
+      } else {
+        ++kept;
+        EXPECT_FALSE(failed_retest(ind));
+        EXPECT_GT(ind.fitness, 0);
+      }
+    }
+  }
+  EXPECT_GT(fell, 10);
+  EXPECT_GT(kept, 10);
+  for (const Individual& ind : s.population)
+    if (failed_retest(ind)) EXPECT_EQ(ind.fitness, 0);
+  // births go to the evaluator as one batch: each child's task, then its retest
+  const std::vector<int>& first = problem.batches.front();
+  ASSERT_EQ(first.size(), 2u * e.population);
+  for (std::size_t i = 0; i < first.size(); ++i) EXPECT_EQ(first[i], static_cast<int>(i % 2)) << i;
 }
 
 TEST(Breeding, GraftingNeedsAKindThatHasIt) {

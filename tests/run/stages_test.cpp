@@ -15,6 +15,7 @@
 #include "genome/genotype.h"
 #include "genome/shipped_creatures.h"
 #include "core/files.h"
+#include "core/text.h"
 #include "support/creatures.h"
 #include "io/run_store.h"
 #include "run/run.h"
@@ -120,8 +121,16 @@ TEST(Syllabus, ErrorsNameTheStageAndTheKey) {
   EXPECT_EQ(staged("[[stage]]\nname = \"a\"\n[[stage]]\nname = \"b\"\nstart = \"worst\"\n"),
             "s.toml: stage 2.start: expected one of random, best, population, file, got \"worst\"");
   EXPECT_EQ(staged("[[stage]]\nname = \"a\"\nskill = 3\n"),
-            "s.toml: stage 1.skill: unknown stage key (a stage has name, uses, group, start, file, body, encapsulate and "
-            "config sections)");
+            "s.toml: stage 1.skill: unknown stage key (a stage has name, uses, group, start, file, body, encapsulate, "
+            "retest_tolerance and config sections)");
+  EXPECT_EQ(staged("[[stage]]\nname = \"a\"\nretest_tolerance = 0.2\n"),
+            "s.toml: stage 1.retest_tolerance: the first stage has no skill learned before it to retest");
+  EXPECT_EQ(staged("[[stage]]\nname = \"a\"\n[[stage]]\nname = \"b\"\nretest_tolerance = 1\n"),
+            "s.toml: stage 2.retest_tolerance: expected a number in [0, 1) (the share of a leaf skill's fitness a child "
+            "may lose), got 1");
+  EXPECT_EQ(staged("[[stage]]\nname = \"a\"\n[[stage]]\nname = \"b\"\nretest_tolerance = 0.2\n"),
+            "s.toml: stage \"b\".retest_tolerance: no leaf skill is learned before it (an earlier stage that "
+            "encapsulates its skill and uses none)");
   // a stage's config key is checked as the config's own, and named with its stage
   EXPECT_EQ(staged("[[stage]]\nname = \"a\"\n[stage.task]\nsecond = 2\n"),
             "s.toml: stage \"a\": task.second: unknown key (did you mean \"seconds\"?)");
@@ -434,6 +443,106 @@ TEST_F(Stages, ARunOfStagesIsNotLengthened) {
 
 // an evaluator's task table: a batch that mixes tasks gives each job its own
 // task's evaluation, in this process and in workers
+// General ESP (lessin2015 VI, Algorithm 1): a strike learned on a body that
+// may change, each child retested on the crawler's encapsulated forward
+// locomotion, run alone
+const char* kGeneral = R"(
+[genome]
+dialect = "lessin2015"
+[evolution]
+population = 4
+generations = 2
+[task]
+seconds = 1
+settle_timeout = 2
+drop_height = 0.01
+
+[[stage]]
+name = "forward"
+start = "file"
+file = "lessin_crawler"
+encapsulate = true
+
+[[stage]]
+name = "strike"
+retest_tolerance = 0.5
+[stage.task]
+kind = "strike"
+[stage.strike]
+seconds = 1
+settle_timeout = 2
+drop_height = 0.01
+)";
+
+TEST(Syllabus, AGeneralStageRetestsEachLeafSkillAloneOnItsOwnRow) {
+  auto syl = read_syllabus(kGeneral, "g.toml");
+  ASSERT_TRUE(syl.ok()) << syl.error();
+  EXPECT_EQ(*syl->stages[1].retest_tolerance, 0.5);
+  EXPECT_FALSE(syl->stages[0].retest_tolerance);
+  EXPECT_EQ(*read_syllabus(syllabus_to_toml(*syl), "resolved"), *syl);
+  EXPECT_EQ(syl->leaf_skills(1), std::vector<int>{0});
+  const std::vector<SimConfig> rows = task_table(*syl);
+  ASSERT_EQ(rows.size(), 3u);  // the two stages', then forward run alone
+  EXPECT_EQ(rows[2].develop.skill, "forward");
+  SimConfig forward = syl->stages[0].cfg.sim;
+  forward.develop.skill = "forward";
+  EXPECT_EQ(rows[2], forward);
+  ASSERT_EQ(retest_rows(*syl, 1).size(), 1u);
+  EXPECT_EQ(retest_rows(*syl, 1)[0].stage, 0);
+  EXPECT_EQ(retest_rows(*syl, 1)[0].task, 2);
+  EXPECT_TRUE(retest_rows(*syl, 0).empty());
+}
+
+TEST_F(Stages, AGeneralStageScoresZeroBelowARetestAndResumesTheSame) {
+  auto syl = read_syllabus(kGeneral, "g.toml");
+  ASSERT_TRUE(syl.ok()) << syl.error();
+  auto make = [&](const std::string& name) {
+    const std::string run = (dir / name).string();
+    EXPECT_TRUE(create_run(run, *syl, kGeneral, "g.toml", 3).ok());
+    return run;
+  };
+  const std::string whole = make("whole");
+  ASSERT_TRUE(drive_run(whole, {0, true, 0}).ok());
+  auto store = RunStore::open(run_db_path(whole));
+  ASSERT_TRUE(store.ok());
+  // forward's level: the best of its last generation; each strike child keeps
+  // half of it run alone, or scores 0
+  const std::vector<GenerationStats> gens = (*store)->generations();
+  ASSERT_EQ(gens.size(), 4u);
+  const double least = 0.5 * gens[1].best;
+  SimConfig alone = syl->stages[0].cfg.sim;
+  alone.develop.skill = "forward";
+  int fell = 0, kept = 0;
+  for (std::int64_t id = (*store)->stages()[1].first_id;; ++id) {
+    auto ind = (*store)->individual(id);
+    if (!ind) break;
+    const EvalOutcome again = evaluate_genotype(*ind->genotype, alone, ind->seed);
+    ASSERT_TRUE(again.viable && !again.result.failed);
+    if (again.result.fitness < least) {
+      ++fell;
+      EXPECT_EQ(ind->fitness, 0);
+      EXPECT_EQ(ind->failure, "retest forward: " + g_number(again.result.fitness) + " < " + g_number(least));
+    } else {
+      ++kept;
+      EXPECT_EQ(ind->failure.rfind("retest", 0), std::string::npos) << ind->failure;
+    }
+  }
+  EXPECT_EQ(fell + kept, 7);  // 4, then 3 children of the one elite
+  EXPECT_GT(fell, 0);
+  EXPECT_GT(kept, 0);
+  bool recorded = false;
+  for (const MetricStat& m : gens[2].metrics) recorded |= m.name == "retest forward";
+  EXPECT_TRUE(recorded);
+  // stopped at every generation (the stages' boundary among them) and resumed
+  const std::string expected = dump(whole);
+  for (int stop : {1, 2, 3}) {
+    const std::string run = make("stop" + std::to_string(stop));
+    ASSERT_TRUE(drive_run(run, {0, true, stop}).ok());
+    ASSERT_TRUE(drive_run(run, {1, true, 0}).ok());
+    EXPECT_EQ(dump(run), expected) << "stopped after " << stop;
+  }
+}
+
 TEST(TaskTable, AJobIsEvaluatedOnItsOwnTask) {
   auto s = read_syllabus(kStaged, "s.toml");
   ASSERT_TRUE(s.ok()) << s.error();
