@@ -6,6 +6,7 @@
 #include "genome/encapsulate.h"
 #include "genome/genome_json.h"
 #include "genome/graph_genotype.h"
+#include "genome/reconcile.h"
 
 namespace bx {
 
@@ -27,7 +28,10 @@ std::unique_ptr<Genotype> GraphOps::random(Rng& rng) const { return wrap(random_
 
 std::unique_ptr<Genotype> GraphOps::mutate(const Genotype& g, double rate, Rng& rng) const {
   Genome child = genome_of(g);
-  bx::mutate(child, ops_, rate, rng);
+  if (!ops_.reconcile_skill.empty())
+    mutate_skill_wires(child, ops_.reconcile_skill, ops_, rate, rng);
+  else
+    bx::mutate(child, ops_, rate, rng);
   return wrap(std::move(child));
 }
 
@@ -52,10 +56,13 @@ Result<std::unique_ptr<Genotype>> GraphOps::with_skill_encapsulated(const Genoty
 }
 
 std::unique_ptr<Genotype> GraphOps::crossover(const Genotype& a, const Genotype& b, Rng& rng) const {
+  if (!ops_.reconcile_skill.empty()) return wrap(cross_skill_wires(genome_of(a), genome_of(b), ops_.reconcile_skill, rng));
   return wrap(bx::crossover(genome_of(a), genome_of(b), ops_, rng));
 }
 
 std::unique_ptr<Genotype> GraphOps::graft(const Genotype& trunk, const Genotype& branch, Rng& rng) const {
+  if (!ops_.reconcile_skill.empty())
+    return wrap(cross_skill_wires(genome_of(trunk), genome_of(branch), ops_.reconcile_skill, rng));
   return wrap(bx::graft(genome_of(trunk), genome_of(branch), ops_, rng));
 }
 

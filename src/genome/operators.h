@@ -245,6 +245,11 @@ struct OperatorDef {
   // ---- catapults
   CatapultDef catapult;
 
+  /// A reconciliation stage's skill (lessin2015 Algorithm 2, genome/reconcile.h;
+  /// set from the stage's `reconcile` key, not a config key): when set, the
+  /// graph operators change only that skill's wires' weights (mutation) and
+  /// mix them (crossover and grafting), and nothing else.
+  std::string reconcile_skill;
   friend bool operator==(const OperatorDef&, const OperatorDef&) = default;
 };
 

@@ -121,13 +121,20 @@ Status read_stage_keys(toml::table& t, StageDef& st, const std::string& where, b
       return Error{where + ".retest_tolerance: the first stage has no skill learned before it to retest"};
     st.retest_tolerance = *v;
   }
-  for (const char* k : {"name", "uses", "group", "start", "file", "file_hash", "body", "encapsulate", "retest_tolerance"})
+  if (auto* node = t.get("reconcile")) {
+    auto v = node->value<std::string>();
+    if (!v || v->empty() || !node->is_string())
+      return Error{where + ".reconcile: expected the name of an earlier stage whose skill it evolves again"};
+    st.reconcile = *v;
+  }
+  for (const char* k :
+       {"name", "uses", "group", "start", "file", "file_hash", "body", "encapsulate", "retest_tolerance", "reconcile"})
     t.erase(k);
   for (auto&& [key, node] : t)
     if (!node.is_table())
       return Error{where + "." + one_line(key.str(), 100) +
                    ": unknown stage key (a stage has name, uses, group, start, file, body, encapsulate, "
-                   "retest_tolerance and config sections)"};
+                   "retest_tolerance, reconcile and config sections)"};
   return Ok{};
 }
 
@@ -210,6 +217,23 @@ Result<Syllabus> read_syllabus(std::string_view text, std::string_view source,
         return Error{where + ": genotype.kind: every stage evolves the first stage's creature kind (" +
                      evolved_name(first) + "), got " + evolved_name(st.cfg)};
     }
+    if (!st.reconcile.empty()) {
+      const int j = out.find(st.reconcile);
+      if (j < 0 || !out.stages[j].encapsulate)
+        return Error{where + ".reconcile: " + in_quotes(st.reconcile) +
+                     (j < 0 ? ": no earlier stage has this name" : ": that stage's skill is not encapsulated")};
+      if (!out.stages[j].uses.empty())
+        return Error{where + ".reconcile: " + in_quotes(st.reconcile) +
+                     " uses other skills: only a leaf skill (one that drives the body) is reconciled to it"};
+      if (st.encapsulate || !st.uses.empty() || st.start != StageStart::Best || st.retest_tolerance)
+        return Error{where + ".reconcile: a reconciling stage starts from the last one's best (start = \"best\") and "
+                     "has no encapsulate, uses or retest_tolerance of its own: it evolves " + in_quotes(st.reconcile) +
+                     "'s wires again"};
+      // the skill's own task, run alone; only its wires evolve
+      st.cfg.sim = out.stages[j].cfg.sim;
+      st.cfg.sim.develop.skill = st.reconcile;
+      st.cfg.operators.reconcile_skill = st.reconcile;
+    }
     out.stages.push_back(std::move(st));
     if (out.stages.back().retest_tolerance && out.leaf_skills(static_cast<int>(i)).empty())
       return Error{where + ".retest_tolerance: no leaf skill is learned before it (an earlier stage that "
@@ -223,6 +247,13 @@ std::vector<int> Syllabus::leaf_skills(int k) const {
   for (int j = 0; j < k && j < static_cast<int>(stages.size()); ++j)
     if (stages[j].encapsulate && stages[j].uses.empty()) out.push_back(j);
   return out;
+}
+
+int Syllabus::learned_in(int j, int k) const {
+  int last = j;
+  for (int i = j + 1; i < k && i < static_cast<int>(stages.size()); ++i)
+    if (stages[i].reconcile == stages[j].name) last = i;
+  return last;
 }
 
 std::vector<SimConfig> task_table(const Syllabus& s) {
@@ -283,6 +314,7 @@ std::string syllabus_to_toml(const Syllabus& s) {
     if (st.lock_body) ss << "body = \"locked\"\n";
     if (st.encapsulate) ss << "encapsulate = true\n";
     if (st.retest_tolerance) ss << "retest_tolerance = " << toml::value<double>(*st.retest_tolerance) << "\n";
+    if (!st.reconcile.empty()) ss << "reconcile = " << toml::value<std::string>(st.reconcile) << "\n";
     const std::vector<std::string> own = lines(config_to_toml(st.cfg));
     std::string section, written;
     for (std::size_t k = 0; k < own.size() && k < b.size(); ++k) {

@@ -23,6 +23,8 @@
 //   retest_tolerance = 0.2  # General ESP (VI, Algorithm 1): every child is retested on each
 //                         #   earlier leaf skill and scores 0 if one falls below (1 - 0.2) x
 //                         #   what that skill had learned
+//   reconcile = "forward" # General ESP (VI, Algorithm 2): the stage evolves that skill's
+//                         #   control again on its own task, the rest fixed
 //   [stage.evolution]
 //   generations = 20
 #pragma once
@@ -70,6 +72,12 @@ struct StageDef {
   /// tolerance) x the fitness that skill had when its stage ended. None:
   /// no retests (Fast ESP, or a stage that changes no body).
   std::optional<double> retest_tolerance;
+  /// General ESP's reconciliation (lessin2015 VI, Algorithm 2): the name of an
+  /// earlier skill whose control this stage evolves again, on that skill's
+  /// own task run alone, the rest of the creature fixed (genome/reconcile.h:
+  /// its wires' weights); its config's simulation is that stage's, with
+  /// brain.skill, and its operators are restricted so. "": none.
+  std::string reconcile;
   RunConfig cfg;                  ///< the base config with the stage's tables (and --set) overlaid
   friend bool operator==(const StageDef&, const StageDef&) = default;
 };
@@ -88,6 +96,9 @@ struct Syllabus {
   /// skills that drive the body directly): earlier stages that encapsulate
   /// their skill and use none, in order.
   std::vector<int> leaf_skills(int k) const;
+  /// The last stage before k that evolved stage j's skill: j, or a later
+  /// stage that reconciled it.
+  int learned_in(int j, int k) const;
   friend bool operator==(const Syllabus&, const Syllabus&) = default;
 };
 
@@ -103,6 +114,8 @@ struct RetestRow {
 /// run alone (its stage's simulation with brain.skill = its name), in stage order.
 std::vector<SimConfig> task_table(const Syllabus& s);
 /// Stage k's retests, in the order of leaf_skills(k); none without retest_tolerance.
+/// A retest's skill must keep what the last stage that evolved it (its own,
+/// or a later one that reconciled it: learned_in) ended with.
 std::vector<RetestRow> retest_rows(const Syllabus& s, int k);
 
 /// The stages of a config text: its [[stage]] tables, each on the base (the

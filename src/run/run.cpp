@@ -211,18 +211,19 @@ Result<std::vector<Retest>> stage_retests(const Syllabus& syl, const StageRow& s
   const std::vector<GenerationStats> gens = store.generations();
   for (const RetestRow& r : rows) {
     const StageDef& leaf = syl.stages[r.stage];
+    const int last = syl.learned_in(r.stage, k);  // its stage, or its last reconciliation
     // the generation before the next stage's first (this stage's row is
     // written with its first generation: it may not be stored yet)
     std::optional<int> next_first;
-    if (r.stage + 1 == k) next_first = stage.first_gen;
-    else if (r.stage + 1 < static_cast<int>(begun.size())) next_first = begun[r.stage + 1].first_gen;
+    if (last + 1 == k) next_first = stage.first_gen;
+    else if (last + 1 < static_cast<int>(begun.size())) next_first = begun[last + 1].first_gen;
     std::optional<double> learned;
     if (next_first)
       for (const GenerationStats& g : gens)
         if (g.generation == *next_first - 1) learned = g.best;
     if (!learned)
-      return Error{"stage \"" + syl.stages[k].name + "\": retest of \"" + leaf.name +
-                   "\": the run has no record of the fitness that stage ended with"};
+      return Error{"stage \"" + syl.stages[k].name + "\": retest of \"" + leaf.name + "\": the run has no record of the "
+                   "fitness stage \"" + syl.stages[last].name + "\" ended with"};
     out.push_back({leaf.name, r.task, (1 - *syl.stages[k].retest_tolerance) * *learned});
   }
   return out;

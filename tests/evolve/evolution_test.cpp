@@ -662,8 +662,11 @@ TEST(Retests, AChildBelowARetestScoresZeroForGoodAndTheRestScoreTheirOwnTask) {
   }
   EXPECT_GT(fell, 10);
   EXPECT_GT(kept, 10);
-  for (const Individual& ind : s.population)
-    if (failed_retest(ind)) EXPECT_EQ(ind.fitness, 0);
+  for (const Individual& ind : s.population) {
+    if (failed_retest(ind)) {
+      EXPECT_EQ(ind.fitness, 0);
+    }
+  }
   // births go to the evaluator as one batch: each child's task, then its retest
   const std::vector<int>& first = problem.batches.front();
   ASSERT_EQ(first.size(), 2u * e.population);

@@ -15,6 +15,7 @@
 #include "genome/genome_json.h"
 #include "genome/locks.h"
 #include "genome/operators.h"
+#include "genome/reconcile.h"
 
 namespace bx {
 namespace {
@@ -162,6 +163,51 @@ TEST(Encapsulate, AWiredNewNeuronIsReadByAMuscleOrAnOpenSwitch) {
       EXPECT_GT(switches, 40);
     }
   }
+}
+
+// reconciliation (genome/reconcile.h): only the named skill's wires move
+TEST(Reconcile, MutationMovesOnlyTheSkillsWiresAndCrossoverMixesThem) {
+  Genome e = encapsulated(crawler(), "crawl");
+  // a second skill: a wire of its own on the first muscle, then encapsulated
+  e.nodes[1].effectors[0].inputs.push_back({SourcePlace::Self, SourceKind::Neuron, 0, 0, 0.4});
+  Genome two = encapsulated(e, "twitch");
+  const int crawl = skill_switch(two, "crawl"), twitch = skill_switch(two, "twitch");
+  ASSERT_GE(crawl, 0);
+  ASSERT_GT(twitch, crawl);
+  EXPECT_EQ(skill_wire_count(two, "twitch"), 1);
+  EXPECT_GT(skill_wire_count(two, "crawl"), 2);
+  OperatorDef def = default_operators(Dialect::Lessin2015);
+  Rng rng(5);
+  Genome g = two;
+  for (int k = 0; k < 50; ++k) mutate_skill_wires(g, "crawl", def, 0.3, rng);
+  int moved = 0;
+  Genome back = g;
+  for (std::size_t n = 0; n < g.nodes.size(); ++n)
+    for (std::size_t f = 0; f < g.nodes[n].effectors.size(); ++f)
+      for (std::size_t i = 0; i < g.nodes[n].effectors[f].inputs.size(); ++i) {
+        const InputGene &now = g.nodes[n].effectors[f].inputs[i], &was = two.nodes[n].effectors[f].inputs[i];
+        if (now.weight != was.weight) {
+          EXPECT_EQ(now.gate, crawl);
+          ++moved;
+        }
+        back.nodes[n].effectors[f].inputs[i].weight = was.weight;
+      }
+  EXPECT_EQ(back, two);  // nothing but the weights of crawl's wires
+  EXPECT_EQ(moved, skill_wire_count(two, "crawl"));
+  // crossover: each of crawl's weights from one parent or the other, both seen
+  Genome child = cross_skill_wires(two, g, "crawl", rng);
+  int from_a = 0, from_b = 0;
+  for (std::size_t n = 0; n < g.nodes.size(); ++n)
+    for (std::size_t f = 0; f < g.nodes[n].effectors.size(); ++f)
+      for (std::size_t i = 0; i < g.nodes[n].effectors[f].inputs.size(); ++i) {
+        const double w = child.nodes[n].effectors[f].inputs[i].weight;
+        if (two.nodes[n].effectors[f].inputs[i].gate != crawl) continue;
+        from_a += w == two.nodes[n].effectors[f].inputs[i].weight;
+        from_b += w == g.nodes[n].effectors[f].inputs[i].weight;
+      }
+  EXPECT_EQ(from_a + from_b, skill_wire_count(two, "crawl"));
+  EXPECT_GT(from_a, 0);
+  EXPECT_GT(from_b, 0);
 }
 
 TEST(Encapsulate, ValidationNamesABadGateOrSwitch) {

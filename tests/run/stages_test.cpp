@@ -13,6 +13,7 @@
 #include "develop/graph_ops.h"
 #include "genome/graph_genotype.h"
 #include "genome/genotype.h"
+#include "genome/reconcile.h"
 #include "genome/shipped_creatures.h"
 #include "core/files.h"
 #include "core/text.h"
@@ -122,7 +123,7 @@ TEST(Syllabus, ErrorsNameTheStageAndTheKey) {
             "s.toml: stage 2.start: expected one of random, best, population, file, got \"worst\"");
   EXPECT_EQ(staged("[[stage]]\nname = \"a\"\nskill = 3\n"),
             "s.toml: stage 1.skill: unknown stage key (a stage has name, uses, group, start, file, body, encapsulate, "
-            "retest_tolerance and config sections)");
+            "retest_tolerance, reconcile and config sections)");
   EXPECT_EQ(staged("[[stage]]\nname = \"a\"\nretest_tolerance = 0.2\n"),
             "s.toml: stage 1.retest_tolerance: the first stage has no skill learned before it to retest");
   EXPECT_EQ(staged("[[stage]]\nname = \"a\"\n[[stage]]\nname = \"b\"\nretest_tolerance = 1\n"),
@@ -540,6 +541,116 @@ TEST_F(Stages, AGeneralStageScoresZeroBelowARetestAndResumesTheSame) {
     ASSERT_TRUE(drive_run(run, {0, true, stop}).ok());
     ASSERT_TRUE(drive_run(run, {1, true, 0}).ok());
     EXPECT_EQ(dump(run), expected) << "stopped after " << stop;
+  }
+}
+
+// Algorithm 2 after Algorithm 1: forward's wires reconciled to the body
+// the strike stage left, then a second strike stage that retests forward
+// against what its reconciliation ended with
+const std::string kReconcile = std::string(kGeneral) + R"(
+[[stage]]
+name = "forward again"
+reconcile = "forward"
+
+[[stage]]
+name = "strike again"
+retest_tolerance = 0.5
+[stage.task]
+kind = "strike"
+[stage.strike]
+seconds = 1
+settle_timeout = 2
+drop_height = 0.01
+)";
+
+TEST(Syllabus, AReconcilingStageRunsItsSkillAloneOnItsOwnTaskAndIsCheckedByName) {
+  auto syl = read_syllabus(kReconcile, "r.toml");
+  ASSERT_TRUE(syl.ok()) << syl.error();
+  const StageDef& again = syl->stages[2];
+  EXPECT_EQ(again.reconcile, "forward");
+  SimConfig alone = syl->stages[0].cfg.sim;
+  alone.develop.skill = "forward";
+  EXPECT_EQ(again.cfg.sim, alone);
+  EXPECT_EQ(again.cfg.operators.reconcile_skill, "forward");
+  EXPECT_EQ(*read_syllabus(syllabus_to_toml(*syl), "resolved"), *syl);
+  EXPECT_EQ(syl->learned_in(0, 3), 2);  // forward's level: its reconciliation's
+  EXPECT_EQ(syl->learned_in(0, 2), 0);
+  const std::string two = std::string(kGeneral) + "\n[[stage]]\nname = \"r\"\n";
+  EXPECT_EQ(error_of(two + "reconcile = \"walk\"\n"),
+            "s.toml: stage \"r\".reconcile: \"walk\": no earlier stage has this name");
+  EXPECT_EQ(error_of(two + "reconcile = \"strike\"\n"),
+            "s.toml: stage \"r\".reconcile: \"strike\": that stage's skill is not encapsulated");
+  EXPECT_EQ(error_of(two + "reconcile = \"forward\"\nencapsulate = true\n"),
+            "s.toml: stage \"r\".reconcile: a reconciling stage starts from the last one's best (start = \"best\") "
+            "and has no encapsulate, uses or retest_tolerance of its own: it evolves \"forward\"'s wires again");
+}
+
+TEST_F(Stages, AReconcilingStageChangesOnlyItsSkillsWiresAndSetsItsNewLevel) {
+  auto syl = read_syllabus(kReconcile, "r.toml");
+  ASSERT_TRUE(syl.ok()) << syl.error();
+  const std::string run = (dir / "run").string();
+  ASSERT_TRUE(create_run(run, *syl, kReconcile, "r.toml", 3).ok());
+  ASSERT_TRUE(drive_run(run, {0, true, 0}).ok());
+  auto store = RunStore::open(run_db_path(run));
+  ASSERT_TRUE(store.ok());
+  const std::vector<StageRow> stages = (*store)->stages();
+  ASSERT_EQ(stages.size(), 4u);
+  const std::vector<GenerationStats> gens = (*store)->generations();
+  ASSERT_EQ(gens.size(), 8u);
+  // the reconciling stage's creatures: its founder's genome but for forward's
+  // wires' weights, each scored on forward run alone
+  auto founder = (*store)->individual(stages[2].first_id);
+  ASSERT_TRUE(founder.ok());
+  EXPECT_EQ(founder->op, "copy");
+  const Genome& f = *graph_genome(*founder->genotype);
+  const int gate = skill_switch(f, "forward");
+  ASSERT_GE(gate, 0);
+  int moved = 0;
+  for (std::int64_t id = stages[2].first_id; id < stages[3].first_id; ++id) {
+    auto ind = (*store)->individual(id);
+    ASSERT_TRUE(ind.ok());
+    Genome g = *graph_genome(*ind->genotype);
+    for (std::size_t n = 0; n < g.nodes.size(); ++n)
+      for (std::size_t e = 0; e < g.nodes[n].effectors.size(); ++e)
+        for (std::size_t i = 0; i < g.nodes[n].effectors[e].inputs.size(); ++i) {
+          InputGene& in = g.nodes[n].effectors[e].inputs[i];
+          const double was = f.nodes[n].effectors[e].inputs[i].weight;
+          if (in.weight != was) {
+            EXPECT_EQ(in.gate, gate) << "a wire not forward's changed";
+            ++moved;
+          }
+          in.weight = was;
+        }
+    EXPECT_EQ(g, f) << "individual " << id << ": more than forward's wires changed";
+    if (ind->evaluations == 1) {
+      SimConfig alone = syl->stages[0].cfg.sim;
+      alone.develop.skill = "forward";
+      EXPECT_EQ(ind->fitness, evaluate_genotype(*ind->genotype, alone, ind->seed).result.fitness) << id;
+    }
+  }
+  EXPECT_GT(moved, 0);
+  // the second strike stage's least: half of what the reconciliation ended with
+  bool fell_or_kept = false;
+  const double least = 0.5 * gens[5].best;
+  SimConfig alone = syl->stages[0].cfg.sim;
+  alone.develop.skill = "forward";
+  for (std::int64_t id = stages[3].first_id;; ++id) {
+    auto ind = (*store)->individual(id);
+    if (!ind) break;
+    const EvalOutcome again = evaluate_genotype(*ind->genotype, alone, ind->seed);
+    ASSERT_TRUE(again.viable && !again.result.failed);
+    EXPECT_EQ(ind->failure.rfind("retest", 0) == 0, again.result.fitness < least) << ind->failure;
+    fell_or_kept = true;
+  }
+  EXPECT_TRUE(fell_or_kept);
+  // stopped where the reconciliation begins and where it ends, and resumed
+  const std::string expected = dump(run);
+  for (int stop : {4, 6}) {
+    const std::string again = (dir / ("stop" + std::to_string(stop))).string();
+    ASSERT_TRUE(create_run(again, *syl, kReconcile, "r.toml", 3).ok());
+    ASSERT_TRUE(drive_run(again, {0, true, stop}).ok());
+    ASSERT_TRUE(drive_run(again, {1, true, 0}).ok());
+    EXPECT_EQ(dump(again), expected) << "stopped after " << stop;
   }
 }
 
