@@ -129,17 +129,18 @@ int cmd_show_run(WatchArgs a) {
                                               " --out fitness.svg`, and --metric NAME)"));
   auto seed = (*store)->master_seed();
   if (!seed) return fail(seed.error());
-  // each stage's creatures simulated on its own config
-  std::vector<SimConfig> sims;
+  // each stage's creatures simulated on its own config; a run of several
+  // shows its syllabus as a graph, each stage's curve on its own
+  std::vector<PageStage> stages;
   for (const StageDef& st : syl->stages) {
-    sims.push_back(st.cfg.sim);
-    if (Status s = set_seconds(sims.back(), a.flags.seconds); !s) return fail(s.error());
+    stages.push_back({st.name, st.uses, st.group, st.cfg.sim});
+    if (Status s = set_seconds(stages.back().sim, a.flags.seconds); !s) return fail(s.error());
   }
   if (a.out.empty()) a.out = (fs::path(dir) / "view.html").string();
   if (Status s = make_parent_dir("--out", a.out); !s) return fail(s.error());
 
   // the overall best, the lineages and the generations' bests (io/run_page.h)
-  auto page = gather_run_page(**store, dir, *cfg, sims, *seed);
+  auto page = gather_run_page(**store, dir, *cfg, stages, *seed);
   if (!page) return fail(dir + ": " + page.error());
   for (std::size_t k = 1; k < syl->stages.size(); ++k)
     page->run.planned_generations += total_generations(syl->stages[k].cfg.evolution);

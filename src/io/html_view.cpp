@@ -69,14 +69,25 @@ std::string view_data_json(const std::vector<LabelledReplay>& replays,
                          {"operator", m.op}, {"replay_index", m.replay_index >= 0 ? json(m.replay_index) : json(nullptr)},
                          {"evaluations", m.evaluations}});
     }
-    out += json{{"name", run->name}, {"seed", run->seed}, {"dialect", run->dialect},
-                {"algorithm", run->algorithm}, {"evaluation_score", run->evaluation_score},
-                {"evaluation_half_step", run->evaluation_half_step},
-                {"evaluation_quarter_step", run->evaluation_quarter_step},
-                {"population", run->population},
-                {"planned_generations", run->planned_generations}, {"generations", gens},
-                {"members", members}, {"best_id", run->best_id}, {"replay_cap", run->replay_cap}}
-               .dump();
+    json r{{"name", run->name}, {"seed", run->seed}, {"dialect", run->dialect},
+           {"algorithm", run->algorithm}, {"evaluation_score", run->evaluation_score},
+           {"evaluation_half_step", run->evaluation_half_step},
+           {"evaluation_quarter_step", run->evaluation_quarter_step},
+           {"population", run->population},
+           {"planned_generations", run->planned_generations}, {"generations", gens},
+           {"members", members}, {"best_id", run->best_id}, {"replay_cap", run->replay_cap}};
+    // a plain run's data stays as it was: no "stages"
+    if (!run->stages.empty()) {
+      json stages = json::array();
+      for (const auto& s : run->stages) {
+        const bool begun = s.generations > 0;
+        stages.push_back({{"name", s.name}, {"uses", s.uses}, {"group", s.group},
+                          {"first_gen", begun ? json(s.first_gen) : json(nullptr)},
+                          {"generations", s.generations}, {"best", begun ? json(s.best) : json(nullptr)}});
+      }
+      r["stages"] = std::move(stages);
+    }
+    out += r.dump();
   }
   out += '}';
   return out;

@@ -42,6 +42,18 @@ struct RunMember {
   int evaluations = 1;   ///< how many evaluations `fitness` folds (RunView::evaluation_score); its replay is the first
 };
 
+/// A stage of a run of several (io/syllabus.h): a node of the page's
+/// syllabus graph, and where its own fitness curve lies among the run's
+/// generations (each stage's fitness measures its own task).
+struct RunStage {
+  std::string name;
+  std::vector<std::string> uses;  ///< earlier stages whose skills it builds on: the graph's edges
+  std::string group;              ///< its pandemonium group ("": none)
+  int first_gen = -1;             ///< the run's generation number of its generation 0; -1: not begun
+  int generations = 0;            ///< its generations stored so far: first_gen on
+  double best = 0;                ///< the fittest of their bests (when generations > 0)
+};
+
 /// A run as its page shows it: where it came from, its generations, the
 /// individuals it names, and which is the overall best (the page opens on it).
 struct RunView {
@@ -62,15 +74,20 @@ struct RunView {
   std::vector<RunMember> members;
   std::int64_t best_id = -1;    ///< must be a member with a replay
   int replay_cap = 0;           ///< most replays the page holds
+  std::vector<RunStage> stages; ///< a run of several stages: all of them, in order; else none
 };
 
 /// The page's data as JSON text:
 /// {"replays": [{"label", "replay", "genome"?}...], "run": null | {"name", "seed",
-/// "dialect", "algorithm", "evaluation_score", "evaluation_half_step", "population", "planned_generations", "generations":
+/// "dialect", "algorithm", "evaluation_score", "evaluation_half_step",
+/// "evaluation_quarter_step", "population", "planned_generations", "generations":
 /// [{"gen", "best", "mean", "median", "best_id", "evaluations", "rejected",
 /// "failed"}...], "members": [{"id", "gen", "fitness", "parent1", "parent2"
-/// (null when none), "operator", "replay_index" (null when none)}...],
-/// "best_id", "replay_cap"}}. docs/viewer.md describes it.
+/// (null when none), "operator", "replay_index" (null when none),
+/// "evaluations"}...], "best_id", "replay_cap", "stages"?: [{"name", "uses",
+/// "group", "first_gen" (null when not begun), "generations", "best" (null
+/// when not begun)}...]}}; "stages" only for a run of several. docs/viewer.md
+/// describes it.
 std::string view_data_json(const std::vector<LabelledReplay>& replays,
                            const std::optional<RunView>& run);
 

@@ -1,7 +1,9 @@
 #include "io/run_page.h"
 
+#include <algorithm>
 #include <cstddef>
 #include <deque>
+#include <limits>
 #include <map>
 #include <set>
 #include <string>
@@ -37,6 +39,36 @@ std::vector<std::size_t> spread_order(std::size_t n) {
   return out;
 }
 
+// The stages as the page lists them: the syllabus's, each begun one with
+// its generations among the stored ones (from its first_gen to the next
+// begun stage's) and the fittest of their bests. An older database, without
+// stages, is all stage 0.
+Result<std::vector<RunStage>> stage_views(const std::vector<PageStage>& stages, const std::vector<StageRow>& begun,
+                                          const std::vector<GenerationStats>& gens) {
+  if (begun.size() > stages.size())
+    return Error{"the run has begun " + std::to_string(begun.size()) + " stages, but its config has " +
+                 std::to_string(stages.size())};
+  std::vector<RunStage> out;
+  for (std::size_t k = 0; k < stages.size(); ++k) {
+    const PageStage& st = stages[k];
+    if (k < begun.size() && begun[k].name != st.name)
+      return Error{"the run's stage " + std::to_string(k + 1) + " is \"" + begun[k].name + "\", but its config's is \"" +
+                   st.name + "\""};
+    RunStage v{st.name, st.uses, st.group};
+    if (k < begun.size() || (k == 0 && begun.empty())) {
+      v.first_gen = k < begun.size() ? begun[k].first_gen : 0;
+      const int end = k + 1 < begun.size() ? begun[k + 1].first_gen : std::numeric_limits<int>::max();
+      for (const auto& g : gens) {
+        if (g.generation < v.first_gen || g.generation >= end) continue;
+        v.best = v.generations == 0 ? g.best : std::max(v.best, g.best);
+        ++v.generations;
+      }
+    }
+    out.push_back(std::move(v));
+  }
+  return out;
+}
+
 }  // namespace
 
 std::vector<std::int64_t> replay_choice(std::int64_t best, const std::vector<std::int64_t>& lineage,
@@ -55,15 +87,15 @@ std::vector<std::int64_t> replay_choice(std::int64_t best, const std::vector<std
 
 Result<RunPage> gather_run_page(const RunStore& store, const std::string& source, const RunConfig& cfg,
                                 const SimConfig& sim, std::uint64_t master, int cap) {
-  return gather_run_page(store, source, cfg, std::vector<SimConfig>{sim}, master, cap);
+  return gather_run_page(store, source, cfg, std::vector<PageStage>{{"", {}, "", sim}}, master, cap);
 }
 
 Result<RunPage> gather_run_page(const RunStore& store, const std::string& source, const RunConfig& cfg,
-                                const std::vector<SimConfig>& stage_sims, std::uint64_t master, int cap) {
+                                const std::vector<PageStage>& stages, std::uint64_t master, int cap) {
   auto gens = store.generations();
-  const std::vector<StageRow> stages = store.stages();
-  const bool staged = stage_sims.size() > 1;
-  const int last_stage_gen = stages.empty() ? 0 : stages.back().first_gen;
+  const std::vector<StageRow> begun = store.stages();
+  const bool staged = stages.size() > 1;
+  const int last_stage_gen = begun.empty() ? 0 : begun.back().first_gen;
   if (gens.empty()) return Error{"no generation finished yet"};
   RunPage page;
   RunView& run = page.run;
@@ -77,6 +109,11 @@ Result<RunPage> gather_run_page(const RunStore& store, const std::string& source
   run.population = cfg.evolution.population;
   run.planned_generations = total_generations(cfg.evolution);
   run.replay_cap = cap;
+  if (staged) {
+    auto views = stage_views(stages, begun, gens);
+    if (!views) return Error{views.error()};
+    run.stages = std::move(*views);
+  }
   // the overall best: the fittest generation best, the earliest on a tie
   // (of the last stage's generations: a stage's fitness is its own task's)
   const GenerationStats* top = nullptr;
@@ -126,11 +163,11 @@ Result<RunPage> gather_run_page(const RunStore& store, const std::string& source
   std::map<std::int64_t, int> replay_of;
   for (std::int64_t id : replay_choice(run.best_id, *best_line, bests, others, cap)) {
     const Individual& ind = members.at(id);
-    const StageRow stage = stage_of(stages, id);
-    if (stage.index >= static_cast<int>(stage_sims.size()))
+    const StageRow stage = stage_of(begun, id);
+    if (stage.index >= static_cast<int>(stages.size()))
       return Error{"individual " + std::to_string(id) + " is of stage " + std::to_string(stage.index + 1) +
-                   ", but the run's config has " + std::to_string(stage_sims.size())};
-    const SimConfig& sim = stage_sims[stage.index];
+                   ", but the run's config has " + std::to_string(stages.size())};
+    const SimConfig& sim = stages[stage.index].sim;
     auto creature = develop_creature(*ind.genotype, sim);
     if (!creature) continue;  // not viable
     Replay replay;

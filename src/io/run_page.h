@@ -45,13 +45,26 @@ std::vector<std::int64_t> replay_choice(std::int64_t best, const std::vector<std
 Result<RunPage> gather_run_page(const RunStore& store, const std::string& source, const RunConfig& cfg,
                                 const SimConfig& sim, std::uint64_t master, int cap = kRunPageReplays);
 
-/// The same for a run of several stages (io/syllabus.h): each creature is
-/// simulated with its own stage's `stage_sims[k]` (the stage its id was
-/// born in), the page's best is the last stage's (their fitnesses measure
-/// different tasks), and each replay's label names its stage. `cfg` is the
-/// first stage's, for the page's context.
+/// A stage of a run as its page takes it (io/syllabus.h's StageDef): its
+/// node in the page's syllabus graph, and the config its creatures are
+/// simulated on.
+struct PageStage {
+  std::string name;
+  std::vector<std::string> uses;
+  std::string group;
+  SimConfig sim;  ///< its config's, or one with another duration
+};
+
+/// The same for a run of several stages (io/syllabus.h), `stages` all of
+/// the syllabus's in order: each creature is simulated with its own stage's
+/// sim (the stage its id was born in), the page's best is the last stage's
+/// (their fitnesses measure different tasks), each replay's label names its
+/// stage, and the run lists the stages (RunView::stages: where each begins
+/// among the stored generations, its best so far). `cfg` is the first
+/// stage's, for the page's context. Fails when the store's stages are not
+/// the first of `stages`.
 Result<RunPage> gather_run_page(const RunStore& store, const std::string& source, const RunConfig& cfg,
-                                const std::vector<SimConfig>& stage_sims, std::uint64_t master,
+                                const std::vector<PageStage>& stages, std::uint64_t master,
                                 int cap = kRunPageReplays);
 
 }  // namespace bx

@@ -3,8 +3,8 @@
 // panels are there (the signals panel: a trace per effector, sensor and joint
 // dof with its range, "constant" on a constant signal), nothing sticks out
 // of its panel, nothing is fetched from outside; and a run's page, at
-// 800x600 and 1920x1080, with its lineage picker. Screenshots go to
-// BUILD/viewer-test/.
+// 800x600 and 1920x1080, with its lineage picker; a run of stages' syllabus
+// graph and each stage's own curve. Screenshots go to BUILD/viewer-test/.
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -13,6 +13,8 @@
 #include <regex>
 #include <set>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "genome/graph_genotype.h"
 #include "run/run.h"
@@ -385,6 +387,90 @@ TEST_F(RunPageInBrowser, MarksTheCreaturesItCouldNotReplayUnderACap) {
   int disabled = 0;
   for (const auto& o : r["options"]) disabled += o["disabled"].get<bool>() && o["value"] != "";
   EXPECT_GT(disabled, 0) << r["options"];
+}
+
+// ---- a run of several stages: its syllabus ----
+
+// four stages of two generations, stopped in the third: two groups, an
+// edge per use, a stage not begun
+const char* kSyllabus = R"(
+[genome]
+dialect = "sims1994"
+[evolution]
+population = 6
+generations = 2
+[task]
+seconds = 1
+
+[[stage]]
+name = "forward"
+
+[[stage]]
+name = "left"
+group = "turn"
+
+[[stage]]
+name = "face"
+uses = ["forward", "left"]
+group = "aim"
+
+[[stage]]
+name = "fight"
+uses = ["face"]
+)";
+
+TEST_F(ViewerInBrowser, ARunOfStagesShowsItsSyllabusAndEachStagesOwnCurveAt800x600) {
+  const fs::path cfg = write("syllabus.toml", kSyllabus), run = dir / "r";
+  Outcome r = bestiary("run " + cfg.string() + " --workers 0 --quiet --stop-after 5 --out " + run.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  ASSERT_EQ(bestiary("show " + run.string()).code, 0);
+  json seen = inspect(run / "view.html", "run_syllabus", "--times 0.5 --width 800 --height 600 --run");
+  ASSERT_FALSE(seen.is_null());
+  EXPECT_TRUE(seen["errors"].empty()) << seen["errors"];
+  EXPECT_TRUE(seen["run"]["overflow"].empty()) << seen["run"]["overflow"];
+  EXPECT_EQ(seen["run"]["facts"]["stages"], "3 of 4 begun");
+  ASSERT_TRUE(seen["run"].contains("syllabus")) << "no syllabus graph";
+  const json& sy = seen["run"]["syllabus"];
+  // the graph: a box per stage in columns by depth, an edge per use, the groups
+  const json& g = sy["opened"];
+  ASSERT_EQ(g["stages"].size(), 4u);
+  std::vector<std::string> names;
+  for (const auto& st : g["stages"]) names.push_back(st["name"]);
+  EXPECT_EQ(names, (std::vector<std::string>{"forward", "left", "face", "fight"}));
+  EXPECT_EQ(g["stages"][0]["x"], g["stages"][1]["x"]);
+  EXPECT_LT(g["stages"][1]["x"].get<double>(), g["stages"][2]["x"].get<double>());
+  EXPECT_LT(g["stages"][2]["x"].get<double>(), g["stages"][3]["x"].get<double>());
+  std::set<std::pair<int, int>> edges;
+  for (const auto& e : g["edges"]) edges.insert({e[0].get<int>(), e[1].get<int>()});
+  EXPECT_EQ(edges, (std::set<std::pair<int, int>>{{0, 2}, {1, 2}, {2, 3}}));
+  EXPECT_EQ(g["groups"], json::array({"turn", "aim"}));
+  EXPECT_NE(g["stages"][0]["stroke"], g["stages"][1]["stroke"]);  // no group, turn, aim: three colours
+  EXPECT_NE(g["stages"][1]["stroke"], g["stages"][2]["stroke"]);
+  EXPECT_FALSE(g["stages"][3]["begun"].get<bool>());
+  EXPECT_EQ(g["stages"][3]["best"], "not begun");
+  // it opens on the best's stage, face (the run's generation 4), its curve alone
+  EXPECT_TRUE(g["stages"][2]["picked"].get<bool>());
+  EXPECT_TRUE(g["stages"][2]["shown"].get<bool>());
+  EXPECT_EQ(g["chart"]["axisLabels"], json::array({"generation of face", "fitness"}));
+  EXPECT_EQ(g["chart"]["points"], json::array({1, 1, 1}));
+  // each begun stage, picked: its own generations, and a click at the right
+  // end plays its last generation's best (the run's generation 1, 3, 4)
+  ASSERT_EQ(sy["picked"].size(), 3u);
+  const int last_gen[] = {1, 3, 4}, gens[] = {2, 2, 1};
+  for (int k = 0; k < 3; ++k) {
+    const json& p = sy["picked"][k];
+    EXPECT_EQ(p["chart"]["axisLabels"][0], "generation of " + names[k]) << k;
+    EXPECT_NE(p["chart"]["title"].get<std::string>().find("stage " + names[k]), std::string::npos) << p["chart"];
+    EXPECT_EQ(p["chart"]["points"], json::array({gens[k], gens[k], gens[k]})) << k;
+    EXPECT_EQ(p["afterClick"]["generation"], last_gen[k]) << k;
+    for (int i = 0; i < 4; ++i) {
+      EXPECT_EQ(p["graph"]["stages"][i]["picked"].get<bool>(), i == k) << k << " " << i;
+      EXPECT_EQ(p["graph"]["stages"][i]["shown"].get<bool>(), i == k) << k << " " << i;
+    }
+  }
+  // and the whole run's curve
+  EXPECT_EQ(sy["whole"]["axisLabels"][0], "generation");
+  EXPECT_EQ(sy["whole"]["points"], json::array({5, 5, 5}));
 }
 
 }  // namespace

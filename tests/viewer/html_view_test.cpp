@@ -1,5 +1,6 @@
 // The viewer page's data: the shape the page reads, a run with its members
-// and their genomes, and data that cannot break out of its script tag.
+// and their genomes (and its stages when it has several), and data that
+// cannot break out of its script tag.
 #include "io/html_view.h"
 
 #include <gtest/gtest.h>
@@ -46,6 +47,25 @@ TEST(ViewData, HoldsARunItsMembersAndGenomes) {
   EXPECT_TRUE(d["run"]["members"][2]["replay_index"].is_null());
   EXPECT_EQ(d["run"]["best_id"], 12);
   EXPECT_EQ(d["run"]["replay_cap"], 2);
+}
+
+TEST(ViewData, ARunOfSeveralStagesListsThemAPlainRunNone) {
+  bx::RunView run;
+  run.generations = {{0, 1.5, 0.5, 0.25, 3, 10, 0, 0}, {1, 0.5, 0.25, 0.25, 9, 20, 0, 0}};
+  run.members = {{3, 0, 1.5, -1, -1, "random", 0}};
+  run.best_id = 3;
+  // a plain run's data is as it was before stages
+  EXPECT_FALSE(json::parse(bx::view_data_json({{"g0", kTinyReplay}}, run))["run"].contains("stages"));
+  run.stages = {{"left", {}, "turn", 0, 1, 1.5}, {"face", {"left"}, "", 1, 1, 0.5}, {"fight", {"left", "face"}, "react"}};
+  auto d = json::parse(bx::view_data_json({{"g0", kTinyReplay}}, run));
+  ASSERT_EQ(d["run"]["stages"].size(), 3u);
+  EXPECT_EQ(d["run"]["stages"][0],
+            json::parse(R"({"name":"left","uses":[],"group":"turn","first_gen":0,"generations":1,"best":1.5})"));
+  EXPECT_EQ(d["run"]["stages"][1],
+            json::parse(R"({"name":"face","uses":["left"],"group":"","first_gen":1,"generations":1,"best":0.5})"));
+  // not begun: no first generation, no best
+  EXPECT_EQ(d["run"]["stages"][2], json::parse(R"({"name":"fight","uses":["left","face"],"group":"react",)"
+                                               R"("first_gen":null,"generations":0,"best":null})"));
 }
 
 TEST(ViewHtml, EmbedsTheDataOnceInThePage) {

@@ -1,7 +1,8 @@
 // The run page's data (src/io/run_page.h): which replays a bounded page
 // keeps, and on a small real run: it opens on the overall best, names every
 // generation's best and the first-parent lineages back to generation 0, and
-// replays each creature exactly as the run scored it.
+// replays each creature exactly as the run scored it; a run of several
+// stages lists its syllabus, each stage with its generations and best.
 #include "genome/graph_genotype.h"
 #include "io/run_page.h"
 #include "eval/evaluate.h"
@@ -11,8 +12,11 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <map>
 #include <set>
+#include <string>
+#include <vector>
 
 #include "run/run.h"
 #include "genome/genome_json.h"
@@ -172,6 +176,7 @@ TEST_F(RunPage, ShowWritesItAndSaysHowManyCreaturesItReplayed) {
   ASSERT_EQ(s.code, 0) << s.err;
   auto data = json::parse(embedded_data(slurp(page)));
   const json& run = data["run"];
+  EXPECT_FALSE(run.contains("stages")) << "a plain run has no syllabus";
   EXPECT_EQ(run["best_id"], store_->best_individual()->id);
   EXPECT_EQ(run["generations"].size(), 6u);
   EXPECT_EQ(data["replays"].size(), run["members"].size());
@@ -180,6 +185,86 @@ TEST_F(RunPage, ShowWritesItAndSaysHowManyCreaturesItReplayed) {
                        " creatures replayed"),
             std::string::npos)
       << s.out;
+}
+
+// four stages of two generations, stopped in the third: a syllabus graph
+// (uses, groups), two stages done, one under way, one not begun
+const char* kSyllabus = R"(
+[genome]
+dialect = "sims1994"
+[evolution]
+population = 6
+generations = 2
+[task]
+seconds = 1
+
+[[stage]]
+name = "forward"
+
+[[stage]]
+name = "left"
+group = "turn"
+[stage.task]
+seconds = 2
+
+[[stage]]
+name = "face"
+uses = ["forward", "left"]
+group = "aim"
+start = "population"
+
+[[stage]]
+name = "fight"
+uses = ["face"]
+)";
+
+class StagedRunPage : public InTempDir {};
+
+TEST_F(StagedRunPage, ListsTheSyllabusEachStageWithItsGenerationsAndBest) {
+  const fs::path cfg = write("syllabus.toml", kSyllabus), run_dir = dir / "r";
+  Outcome r = bestiary("run " + cfg.string() + " --workers 0 --quiet --stop-after 5 --out " + run_dir.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  Outcome s = bestiary("show " + run_dir.string());
+  ASSERT_EQ(s.code, 0) << s.err;
+  const json run = json::parse(embedded_data(slurp(run_dir / "view.html")))["run"];
+  ASSERT_TRUE(run.contains("stages")) << run.dump().substr(0, 400);
+  const json& stages = run["stages"];
+  ASSERT_EQ(stages.size(), 4u);
+  auto store = bx::RunStore::open(bx::run_db_path(run_dir.string()));
+  ASSERT_TRUE(store.ok()) << store.error();
+  const auto gens = (*store)->generations();
+  ASSERT_EQ(gens.size(), 5u);
+  // the fittest generation best of generations [from, to)
+  auto best_of = [&](int from, int to) {
+    double b = gens[from].best;
+    for (int g = from; g < to; ++g) b = std::max(b, gens[g].best);
+    return b;
+  };
+  const std::vector<std::string> names = {"forward", "left", "face", "fight"};
+  const std::vector<json> uses = {json::array(), json::array(), {"forward", "left"}, {"face"}};
+  const std::vector<std::string> groups = {"", "turn", "aim", ""};
+  for (std::size_t k = 0; k < 4; ++k) {
+    EXPECT_EQ(stages[k]["name"], names[k]) << k;
+    EXPECT_EQ(stages[k]["uses"], uses[k]) << k;
+    EXPECT_EQ(stages[k]["group"], groups[k]) << k;
+  }
+  // generations numbered through the stages: 0-1, 2-3, then 4 of the third
+  EXPECT_EQ(stages[0]["first_gen"], 0);
+  EXPECT_EQ(stages[1]["first_gen"], 2);
+  EXPECT_EQ(stages[2]["first_gen"], 4);
+  EXPECT_EQ(stages[0]["generations"], 2);
+  EXPECT_EQ(stages[1]["generations"], 2);
+  EXPECT_EQ(stages[2]["generations"], 1);
+  EXPECT_EQ(stages[0]["best"].get<double>(), best_of(0, 2));
+  EXPECT_EQ(stages[1]["best"].get<double>(), best_of(2, 4));
+  EXPECT_EQ(stages[2]["best"].get<double>(), best_of(4, 5));
+  // the last is not begun
+  EXPECT_TRUE(stages[3]["first_gen"].is_null());
+  EXPECT_EQ(stages[3]["generations"], 0);
+  EXPECT_TRUE(stages[3]["best"].is_null());
+  // the whole run's curve is still there, and the page opens on the stage under way's best
+  EXPECT_EQ(run["generations"].size(), 5u);
+  EXPECT_EQ(run["best_id"], gens[4].best_id);
 }
 
 }  // namespace

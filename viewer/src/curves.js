@@ -37,7 +37,8 @@ export function curveLayout(run, width, height, pad = { left: 36, right: 8, top:
   for (const m of run.members ?? []) widen(m.fitness);
   const yTicks = niceTicks(y0, y1 > y0 ? y1 : y0 + 1, 4);
   const yLo = Math.min(y0, yTicks[0]), yHi = Math.max(y1, yTicks[yTicks.length - 1]);
-  const xTicks = niceTicks(g0, g1 > g0 ? g1 : g0 + 1, 5).filter((v) => Number.isInteger(v));
+  // (one generation: its tick alone, in the middle)
+  const xTicks = niceTicks(g0, g1 > g0 ? g1 : g0 + 1, 5).filter((v) => Number.isInteger(v) && (g1 > g0 || v === g0));
   const plotW = width - pad.left - pad.right, plotH = height - pad.top - pad.bottom;
   const x = (gen) => pad.left + (g1 > g0 ? (gen - g0) / (g1 - g0) : 0.5) * plotW;
   const y = (v) => pad.top + (1 - (v - yLo) / (yHi - yLo)) * plotH;

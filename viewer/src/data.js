@@ -267,6 +267,28 @@ export function parseRun(run, nReplays, path = 'run') {
   });
   const best = run.members.find((m) => m.id === run.best_id);
   if (!best || best.replay_index === null) fail(`${path}.best_id`, 'expected a member with a replay', run.best_id);
+  // a run of several stages: its syllabus, each stage using earlier ones (a
+  // plain run, and a page written before stages, has none)
+  if (run.stages !== undefined) {
+    const names = new Set();
+    arr(run.stages, `${path}.stages`).forEach((st, i) => {
+      const at = `${path}.stages[${i}]`;
+      obj(st, at);
+      if (typeof st.name !== 'string' || st.name === '') fail(`${at}.name`, 'expected a name', st.name);
+      if (names.has(st.name)) fail(`${at}.name`, 'given to two stages', st.name);
+      arr(st.uses, `${at}.uses`).forEach((u, k) => {
+        if (!names.has(u)) fail(`${at}.uses[${k}]`, 'expected an earlier stage', u);
+      });
+      names.add(st.name);
+      if (typeof st.group !== 'string') fail(`${at}.group`, 'expected a string', st.group);
+      if (int(st.generations, `${at}.generations`, 0) > 0) {
+        int(st.first_gen, `${at}.first_gen`, 0);
+        num(st.best, `${at}.best`);
+      } else {
+        for (const k of ['first_gen', 'best']) if (st[k] !== null) fail(`${at}.${k}`, 'expected null (not begun)', st[k]);
+      }
+    });
+  }
   return run;
 }
 

@@ -56,4 +56,5 @@ test('a run of one generation still lays out', () => {
   const L = curveLayout(run, 200, 100);
   assert.match(L.paths.best, /^M[\d.]+,[\d.]+$/);
   assert.ok(Number.isFinite(L.x(0)));
+  assert.deepEqual(L.xTicks.map((t) => t.value), [0]); // not a second tick on top of it
 });

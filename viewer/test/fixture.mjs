@@ -5,8 +5,9 @@
 // angle over 2 and a contact sensor always touching; a catapult throwing
 // its projectile (makeCatapult), written as before replays held sensors and
 // joint angles; a river crossing's scene record (makeRiver); a lessin2015
-// creature with two muscles and an eye (makeLessin); and fight-or-flight
-// targets as the scene record's props (makeTargets).
+// creature with two muscles and an eye (makeLessin); fight-or-flight
+// targets as the scene record's props (makeTargets); and runs, a plain one
+// (makeRun) and one of several stages (makeStagedRun).
 
 /** Quaternion [w, x, y, z] for `angle` radians about z. */
 export function aboutZ(angle) {
@@ -239,4 +240,30 @@ export function makeTargets() {
     ],
   };
   return r;
+}
+
+/**
+ * A synthetic run of four stages (lessin2015's syllabus in small): forward
+ * (generations 0-2), left (3-4, pandemonium group turn), face (5-7, group
+ * aim, using forward and left) and fight (using face; not begun). Each
+ * generation's best is a member of its own, replayed, the first parent the
+ * last generation's; each stage's fitness on a scale of its own.
+ */
+export function makeStagedRun() {
+  const bests = [1, 2, 3, 10, 12, 0.1, 0.2, 0.3];
+  return {
+    name: 'lessin2015-small', seed: '1', dialect: 'lessin2015', algorithm: 'generational',
+    population: 10, planned_generations: 10, replay_cap: 8,
+    generations: bests.map((best, g) =>
+      ({ gen: g, best, mean: best / 2, median: best / 2, best_id: g + 1, evaluations: 10 * (g + 1), rejected: 0, failed: 0 })),
+    members: bests.map((fitness, g) => ({ id: g + 1, gen: g, fitness, parent1: g ? g : null, parent2: null,
+      operator: g ? 'mutation' : 'random', replay_index: g })),
+    best_id: 8,
+    stages: [
+      { name: 'forward', uses: [], group: '', first_gen: 0, generations: 3, best: 3 },
+      { name: 'left', uses: [], group: 'turn', first_gen: 3, generations: 2, best: 12 },
+      { name: 'face', uses: ['forward', 'left'], group: 'aim', first_gen: 5, generations: 3, best: 0.3 },
+      { name: 'fight', uses: ['face'], group: '', first_gen: null, generations: 0, best: null },
+    ],
+  };
 }

@@ -105,7 +105,9 @@ async function main() {
 // Elements drawn (partly) outside their panel (side panel, player bar, the
 // scene's line of text, its scale and a grid's legend): side-ways for the side panel, which
 // scrolls, either way for the others; and a panel outside the window. Each
-// as "panel: tag.class 'text'".
+// as "panel: tag.class 'text'". A run's syllabus graph scrolls side-ways in
+// its box when the panel is too narrow for it at a readable size: the box
+// must fit, what it clips is not drawn outside.
 function overflowing() {
   const out = [];
   for (const id of ['side', 'player', 'hud', 'scale', 'cells']) {
@@ -116,6 +118,7 @@ function overflowing() {
       out.push(`${id}: outside the window`);
     for (const e of panel.querySelectorAll('*')) {
       if (e.getClientRects().length === 0) continue; // not drawn (a closed group's)
+      if (e.parentElement.closest('.syllabus-box')) continue;
       const r = e.getBoundingClientRect();
       if (r.width === 0 && r.height === 0) continue;
       const out_x = r.left < p.left - 0.5 || r.right > p.right + 0.5;
@@ -177,7 +180,9 @@ async function inspectSignals(page, a) {
 // the colours of its curves and of the shown creature's marker), the table
 // of generations, the generation list and the lineage; then playing each
 // playable ancestor in the lineage, choosing the first generation's best,
-// clicking the chart's right end, and downloading the shown genome
+// clicking the chart's right end, and downloading the shown genome; for a
+// run of stages, its syllabus graph, then per begun stage picking it there
+// and clicking the chart's right end
 async function inspectRun(page, a) {
   if (await page.locator('#run').isHidden()) return { shown: false };
   const now = () => page.evaluate(() => {
@@ -238,7 +243,52 @@ async function inspectRun(page, a) {
   // the shown creature's genome, as the browser saves it
   const [download] = await Promise.all([page.waitForEvent('download'), page.click('#download-genome')]);
   r.download = { name: download.suggestedFilename(), text: readFileSync(await download.path(), 'utf8') };
+  if (await page.locator('#run svg.syllabus').count()) r.syllabus = await inspectSyllabus(page, a, now);
   return r;
+}
+
+// a run of stages: the syllabus graph (each box's name, text, column and
+// state, each edge), then each begun stage picked: the chart (its title, x
+// axis, points per curve, marker) and what a click at its right end shows
+async function inspectSyllabus(page, a, now) {
+  const graph = () => page.evaluate(() => {
+    const boxes = [...document.querySelectorAll('#run svg.syllabus .stage')];
+    return {
+      stages: boxes.map((b) => ({
+        index: Number(b.dataset.stage), name: b.querySelector('.stage-name').textContent,
+        best: b.querySelector('.stage-best').textContent, x: Number(b.querySelector('rect').getAttribute('x')),
+        picked: b.classList.contains('picked'), shown: b.classList.contains('shown'), begun: !b.classList.contains('not-begun'),
+        stroke: getComputedStyle(b.querySelector('rect')).stroke,
+      })),
+      edges: [...document.querySelectorAll('#run svg.syllabus .edge')].map((e) => [Number(e.dataset.from), Number(e.dataset.to)]),
+      groups: [...document.querySelectorAll('#run .group-key')].map((k) => k.textContent),
+    };
+  });
+  const chart = () => page.evaluate(() => {
+    const c = document.querySelector('#run svg.curves');
+    return {
+      title: c.parentElement.previousElementSibling.firstChild.textContent,
+      axisLabels: [...c.querySelectorAll('.axis-label')].map((t) => t.textContent),
+      points: [...c.querySelectorAll('path.curve')].map((p) => (p.getAttribute('d').match(/[ML]/g) || []).length),
+      marker: c.querySelectorAll('.marker').length,
+    };
+  });
+  const out = { opened: { ...(await graph()), chart: await chart() }, picked: [] };
+  for (const st of out.opened.stages) {
+    if (!st.begun) continue;
+    await page.click(`#run svg.syllabus .stage[data-stage="${st.index}"]`);
+    const picked = { index: st.index, chart: await chart() };
+    const c = page.locator('#run svg.curves');
+    const box = await c.boundingBox();
+    await c.click({ position: { x: box.width - 12, y: box.height / 2 } });
+    picked.afterClick = await now();
+    picked.graph = await graph();
+    out.picked.push(picked);
+  }
+  await page.screenshot({ path: join(a.shots, `${a.name}_syllabus.png`) });
+  await page.click('#run button.whole-run');
+  out.whole = await chart();
+  return out;
 }
 
 main().catch((e) => {
