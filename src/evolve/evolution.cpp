@@ -165,7 +165,7 @@ std::vector<Individual> Evolution::evaluate(std::vector<Child> children, Evoluti
     born[k].evaluations = 1;
     jobs[k * per] = {born[k].genotype.get(), born[k].seed, 1, task_};
     for (std::size_t t = 0; t < retests_.size(); ++t)
-      jobs[k * per + 1 + t] = {born[k].genotype.get(), born[k].seed, 1, retests_[t].task};
+      jobs[k * per + 1 + t] = {born[k].genotype.get(), retests_[t].seed, 1, retests_[t].task};
   }
   std::vector<EvalOutcome> out = eval.evaluate(jobs);
   for (std::size_t k = 0; k < born.size(); ++k) {

@@ -106,13 +106,16 @@ Repeats elite_repeats(const EvolutionDef& evo, int evaluations);
 /// A skill that every child is evaluated on again beside its own task
 /// (lessin2015's General ESP, Algorithm 1: the body may change, so each
 /// existing leaf skill is retested): `task` is the evaluator's task it runs
-/// on (the skill alone: its stage's config with brain.skill), `least` the
-/// fitness it must keep. A child that scores less on any retest (or whose
-/// retest fails) has fitness 0 for good (`failure` says which, starting
-/// with kRetestFailure), and its metrics record each retest as "retest NAME".
+/// on (the skill alone: its stage's config with brain.skill), `seed` the
+/// world every child is retested in (one for all: a child whose body and
+/// skill did not change scores what its parent did), `least` the fitness it
+/// must keep. A child that scores less on any retest (or whose retest
+/// fails) has fitness 0 for good (`failure` says which, starting with
+/// kRetestFailure), and its metrics record each retest as "retest NAME".
 struct Retest {
   std::string skill;
   int task = 0;
+  std::uint64_t seed = 0;
   double least = 0;
   friend bool operator==(const Retest&, const Retest&) = default;
 };

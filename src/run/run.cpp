@@ -199,10 +199,24 @@ Result<Individual> file_founder(const StageDef& st) {
   return f;
 }
 
+}  // namespace
+
+std::uint64_t retest_seed(std::uint64_t run_seed, int stage, int retest) {
+  constexpr std::uint64_t kRetest = 0x5245;  // a stream purpose of its own
+  return stream_seed({run_seed, kRetest, static_cast<std::uint64_t>(stage), static_cast<std::uint64_t>(retest)});
+}
+
+namespace {
+
 // stage k's General ESP retests (StageDef::retest_tolerance): each leaf
-// skill before it must keep (1 - tolerance) x the best fitness its stage
-// ended with (the run's record of that stage's last generation)
-Result<std::vector<Retest>> stage_retests(const Syllabus& syl, const StageRow& stage, const RunStore& store) {
+// skill before it must keep (1 - tolerance) x what the creature that ended
+// the skill's last stage (its own, or its last reconciliation) scores on
+// that stage's task in the retest's world; every child is retested in that
+// world, so one whose body and skill did not change keeps exactly its
+// parent's score (a retest in a world of its own would fail a third of
+// unchanged lessin_crawlers, whose gait varies so between seeds)
+Result<std::vector<Retest>> stage_retests(const Syllabus& syl, const StageRow& stage, const RunStore& store,
+                                          Evaluator& eval, std::uint64_t run_seed) {
   const int k = stage.index;
   std::vector<Retest> out;
   const std::vector<RetestRow> rows = retest_rows(syl, k);
@@ -217,14 +231,21 @@ Result<std::vector<Retest>> stage_retests(const Syllabus& syl, const StageRow& s
     std::optional<int> next_first;
     if (last + 1 == k) next_first = stage.first_gen;
     else if (last + 1 < static_cast<int>(begun.size())) next_first = begun[last + 1].first_gen;
-    std::optional<double> learned;
+    std::optional<std::int64_t> best;
     if (next_first)
       for (const GenerationStats& g : gens)
-        if (g.generation == *next_first - 1) learned = g.best;
-    if (!learned)
-      return Error{"stage \"" + syl.stages[k].name + "\": retest of \"" + leaf.name + "\": the run has no record of the "
-                   "fitness stage \"" + syl.stages[last].name + "\" ended with"};
-    out.push_back({leaf.name, r.task, (1 - *syl.stages[k].retest_tolerance) * *learned});
+        if (g.generation == *next_first - 1) best = g.best_id;
+    const std::string where = "stage \"" + syl.stages[k].name + "\": retest of \"" + leaf.name + "\": ";
+    if (!best) return Error{where + "the run has no record of the creature stage \"" + syl.stages[last].name + "\" ended with"};
+    auto ind = store.individual(*best);
+    if (!ind) return Error{where + ind.error()};
+    const std::uint64_t seed = retest_seed(run_seed, k, static_cast<int>(out.size()));
+    const std::vector<EvalOutcome> ref = eval.evaluate({{ind->genotype.get(), seed, 1, last}});
+    if (!ref[0].viable || ref[0].result.failed)
+      return Error{where + "individual " + std::to_string(*best) + " (stage \"" + syl.stages[last].name +
+                   "\"'s last best) fails its own task in the retest's world: " +
+                   (ref[0].viable ? ref[0].result.failure : ref[0].reason)};
+    out.push_back({leaf.name, r.task, seed, (1 - *syl.stages[k].retest_tolerance) * ref[0].result.fitness});
   }
   return out;
 }
@@ -410,7 +431,7 @@ Status drive_run(const std::string& dir, const RunOptions& opt) {
     if (opt.stop_after > 0 && done >= opt.stop_after) break;
     const StageDef& st = stages[stage.index];
     const std::vector<Individual> founders = state.generation < 0 ? state.population : std::vector<Individual>{};
-    auto retests = stage_retests(run->syllabus, stage, store);
+    auto retests = stage_retests(run->syllabus, stage, store, *evaluator, run->seed);
     if (!retests) return Error{retests.error()};
     Evolution evo(genotype_ops(st.cfg), st.cfg.evolution, stage_seed(run->seed, stage.index), st.cfg.sim.trial_score,
                   stage.index, founders, std::move(*retests));

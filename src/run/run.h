@@ -55,6 +55,11 @@ inline Status create_run(const std::string& dir, const RunConfig& cfg, const std
 /// the stage and the key. `run` checks before it creates the run folder.
 Status check_run(const Syllabus& stages);
 
+/// The world (evaluation seed) stage k's retest t (its t-th leaf skill)
+/// runs in, for every child and for the skill's reference (drive_run: the
+/// creature that ended the skill's last stage, on that stage's task).
+std::uint64_t retest_seed(std::uint64_t run_seed, int stage, int retest);
+
 /// Runs (or resumes) the run in `dir` until it is finished. Safe to call on a
 /// run killed at any moment: it continues from the last checkpoint and ends
 /// exactly as the uninterrupted run would.

@@ -618,6 +618,7 @@ class TwoTasks : public Evaluator {
       const auto& genes = static_cast<const FloatVector&>(*jobs[i].genotype).genes;
       tasks.push_back(jobs[i].task);
       if (jobs[i].task == 1) {
+        EXPECT_EQ(jobs[i].seed, 77u);  // every retest in the retest's one world
         out[i].result.fitness = genes[0];
         continue;
       }
@@ -637,7 +638,7 @@ TEST(Retests, AChildBelowARetestScoresZeroForGoodAndTheRestScoreTheirOwnTask) {
   EvolutionDef e = float_evolution(Algorithm::Generational);
   e.generations = 5;
   e.elite_evaluations = 2;  // the elite is evaluated again: never one that fell
-  Evolution evo(ops, e, 9, TrialScore::Mean, 0, {}, {{"first", 1, 0.1}});
+  Evolution evo(ops, e, 9, TrialScore::Mean, 0, {}, {{"first", 1, 77, 0.1}});
   TwoTasks problem;
   EvolutionState s;
   int fell = 0, kept = 0;

@@ -506,18 +506,21 @@ TEST_F(Stages, AGeneralStageScoresZeroBelowARetestAndResumesTheSame) {
   ASSERT_TRUE(drive_run(whole, {0, true, 0}).ok());
   auto store = RunStore::open(run_db_path(whole));
   ASSERT_TRUE(store.ok());
-  // forward's level: the best of its last generation; each strike child keeps
-  // half of it run alone, or scores 0
+  // forward's level: what its stage's last best scores in the retest's
+  // world; each strike child keeps half of it run alone in that world, or scores 0
   const std::vector<GenerationStats> gens = (*store)->generations();
   ASSERT_EQ(gens.size(), 4u);
-  const double least = 0.5 * gens[1].best;
+  auto learned = (*store)->individual(gens[1].best_id);
+  ASSERT_TRUE(learned.ok());
+  const std::uint64_t world = retest_seed(3, 1, 0);
+  const double least = 0.5 * evaluate_genotype(*learned->genotype, syl->stages[0].cfg.sim, world).result.fitness;
   SimConfig alone = syl->stages[0].cfg.sim;
   alone.develop.skill = "forward";
   int fell = 0, kept = 0;
   for (std::int64_t id = (*store)->stages()[1].first_id;; ++id) {
     auto ind = (*store)->individual(id);
     if (!ind) break;
-    const EvalOutcome again = evaluate_genotype(*ind->genotype, alone, ind->seed);
+    const EvalOutcome again = evaluate_genotype(*ind->genotype, alone, world);
     ASSERT_TRUE(again.viable && !again.result.failed);
     if (again.result.fitness < least) {
       ++fell;
@@ -529,6 +532,11 @@ TEST_F(Stages, AGeneralStageScoresZeroBelowARetestAndResumesTheSame) {
     }
   }
   EXPECT_EQ(fell + kept, 7);  // 4, then 3 children of the one elite
+  // the stage's copy of forward's best scores exactly what it did: kept
+  auto copy = (*store)->individual((*store)->stages()[1].first_id);
+  ASSERT_TRUE(copy.ok());
+  EXPECT_EQ(copy->op, "copy");
+  EXPECT_EQ(copy->failure.rfind("retest", 0), std::string::npos) << copy->failure;
   EXPECT_GT(fell, 0);
   EXPECT_GT(kept, 0);
   bool recorded = false;
@@ -629,15 +637,19 @@ TEST_F(Stages, AReconcilingStageChangesOnlyItsSkillsWiresAndSetsItsNewLevel) {
     }
   }
   EXPECT_GT(moved, 0);
-  // the second strike stage's least: half of what the reconciliation ended with
+  // the second strike stage's least: half of what the reconciliation's last
+  // best scores (forward alone, its stage's task) in the retest's world
   bool fell_or_kept = false;
-  const double least = 0.5 * gens[5].best;
   SimConfig alone = syl->stages[0].cfg.sim;
   alone.develop.skill = "forward";
+  auto reconciled = (*store)->individual(gens[5].best_id);
+  ASSERT_TRUE(reconciled.ok());
+  const std::uint64_t world = retest_seed(3, 3, 0);
+  const double least = 0.5 * evaluate_genotype(*reconciled->genotype, alone, world).result.fitness;
   for (std::int64_t id = stages[3].first_id;; ++id) {
     auto ind = (*store)->individual(id);
     if (!ind) break;
-    const EvalOutcome again = evaluate_genotype(*ind->genotype, alone, ind->seed);
+    const EvalOutcome again = evaluate_genotype(*ind->genotype, alone, world);
     ASSERT_TRUE(again.viable && !again.result.failed);
     EXPECT_EQ(ind->failure.rfind("retest", 0) == 0, again.result.fitness < least) << ind->failure;
     fell_or_kept = true;
