@@ -13,6 +13,7 @@ import { showCellsLegend } from './cells_legend.js';
 import { countersText, hasWorld, recordOf, sceneAt } from './scene_record.js';
 import { centreAt, throwOf, throwStatus } from './flight.js';
 import { createCameraRig } from './camera_rig.js';
+import { pointsOfInterest } from './interest.js';
 import { createSparklines } from './sparklines.js';
 import { createSignalsPanel } from './signals_panel.js';
 import { createRunPanel } from './run_panel.js';
@@ -134,7 +135,8 @@ export function createViewer(ui, data) {
     }
     player.setField(world?.fieldName ?? null);
     showCellsLegend(ui.cells, s.record);
-    rig.reset(entry.replay.frames, s.radius, s.throw ? s.throw.projectile : -1);
+    // the camera frames the record's lights and targets with the creature
+    rig.reset(entry.replay.frames, s.radius, s.throw ? s.throw.projectile : -1, pointsOfInterest(s.record));
     sparks?.dispose();
     signals?.dispose();
     signals = createSignalsPanel(ui.signals, entry.replay);

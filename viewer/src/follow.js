@@ -1,7 +1,8 @@
 // Where the follow camera looks: the centre of mass (or a catapult's
 // projectile) smoothed over a second, so the camera glides instead of shaking
 // with every step. A pure function of time, so scrubbing and rendering a
-// video frame by frame give the same view.
+// video frame by frame give the same view. And how the cameras frame the
+// creature, its path and the scene's lights and targets (interest.js).
 import { comAt, partPoseAt } from './timeline.js';
 
 /** Mean of the point `at(t)` over [t - w/2, t + w/2], from `samples` samples. */
@@ -65,9 +66,11 @@ export function viewScale(radius) {
 
 /**
  * Bounds of the centre of mass's path on the ground: {min, max, centre, span};
- * with `k` >= 0, of part k's path (a projectile's) as well.
+ * with `k` >= 0, of part k's path (a projectile's) as well; with `interest`
+ * (interest.js: spheres {p, radius}), of the squares around them on the
+ * ground too.
  */
-export function pathBounds(frames, k = -1) {
+export function pathBounds(frames, k = -1, interest = []) {
   const min = [Infinity, Infinity], max = [-Infinity, -Infinity];
   const add = (p) => {
     min[0] = Math.min(min[0], p[0]); max[0] = Math.max(max[0], p[0]);
@@ -76,6 +79,10 @@ export function pathBounds(frames, k = -1) {
   for (const f of frames) {
     add(f.com);
     if (k >= 0) add(f.poses[k]);
+  }
+  for (const q of interest) {
+    add([q.p[0] - q.radius, q.p[1] - q.radius]);
+    add([q.p[0] + q.radius, q.p[1] + q.radius]);
   }
   return {
     min, max,
@@ -109,4 +116,77 @@ export function viewDirection(frames, ahead = 0.5, elevation = 0.42, k = -1) {
   const y = sy * Math.cos(ahead) + hy * Math.sin(ahead);
   const c = Math.cos(elevation);
   return [x * c, y * c, Math.sin(elevation)];
+}
+
+/**
+ * The half-angle (rad) of the cone about the view's axis in which the camera
+ * keeps a light or target: four fifths of half the camera's vertical field
+ * of view `fov` (degrees), a margin from the picture's edge. In a window
+ * wider than tall the vertical field is the narrower, so the cone lies within
+ * the picture.
+ */
+export function showHalfAngle(fov) {
+  return 0.8 * (fov / 2) * (Math.PI / 180);
+}
+
+/**
+ * The least distance from the look-at point `at`, along the unit direction
+ * `dir` towards the camera, at which the sphere `q` ({p, radius}) lies within
+ * the cone of half-angle `half` about the view's axis. Every point of the
+ * sphere is at most b + r off the axis and at least d - a - r ahead of the
+ * camera (a: its centre's distance towards the camera, b: off the axis), so
+ * d >= a + r + (b + r) / tan(half) is enough.
+ */
+export function distanceToShow(at, dir, q, half) {
+  const w = [q.p[0] - at[0], q.p[1] - at[1], q.p[2] - at[2]];
+  const a = w[0] * dir[0] + w[1] * dir[1] + w[2] * dir[2];
+  const b = Math.hypot(w[0] - a * dir[0], w[1] - a * dir[1], w[2] - a * dir[2]);
+  return a + q.radius + (b + q.radius) / Math.tan(half);
+}
+
+/** How many times the standard follow distance the camera may move back to show a light or target. */
+export const FOLLOW_REACH = 3;
+
+/** `dir` turned by `angle` (rad) about the vertical, counterclockwise seen from above. */
+function turned(dir, angle) {
+  const c = Math.cos(angle), s = Math.sin(angle);
+  return [dir[0] * c - dir[1] * s, dir[0] * s + dir[1] * c, dir[2]];
+}
+
+/**
+ * The follow view ({dir, dist}) that shows, beside the creature at `at`, the
+ * nearest of `interest` (spheres {p, radius}: the scene's lights and targets
+ * then shown), from the standard view's direction `dir` and distance `dist`:
+ * the camera keeps looking at the creature from the same height angle, turns
+ * about the vertical by the least angle (in whole degrees, counterclockwise
+ * first) at which moving back, never beyond FOLLOW_REACH times `dist`, brings
+ * that sphere within the cone of half-angle `half` (distanceToShow), and
+ * moves back just that far. The least turn keeps the standard view when
+ * moving back is enough (the creature still walks across the picture); a
+ * light near the camera's side, which the camera would have to pass to see,
+ * makes it turn until it looks past the creature towards the light. With no
+ * interest, or one too far to show within the reach, the standard view
+ * itself (the same `dir` and `dist`).
+ */
+export function followView(at, dir, dist, interest, half) {
+  if (!interest.length) return { dir, dist };
+  const away = (q) => Math.hypot(q.p[0] - at[0], q.p[1] - at[1], q.p[2] - at[2]);
+  const q = interest.reduce((best, x) => (away(x) < away(best) ? x : best));
+  const reach = dist * FOLLOW_REACH;
+  for (let deg = 0; deg <= 180; ++deg) {
+    for (const sign of deg === 0 ? [1] : [1, -1]) {
+      const d = deg === 0 ? dir : turned(dir, (sign * deg * Math.PI) / 180);
+      const need = distanceToShow(at, d, q, half);
+      if (need <= reach) return { dir: d, dist: Math.max(dist, need) };
+    }
+  }
+  return { dir, dist };
+}
+
+/**
+ * The overview's distance from `centre` along `dir` that also shows every
+ * sphere of `spheres` within the cone of half-angle `half`: at least `dist`.
+ */
+export function distanceToShowAll(centre, dir, dist, spheres, half) {
+  return spheres.reduce((d, q) => Math.max(d, distanceToShow(centre, dir, q, half)), dist);
 }

@@ -6,7 +6,8 @@
 // its projectile (makeCatapult), written as before replays held sensors and
 // joint angles; a river crossing's scene record (makeRiver); a lessin2015
 // creature with two muscles and an eye (makeLessin); fight-or-flight
-// targets as the scene record's props (makeTargets); and runs, a plain one
+// targets as the scene record's props (makeTargets); a light task's light,
+// the scene record's point, 3 m away (makeLight); and runs, a plain one
 // (makeRun) and one of several stages (makeStagedRun).
 
 /** Quaternion [w, x, y, z] for `angle` radians about z. */
@@ -239,6 +240,22 @@ export function makeTargets() {
       { name: 'stack', shape: 'cylinder', size: [0.3, 0.1, 0.1], pose: [1, 1, 0.17, ...AXIS_UP], spin: 2, t: 0.5, color: '#e8590c' },
     ],
   };
+  return r;
+}
+
+/**
+ * The fixture replay (makeReplay, 2 s) with a light task's light: the scene
+ * record's point "light", 0.2 m across, placed as the task places it
+ * (light.distance and light.height, 3 m and 0.5 m by default): `distance`
+ * on the ground from the centre of mass at t = 0 (0.15, 0, 0.1) at `bearing`
+ * degrees from the creature's way (+x, counterclockwise), `height` above the
+ * ground.
+ */
+export function makeLight(bearing = 90, { distance = 3, height = 0.5 } = {}) {
+  const r = makeReplay();
+  const a = (bearing * Math.PI) / 180;
+  const p = [0.15 + distance * Math.cos(a), distance * Math.sin(a), height];
+  r.scene.record = { markers: [{ name: 'light on', t: 0 }], points: [{ name: 'light', p, size: 0.2, color: '#ffd200' }] };
   return r;
 }
 
