@@ -133,7 +133,10 @@ int cmd_show_run(WatchArgs a) {
   // shows its syllabus as a graph, each stage's curve on its own
   std::vector<PageStage> stages;
   for (const StageDef& st : syl->stages) {
-    stages.push_back({st.name, st.uses, st.group, st.cfg.sim});
+    // a reconciliation (General ESP) hangs off the skill it evolves again
+    std::vector<std::string> uses = st.uses;
+    if (!st.reconcile.empty()) uses.push_back(st.reconcile);
+    stages.push_back({st.name, uses, st.group, st.cfg.sim});
     if (Status s = set_seconds(stages.back().sim, a.flags.seconds); !s) return fail(s.error());
   }
   if (a.out.empty()) a.out = (fs::path(dir) / "view.html").string();
