@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include <csignal>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <ctime>
@@ -83,9 +84,24 @@ int finish(const std::string& dir, const Status& s) {
           if (!first) first = &g;
           last = &g;
         }
-        if (first)
-          std::printf("stage %zu %s: best fitness %.6g (its generation 0: %.6g)\n", k + 1, stages[k].name.c_str(),
-                      last->best, first->best);
+        if (!first) continue;
+        std::printf("stage %zu %s: best fitness %.6g (its generation 0: %.6g)", k + 1, stages[k].name.c_str(),
+                    last->best, first->best);
+        // a General ESP stage: how many of its children fell below a retest (scored 0)
+        bool retested = false;
+        for (const MetricStat& m : first->metrics) retested |= m.name.rfind(kRetestFailure, 0) == 0;
+        if (retested) {
+          const std::int64_t end = k + 1 < stages.size() ? stages[k + 1].first_id : INT64_MAX;
+          long born = 0, fell = 0;
+          for (std::int64_t id = stages[k].first_id; id < end; ++id) {
+            auto ind = (*store)->individual(id);
+            if (!ind) break;
+            ++born;
+            fell += failed_retest(*ind);
+          }
+          std::printf("; %ld of its %ld children fell below a retest", fell, born);
+        }
+        std::printf("\n");
       }
     } else if (!gens.empty()) {
       std::printf("best fitness %.6g (generation 0: %.6g)\n", gens.back().best, gens.front().best);

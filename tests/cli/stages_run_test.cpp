@@ -37,6 +37,36 @@ start = "population"
 seconds = 2
 )";
 
+// General ESP (a stage's retest_tolerance): the run's summary says how many
+// of the stage's children fell below a retest
+const char* kGeneral = R"(
+[genome]
+dialect = "lessin2015"
+[evolution]
+population = 4
+generations = 2
+[task]
+seconds = 1
+settle_timeout = 2
+drop_height = 0.01
+
+[[stage]]
+name = "forward"
+start = "file"
+file = "lessin_crawler"
+encapsulate = true
+
+[[stage]]
+name = "strike"
+retest_tolerance = 0.5
+[stage.task]
+kind = "strike"
+[stage.strike]
+seconds = 1
+settle_timeout = 2
+drop_height = 0.01
+)";
+
 class StagesRun : public bxtest::InTempDir {};
 
 TEST_F(StagesRun, EachStageIsRunAndReplayedOnItsOwnConfig) {
@@ -89,6 +119,20 @@ TEST_F(StagesRun, ABadStageIsRefusedWithItsNameAndKeyAndLeavesNothing) {
   EXPECT_EQ(bxtest::count_lines(r.err), 1) << r.err;
   EXPECT_NE(r.err.find("stage \"third\".uses: \"fourth\": no earlier stage has this name"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(run));
+}
+
+TEST_F(StagesRun, AGeneralStagesSummarySaysHowManyChildrenFellBelowARetest) {
+  const fs::path cfg = write("general.toml", kGeneral), run = dir / "g";
+  Outcome r = bestiary("run " + cfg.string() + " --workers 0 --quiet --out " + run.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::string fell =
+      bxtest::query(run / "run.sqlite", "SELECT count(*) FROM individual WHERE id >= 7 AND failure LIKE 'retest %'");
+  fell = fell.substr(0, fell.find('|'));
+  // the strike stage: 4, then 3 children of the one elite (ids 7-13); forward's has no retest
+  const std::size_t strike = r.out.find("stage 2 strike: best fitness");
+  ASSERT_NE(strike, std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("; " + fell + " of its 7 children fell below a retest\n", strike), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.substr(0, strike).find("fell below"), std::string::npos) << r.out;
 }
 
 }  // namespace
