@@ -92,13 +92,8 @@ int finish(const std::string& dir, const Status& s) {
         for (const MetricStat& m : first->metrics) retested |= m.name.rfind(kRetestFailure, 0) == 0;
         if (retested) {
           const std::int64_t end = k + 1 < stages.size() ? stages[k + 1].first_id : INT64_MAX;
-          long born = 0, fell = 0;
-          for (std::int64_t id = stages[k].first_id; id < end; ++id) {
-            auto ind = (*store)->individual(id);
-            if (!ind) break;
-            ++born;
-            fell += failed_retest(*ind);
-          }
+          const long fell = (*store)->count_failures(kRetestFailure, stages[k].first_id, end);
+          const long born = (*store)->count_failures("", stages[k].first_id, end);
           std::printf("; %ld of its %ld children fell below a retest", fell, born);
         }
         std::printf("\n");

@@ -123,12 +123,12 @@ Evolution::Child Evolution::mutant(const Individual& a, Rng& r) const {
     } else {
       for (int m = 0; m < evo_.asexual_mutations; ++m) c.genotype = ops_->mutate(*c.genotype, evo_.mutation_rate, r);
     }
-    if (tries >= evo_.max_regenerations || !copies_parent(c, *a.genotype, *a.genotype)) return c;
+    if (tries >= evo_.max_regenerations || !copies_parent(c, *a.genotype)) return c;
   }
 }
 
-bool Evolution::copies_parent(const Child& c, const Genotype& a, const Genotype& b) const {
-  return evo_.distinct_children && (c.genotype->equals(a) || c.genotype->equals(b));
+bool Evolution::copies_parent(const Child& c, const Genotype& a, const Genotype* b) const {
+  return evo_.distinct_children && (c.genotype->equals(a) || (b && b != &a && c.genotype->equals(*b)));
 }
 
 Evolution::Child Evolution::random_child(Rng& rng, long& rejected) const {
@@ -355,7 +355,7 @@ GenerationResult Evolution::generational(EvolutionState& s, Evaluator& eval) con
                 a.id, b.id, cross ? "crossover" : "graft"};
         if (r.chance(evo_.sexual_mutation_chance)) c.genotype = ops_->mutate(*c.genotype, evo_.sexual_rate, r);
         // a copy of a parent is made again, parents and operator drawn anew (distinct_children)
-        if (tries >= evo_.max_regenerations || !copies_parent(c, *a.genotype, *b.genotype)) return c;
+        if (tries >= evo_.max_regenerations || !copies_parent(c, *a.genotype, b.genotype.get())) return c;
       }
     };
     children.push_back(viable(make(rng), rng, rejected, make));
@@ -455,7 +455,7 @@ GenerationResult Evolution::steady_state(EvolutionState& s, Evaluator& eval) con
           Child c{cross ? ops_->crossover(*a.genotype, *b.genotype, r) : ops_->graft(*a.genotype, *b.genotype, r),
                   a.id, b.id, cross ? "crossover" : "graft"};
           c.genotype = ops_->mutate(*c.genotype, evo_.mutation_rate, r);
-          if (tries >= evo_.max_regenerations || !copies_parent(c, *a.genotype, *b.genotype)) return c;
+          if (tries >= evo_.max_regenerations || !copies_parent(c, *a.genotype, b.genotype.get())) return c;
         }
       };
       children.push_back(viable(make(rng), rng, rejected, make));

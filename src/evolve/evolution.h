@@ -166,9 +166,9 @@ class Evolution {
   };
   Child random_child(Rng& rng, long& rejected) const;
   Child mutant(const Individual& a, Rng& rng) const;
-  /// Whether `c` must be made again as a copy of parent `a` or `b`
-  /// (EvolutionDef::distinct_children).
-  bool copies_parent(const Child& c, const Genotype& a, const Genotype& b) const;
+  /// Whether `c` must be made again as a copy of parent `a` or `b` (none
+  /// for a mutant) (EvolutionDef::distinct_children).
+  bool copies_parent(const Child& c, const Genotype& a, const Genotype* b = nullptr) const;
   Child viable(Child c, Rng& rng, long& rejected, const std::function<Child(Rng&)>& remake) const;
   std::vector<Individual> evaluate(std::vector<Child> children, EvolutionState& s, Evaluator& eval,
                                    long& failed, MetricTally& tally) const;

@@ -545,11 +545,19 @@ struct GraphMutator {
     int owner = r.global_neurons && rng.chance(def.p_global_neuron)
                     ? -1
                     : static_cast<int>(rng.below(n_nodes()));
-    auto& list = owner < 0 ? g.global_neurons : g.nodes[owner].neurons;
-    list.push_back(nr);
+    place_neuron(owner, std::move(nr));
+  }
+
+  // `nr` appended to node `owner`'s neurons (-1: the global ones) with
+  // random inputs, as a new neuron gets them; its index there
+  int place_neuron(int owner, NeuronGene nr) {
+    auto list = [&]() -> std::vector<NeuronGene>& { return owner < 0 ? g.global_neurons : g.nodes[owner].neurons; };
+    list().push_back(nr);
+    const int k = static_cast<int>(list().size()) - 1;
     int count = new_input_count(g, nr, def, rng);
     std::vector<InputGene> ins = random_inputs(g, owner, count, def, rng);
-    (owner < 0 ? g.global_neurons : g.nodes[owner].neurons).back().inputs = std::move(ins);
+    list()[k].inputs = std::move(ins);
+    return k;
   }
 
   // a random neuron over all nodes and the global ones: (owner, index)
@@ -719,19 +727,21 @@ struct GraphMutator {
     return u.owner < 0 ? g.global_neurons[u.index].inputs : g.nodes[u.owner].neurons[u.index].inputs;
   }
 
-  // a units that may take one more input (wired_units, a neuron below its
-  // function's input limit)
+  // whether a unit may take one more input: an effector always, a neuron
+  // below its function's input limit
+  bool has_room(const UnitRef& u) const {
+    if (u.effector) return true;
+    const NeuronGene& nr = u.owner < 0 ? g.global_neurons[u.index] : g.nodes[u.owner].neurons[u.index];
+    int most = spec_of(g, nr)->max_inputs;
+    if (r.max_inputs_per_neuron > 0) most = std::min(most, r.max_inputs_per_neuron);
+    return static_cast<int>(nr.inputs.size()) < most;
+  }
+
+  // the units that may take one more input (wired_units with room)
   std::vector<UnitRef> open_units() {
     std::vector<UnitRef> out;
-    for (const UnitRef& u : wired_units()) {
-      if (!u.effector) {
-        const NeuronGene& nr = u.owner < 0 ? g.global_neurons[u.index] : g.nodes[u.owner].neurons[u.index];
-        int most = spec_of(g, nr)->max_inputs;
-        if (r.max_inputs_per_neuron > 0) most = std::min(most, r.max_inputs_per_neuron);
-        if (static_cast<int>(nr.inputs.size()) >= most) continue;
-      }
-      out.push_back(u);
-    }
+    for (const UnitRef& u : wired_units())
+      if (has_room(u)) out.push_back(u);
     return out;
   }
 
@@ -743,13 +753,7 @@ struct GraphMutator {
     std::vector<UnitRef> units = open_units();
     if (units.empty()) return false;
     const UnitRef u = units[rng.below(units.size())];
-    NeuronGene nr = random_neuron(g.dialect, def, rng);
-    auto& list = u.owner < 0 ? g.global_neurons : g.nodes[u.owner].neurons;
-    list.push_back(nr);
-    const int k = static_cast<int>(list.size()) - 1;
-    int count = new_input_count(g, nr, def, rng);
-    std::vector<InputGene> ins = random_inputs(g, u.owner, count, def, rng);
-    (u.owner < 0 ? g.global_neurons : g.nodes[u.owner].neurons)[k].inputs = std::move(ins);
+    const int k = place_neuron(u.owner, random_neuron(g.dialect, def, rng));
     Range wb = weight_bounds(def, g.dialect);
     InputGene in;
     in.place = u.owner < 0 ? SourcePlace::Global : SourcePlace::Self;
@@ -764,12 +768,7 @@ struct GraphMutator {
     std::vector<UnitRef> units = wired_units();
     if (units.empty()) return;
     const UnitRef u = units[rng.below(units.size())];
-    if (!u.effector) {
-      const NeuronGene& nr = u.owner < 0 ? g.global_neurons[u.index] : g.nodes[u.owner].neurons[u.index];
-      int most = spec_of(g, nr)->max_inputs;
-      if (r.max_inputs_per_neuron > 0) most = std::min(most, r.max_inputs_per_neuron);
-      if (static_cast<int>(nr.inputs.size()) >= most) return;
-    }
+    if (!has_room(u)) return;
     InputGene in;
     if (random_input(g, u.owner, def, rng, in)) inputs_of(u).push_back(in);
   }

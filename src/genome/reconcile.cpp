@@ -1,7 +1,6 @@
 #include "genome/reconcile.h"
 
 #include <algorithm>
-#include <functional>
 #include <vector>
 
 namespace bx {
@@ -10,13 +9,14 @@ namespace {
 
 // calls f on every input gated by switch `gate`, in genome order: the nodes'
 // effectors, then the global neurons (the switches of the skills it drives)
-void each_wire(Genome& g, int gate, const std::function<void(InputGene&)>& f) {
-  for (NodeGene& n : g.nodes)
-    for (EffectorGene& ef : n.effectors)
-      for (InputGene& in : ef.inputs)
+template <class G, class F>
+void each_wire(G& g, int gate, F f) {
+  for (auto& n : g.nodes)
+    for (auto& ef : n.effectors)
+      for (auto& in : ef.inputs)
         if (in.gate == gate) f(in);
-  for (NeuronGene& nr : g.global_neurons)
-    for (InputGene& in : nr.inputs)
+  for (auto& nr : g.global_neurons)
+    for (auto& in : nr.inputs)
       if (in.gate == gate) f(in);
 }
 
@@ -32,8 +32,7 @@ int skill_wire_count(const Genome& g, std::string_view skill) {
   const int gate = skill_switch(g, skill);
   if (gate < 0) return 0;
   int n = 0;
-  Genome copy = g;
-  each_wire(copy, gate, [&](InputGene&) { ++n; });
+  each_wire(g, gate, [&](const InputGene&) { ++n; });
   return n;
 }
 
@@ -47,11 +46,11 @@ void mutate_skill_wires(Genome& g, std::string_view skill, const OperatorDef& de
 }
 
 Genome cross_skill_wires(const Genome& a, const Genome& b, std::string_view skill, Rng& rng) {
-  Genome child = a, other = b;
+  Genome child = a;
   const int gate = skill_switch(a, skill);
   if (gate < 0 || gate != skill_switch(b, skill)) return child;
   std::vector<double> theirs;
-  each_wire(other, gate, [&](InputGene& in) { theirs.push_back(in.weight); });
+  each_wire(b, gate, [&](const InputGene& in) { theirs.push_back(in.weight); });
   if (static_cast<int>(theirs.size()) != skill_wire_count(a, skill)) return child;
   std::size_t k = 0;
   each_wire(child, gate, [&](InputGene& in) {

@@ -394,6 +394,15 @@ std::vector<GenerationStats> RunStore::generations() const {
   return out;
 }
 
+long RunStore::count_failures(std::string_view prefix, std::int64_t from, std::int64_t to) const {
+  Stmt s(db_, "SELECT count(*) FROM individual WHERE id >= ? AND id < ? AND substr(failure, 1, ?) = ?");
+  s.bind(1, from);
+  s.bind(2, to);
+  s.bind(3, static_cast<std::int64_t>(prefix.size()));
+  s.bind(4, std::string(prefix));
+  return s.step() == SQLITE_ROW ? static_cast<long>(s.i64(0)) : 0;
+}
+
 Result<Individual> RunStore::individual(std::int64_t id) const {
   const std::string sql = std::string("SELECT id, gen, genome, fitness, distance, parent1, parent2, operator, failure, ") +
                           (seed_column_ ? "seed" : "''") + ", " + (kind_column_ ? "kind" : "'graph'") + ", " +

@@ -10,6 +10,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/result.h"
@@ -66,6 +67,10 @@ class RunStore {
   /// One individual by id; an error says it is missing, or names the field
   /// that does not read as its type.
   Result<Individual> individual(std::int64_t id) const;
+  /// How many individuals with ids in [from, to) have a failure that starts
+  /// with `prefix` (a General ESP stage's children below a retest), counted
+  /// without reading their genomes.
+  long count_failures(std::string_view prefix, std::int64_t from, std::int64_t to) const;
   /// The fittest of the generations' bests so far (an error before any
   /// generation finished, or naming a best that does not read).
   Result<Individual> best_individual() const;

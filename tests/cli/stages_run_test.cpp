@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <string>
 
+#include "support/general_esp.h"
 #include "support/run_command.h"
 
 namespace {
@@ -35,36 +36,6 @@ name = "long"
 start = "population"
 [stage.task]
 seconds = 2
-)";
-
-// General ESP (a stage's retest_tolerance): the run's summary says how many
-// of the stage's children fell below a retest
-const char* kGeneral = R"(
-[genome]
-dialect = "lessin2015"
-[evolution]
-population = 4
-generations = 2
-[task]
-seconds = 1
-settle_timeout = 2
-drop_height = 0.01
-
-[[stage]]
-name = "forward"
-start = "file"
-file = "lessin_crawler"
-encapsulate = true
-
-[[stage]]
-name = "strike"
-retest_tolerance = 0.5
-[stage.task]
-kind = "strike"
-[stage.strike]
-seconds = 1
-settle_timeout = 2
-drop_height = 0.01
 )";
 
 class StagesRun : public bxtest::InTempDir {};
@@ -122,7 +93,7 @@ TEST_F(StagesRun, ABadStageIsRefusedWithItsNameAndKeyAndLeavesNothing) {
 }
 
 TEST_F(StagesRun, AGeneralStagesSummarySaysHowManyChildrenFellBelowARetest) {
-  const fs::path cfg = write("general.toml", kGeneral), run = dir / "g";
+  const fs::path cfg = write("general.toml", bxtest::general_syllabus()), run = dir / "g";
   Outcome r = bestiary("run " + cfg.string() + " --workers 0 --quiet --out " + run.string());
   ASSERT_EQ(r.code, 0) << r.err;
   std::string fell =

@@ -18,6 +18,7 @@
 #include "core/files.h"
 #include "core/text.h"
 #include "support/creatures.h"
+#include "support/general_esp.h"
 #include "io/run_store.h"
 #include "run/run.h"
 #include "support/run_command.h"
@@ -442,38 +443,10 @@ TEST_F(Stages, ARunOfStagesIsNotLengthened) {
   EXPECT_NE(s.error().find("cannot be lengthened"), std::string::npos) << s.error();
 }
 
-// an evaluator's task table: a batch that mixes tasks gives each job its own
-// task's evaluation, in this process and in workers
 // General ESP (lessin2015 VI, Algorithm 1): a strike learned on a body that
 // may change, each child retested on the crawler's encapsulated forward
 // locomotion, run alone
-const char* kGeneral = R"(
-[genome]
-dialect = "lessin2015"
-[evolution]
-population = 4
-generations = 2
-[task]
-seconds = 1
-settle_timeout = 2
-drop_height = 0.01
-
-[[stage]]
-name = "forward"
-start = "file"
-file = "lessin_crawler"
-encapsulate = true
-
-[[stage]]
-name = "strike"
-retest_tolerance = 0.5
-[stage.task]
-kind = "strike"
-[stage.strike]
-seconds = 1
-settle_timeout = 2
-drop_height = 0.01
-)";
+const std::string kGeneral = bxtest::general_syllabus();
 
 TEST(Syllabus, AGeneralStageRetestsEachLeafSkillAloneOnItsOwnRow) {
   auto syl = read_syllabus(kGeneral, "g.toml");
@@ -555,21 +528,11 @@ TEST_F(Stages, AGeneralStageScoresZeroBelowARetestAndResumesTheSame) {
 // Algorithm 2 after Algorithm 1: forward's wires reconciled to the body
 // the strike stage left, then a second strike stage that retests forward
 // against what its reconciliation ended with
-const std::string kReconcile = std::string(kGeneral) + R"(
+const std::string kReconcile = kGeneral + R"(
 [[stage]]
 name = "forward again"
 reconcile = "forward"
-
-[[stage]]
-name = "strike again"
-retest_tolerance = 0.5
-[stage.task]
-kind = "strike"
-[stage.strike]
-seconds = 1
-settle_timeout = 2
-drop_height = 0.01
-)";
+)" + bxtest::general_strike_stage("strike again");
 
 TEST(Syllabus, AReconcilingStageRunsItsSkillAloneOnItsOwnTaskAndIsCheckedByName) {
   auto syl = read_syllabus(kReconcile, "r.toml");
@@ -583,7 +546,7 @@ TEST(Syllabus, AReconcilingStageRunsItsSkillAloneOnItsOwnTaskAndIsCheckedByName)
   EXPECT_EQ(*read_syllabus(syllabus_to_toml(*syl), "resolved"), *syl);
   EXPECT_EQ(syl->learned_in(0, 3), 2);  // forward's level: its reconciliation's
   EXPECT_EQ(syl->learned_in(0, 2), 0);
-  const std::string two = std::string(kGeneral) + "\n[[stage]]\nname = \"r\"\n";
+  const std::string two = kGeneral + "\n[[stage]]\nname = \"r\"\n";
   EXPECT_EQ(error_of(two + "reconcile = \"walk\"\n"),
             "s.toml: stage \"r\".reconcile: \"walk\": no earlier stage has this name");
   EXPECT_EQ(error_of(two + "reconcile = \"strike\"\n"),
@@ -666,6 +629,8 @@ TEST_F(Stages, AReconcilingStageChangesOnlyItsSkillsWiresAndSetsItsNewLevel) {
   }
 }
 
+// an evaluator's task table: a batch that mixes tasks gives each job its own
+// task's evaluation, in this process and in workers
 TEST(TaskTable, AJobIsEvaluatedOnItsOwnTask) {
   auto s = read_syllabus(kStaged, "s.toml");
   ASSERT_TRUE(s.ok()) << s.error();
