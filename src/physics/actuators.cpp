@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "physics/world_impl.h"
@@ -72,6 +73,15 @@ void World::Impl::set_muscle(std::size_t k, double kp, double kd) {
   dJointEnable(mj);
   dJointSetDBallParam(mj, dParamERP, h * kp / both);
   dJointSetDBallParam(mj, dParamCFM, 1 / both);
+}
+
+void World::Impl::set_muscle_length(std::size_t k, double length) { dJointSetDBallDistance(muscles[k], length); }
+
+double World::Impl::muscle_length(std::size_t k) const {
+  dVector3 a, b;
+  dJointGetDBallAnchor1(muscles[k], a);
+  dJointGetDBallAnchor2(muscles[k], b);
+  return norm(vec(a) - vec(b));
 }
 
 const World::Impl::GainRow& World::Impl::gain(MotorModel model) {
@@ -142,12 +152,22 @@ const World::Impl::GainRow& World::Impl::gain(MotorModel model) {
       {MotorModel::Muscle, false,
        [](Impl& w, const Actuation& a) {
          const auto k = static_cast<std::size_t>(a.em.muscle);
+         if (!std::isnan(w.muscle_hold[k])) {  // released: back to its rest length
+           w.muscle_hold[k] = std::numeric_limits<double>::quiet_NaN();
+           w.set_muscle_length(k, a.m.muscles[k].rest_length);
+         }
          w.set_muscle(k, std::clamp(a.s, 0.0, 1.0) * a.m.muscles[k].strength, a.motor.muscle_damping);
          return false;
        },
-       // held: a share of its full stiffness
+       // held where it was when the brake began (as a joint's brake holds its
+       // speed at 0), with a share of its full stiffness: not pulled to its
+       // rest length, which would be a full contraction
        [](Impl& w, const Actuation& a) {
          const auto k = static_cast<std::size_t>(a.em.muscle);
+         if (std::isnan(w.muscle_hold[k])) {
+           w.muscle_hold[k] = w.muscle_length(k);
+           w.set_muscle_length(k, w.muscle_hold[k]);
+         }
          w.set_muscle(k, a.s * a.m.muscles[k].strength, a.motor.muscle_damping);
        }},
   };

@@ -72,11 +72,7 @@ const World::Impl::SensorRow& World::Impl::sensor(SensorType type) {
          const MuscleModel& mm = m.muscles[s.muscle];
          const double unit = mm.length > 0 ? mm.length : mm.rest_length;
          if (!(unit > 0)) return 0.0;
-         dVector3 a, b;
-         dJointGetDBallAnchor1(w.muscles[s.muscle], a);
-         dJointGetDBallAnchor2(w.muscles[s.muscle], b);
-         const double length = norm(vec(a) - vec(b));
-         return std::clamp(length / (2 * unit), 0.0, 1.0);
+         return std::clamp(w.muscle_length(static_cast<std::size_t>(s.muscle)) / (2 * unit), 0.0, 1.0);
        }},
   };
   const SensorRow& row = rows[static_cast<std::size_t>(type)];

@@ -9,6 +9,7 @@
 #include <atomic>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <string>
 
 #include "physics/world_impl.h"
@@ -141,6 +142,7 @@ void World::add_creature(const CreatureModel& m, const Pose& placement) {
   // an effector activates them (MotorModel::Muscle)
   w.muscles.clear();
   w.muscle_feedback.assign(m.muscles.size(), dJointFeedback{});
+  w.muscle_hold.assign(m.muscles.size(), std::numeric_limits<double>::quiet_NaN());
   w.muscle_work = 0;
   for (const MuscleModel& mm : m.muscles) {
     dJointID mj = dJointCreateDBall(w.world, nullptr);

@@ -264,8 +264,15 @@ struct World::Impl {
   double muscle_work = 0;
   // adds the last step's muscle work (after each step)
   void meter_muscles();
+  // the length (m) each braked muscle is held at: its anchors' distance when
+  // the brake began; NaN while it is driven (World::brake_effectors)
+  std::vector<double> muscle_hold;
   // sets muscle k's spring (N/m) and damper (N s/m) for the coming step
   void set_muscle(std::size_t k, double kp, double kd);
+  // muscle k pulls towards `length` (m) from the coming step
+  void set_muscle_length(std::size_t k, double length);
+  // its anchors' distance now (m)
+  double muscle_length(std::size_t k) const;
   static const GainRow& gain(MotorModel m);
 
   // sensors.cpp: the sensor table, one row per kind of sensor: what it

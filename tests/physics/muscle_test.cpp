@@ -137,17 +137,67 @@ TEST(Muscle, ActiveItHoldsALimbUpAgainstGravitySilentTheLimbFalls) {
   EXPECT_LT(half.speed, 1e-3);
 }
 
-TEST(Muscle, ABrakeHoldsItAtAShareOfItsStrength) {
+TEST(Muscle, ABrakeHoldsItWhereItWasThenReleasedItPullsToItsRestLength) {
+  // stretched 0.1 m past its rest length: braked, it holds that length (no
+  // force, where the old brake pulled it to its rest length: a contraction);
+  // driven again, it pulls by the implicit spring law from where it is
   PhysicsDef def;
   def.gravity = 0;
   def.dt = 0.001;
   World w(def);
   CreatureModel cm = pair(2, 0.5, 0.6, 0.5, 400);
   w.add_creature(cm, {{0, 0, 0}, Mat3::identity()});
-  w.brake_effectors(cm, muscles(0), 0.5);
+  for (int i = 0; i < 100; ++i) {
+    w.brake_effectors(cm, muscles(0), 0.5);
+    w.step();
+  }
+  EXPECT_NEAR(w.part_velocity(0).x - w.part_velocity(1).x, 0, 1e-12);
+  EXPECT_NEAR(w.part_pose(1).p.x - w.part_pose(0).p.x, 0.6, 1e-9);
+  const double full[1] = {1};
+  w.apply_effectors(cm, muscles(0), full);
   w.step();
-  const double mu = 2 * 0.5 / 2.5, kp = 200, h = 0.001;
+  const double mu = 2 * 0.5 / 2.5, kp = 400, h = 0.001;
   EXPECT_NEAR(w.part_velocity(0).x - w.part_velocity(1).x, h * kp * 0.1 / (mu + h * h * kp), 1e-9);
+}
+
+TEST(Muscle, ABrakeHoldsADroopingLimbAtItsAngleNotAtItsRestLength) {
+  // hold()'s limb, silent for 0.3 s (it droops), then braked with all its
+  // strength: it stays where it drooped to, within the sag of its spring;
+  // pulling to its rest length (its built length) would lift it back to 0
+  PhysicsDef def;
+  def.dt = 0.005;
+  World w(def);
+  CreatureModel cm;
+  cm.parts = {box_part({0.2, 0.2, 0.8}, 5, {0, 0, 1}), box_part({0.6, 0.1, 0.1}, 0.5, {0.4, 0, 1.05})};
+  cm.parts[1].parent = 0;
+  JointModel j;
+  j.type = JointType::Hinge;
+  j.parent = 0;
+  j.child = 1;
+  j.anchor = {0.1, 0, 1.05};
+  j.axis1 = {0, 1, 0};
+  cm.joints.push_back(j);
+  const Vec3 top{0.1, 0, 1.4}, tip{0.7, 0, 1.1};
+  cm.muscles.push_back({0, 1, top, tip, 2000, norm(tip - top)});
+  EffectorModel e;
+  e.muscle = 0;
+  cm.effectors.push_back(e);
+  w.add_creature(cm, {{0, 0, 0}, Mat3::identity()});
+  w.fix_part_to_world(0);
+  const double silent[1] = {0};
+  while (w.time() < 0.3) {
+    w.apply_effectors(cm, muscles(20), silent);
+    w.step();
+  }
+  const double drooped = std::abs(w.joint_position(0, 0));
+  ASSERT_GT(drooped, 0.2);
+  while (w.time() < 3.3) {
+    w.brake_effectors(cm, muscles(20), 1);
+    w.step();
+  }
+  // the drooping limb's swing is caught within a few of the active sag (0.0075 rad)
+  EXPECT_NEAR(std::abs(w.joint_position(0, 0)), drooped, 0.1);
+  EXPECT_LT(std::abs(w.joint_rate(0, 0)), 1e-2);
 }
 
 }  // namespace
