@@ -42,6 +42,10 @@ For a lessin2015 locomotion run also its best's speed (the scored one: the
 lesser of the measured time's halves, task.windows), efficiency and muscle
 work over the measured time (the task's named metrics).
 
+For a run of several stages (an ESP syllabus) instead: per stage, its
+generations, its best in its first and last generation, and `bestiary check`
+of that last best on its own stage's task.
+
 For a river crossing run (Stanton & Channon 2015) instead of distances: its
 tournaments, best fitness, and per level the share of its final 1000
 tournaments' evaluations that completed the level (the generation_metric
@@ -51,7 +55,7 @@ RUN/levels.svg); then over all its seeds the paper's Table 1: per level, the
 share of runs with more than 0% and at least 20/40/60/80% of those
 evaluations completing it, beside the paper's.
 """
-import argparse, json, math, os, re, sqlite3, subprocess, sys, tempfile
+import argparse, json, math, os, re, sqlite3, subprocess, sys, tempfile, tomllib
 
 # $BESTIARY overrides (e.g. a frozen copy while the build tree changes)
 BESTIARY = os.environ.get("BESTIARY") or os.path.join(
@@ -67,11 +71,22 @@ def seeds(spec):
     return range(int(a), int(b or a) + 1)
 
 
+def stages(run_dir):
+    """A run of several stages (a syllabus): [(name, generations)] in order;
+    [] for a run of one."""
+    cfg = tomllib.loads(open(os.path.join(run_dir, "config.toml")).read())
+    gens = cfg.get("evolution", {}).get("generations", 0)
+    return [(st["name"], st.get("evolution", {}).get("generations", gens)) for st in cfg.get("stage", [])]
+
+
 def finished(run_dir):
     db = os.path.join(run_dir, "run.sqlite")
     if not os.path.exists(db):
         return False
     con = sqlite3.connect(db)
+    if stages(run_dir):
+        n = con.execute("select count(*) from generation").fetchone()[0]
+        return n >= sum(g for _, g in stages(run_dir))
     cfg = dict(con.execute("select key, value from run"))["config"]
     n = con.execute("select count(*), max(evaluations) from generation").fetchone()
     alg = re.search(r'^algorithm = "(\w+)"', cfg, re.M).group(1)
@@ -136,6 +151,30 @@ def check_row(preset, seed, run_dir, check_set=()):
             f"{cell('dt/4')} | {cell('lag')} | {cell('half rate')} | {cell('clamped')} | {cell('held')} | "
             f"{sustained} | {len(active)}/{len(c['effector_sd'])} | {hz or '-'} | {100 * c['max_joint_gap']:.1f} | "
             f"{verdict} |")
+
+
+def stage_rows(preset, seed, run_dir, check_set=()):
+    """A syllabus run, a row per stage: its generations, its best in its
+    first and last generation, and `bestiary check` of that last best (its
+    stage's task and config)."""
+    con = sqlite3.connect(os.path.join(run_dir, "run.sqlite"))
+    firsts = [g for (g,) in con.execute("select first_gen from stage order by idx")]
+    out = []
+    for k, (name, gens) in enumerate(stages(run_dir)):
+        if k >= len(firsts):
+            break
+        g0 = firsts[k]
+        g1 = firsts[k + 1] - 1 if k + 1 < len(firsts) else con.execute("select max(gen) from generation").fetchone()[0]
+        b0 = con.execute("select best from generation where gen = ?", (g0,)).fetchone()[0]
+        b1, best_id = con.execute("select best, best_id from generation where gen = ?", (g1,)).fetchone()
+        r = sh(["check", f"{run_dir}:{best_id}", "--json"] + [x for kv in check_set for x in ("--set", kv)])
+        if r.returncode not in (0, 1):
+            sys.exit(r.stderr)
+        c = json.loads(r.stdout)
+        verdict = "pass" if c["passed"] else "FAIL: " + "; ".join(c["failures"])
+        out.append(f"| {preset} | {seed} | {k + 1} {name} | {g1 - g0 + 1} | {b0:.4g} | {b1:.4g} | {best_id} | "
+                   f"{c['median_other_seeds']:.2f} | {verdict} |")
+    return out
 
 
 def is_river(run_dir):
@@ -355,7 +394,7 @@ def main():
                     help="a [check] key for `bestiary check` (repeatable), e.g. check.converge_seeds=5 "
                          "for runs made before their preset set it")
     a = ap.parse_args()
-    rows, throws, checks, rivers, speeds = [], [], [], [], []
+    rows, throws, checks, rivers, speeds, syllabus = [], [], [], [], [], []
     for spec in a.runs:
         preset, _, s = spec.partition(":")
         for seed in seeds(s or "1"):
@@ -367,6 +406,10 @@ def main():
                 r = sh(args + ["--workers", a.workers, "--quiet"])
                 if r.returncode != 0:
                     sys.exit(r.stderr)
+            if stages(run_dir):
+                syllabus.extend(stage_rows(preset, seed, run_dir, a.check_set))
+                print("\n".join(syllabus[-len(stages(run_dir)):]), flush=True)
+                continue
             checks.append(check_row(preset, seed, run_dir, a.check_set))
             print(checks[-1], flush=True)
             if is_river(run_dir):
@@ -399,6 +442,11 @@ def main():
               "| their frequencies (Hz) | largest joint gap (cm) | check |")
         print("|" + "---|" * 15)
         print("\n".join(checks))
+    if syllabus:
+        print("\n| preset | seed | stage | generations | best, first generation | best, last | its id "
+              "| other seeds (median) | check |")
+        print("|" + "---|" * 9)
+        print("\n".join(syllabus))
     if rivers:
         print(river_tables(rivers))
     if not rows:
