@@ -15,6 +15,7 @@
 #include "cli/creature.h"
 #include "core/files.h"
 #include "eval/check.h"
+#include "genome/json_text.h"
 #include "run/run.h"
 #include "io/config.h"
 #include "io/run_store.h"
@@ -85,7 +86,7 @@ int cmd_check(const CheckArgs& a) {
     out["failures"] = rep.failures;
     out["notes"] = rep.notes;
     if (rep.clamped_end_travel >= 0) out["clamped_end_travel"] = rep.clamped_end_travel;
-    std::printf("%s\n", out.dump().c_str());
+    std::printf("%s\n", json_text(out).c_str());
     return rep.passed() ? 0 : 1;
   }
 

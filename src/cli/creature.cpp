@@ -13,6 +13,7 @@
 #include "cli/commands.h"
 #include "core/files.h"
 #include "core/hash.h"
+#include "core/text.h"
 #include "run/run.h"
 #include "genome/dialect.h"
 #include "genome/float_vector.h"
@@ -138,7 +139,7 @@ Result<Subject> from_run(const RunTarget& t, const CreatureFlags& f) {
   if (syl->staged()) {
     auto plain = read_syllabus(*text, source);
     if (!plain) return Error{plain.error()};
-    c.run_config_text = "# Stage \"" + stage.name + "\" of the run " + t.dir + "\n" +
+    c.run_config_text = "# Stage \"" + one_line(stage.name) + "\" of the run " + one_line(utf8_text(t.dir)) + "\n" +
                         config_to_toml(plain->stages[stage.index].cfg);
   }
   c.stored_fitness = ind->fitness;

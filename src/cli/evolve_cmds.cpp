@@ -2,6 +2,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <csignal>
 #include <cstdint>
 #include <cstdio>
@@ -144,7 +145,10 @@ int cmd_run(const RunArgs& a) {
   if (!a.quiet) std::printf("run %s: %s%s, seed %llu, %d workers -> %s\n", src->first.c_str(), what.c_str(),
                             stages.c_str(), static_cast<unsigned long long>(a.seed), a.workers, dir.c_str());
   catch_interrupts(dir);
-  return finish(dir, drive_run(dir, {a.workers, a.quiet, a.stop_after}));
+  const Status s = drive_run(dir, {a.workers, a.quiet, a.stop_after});
+  // refused before a generation was stored: it leaves nothing, as a run refused before it began
+  if (!s) discard_unstarted_run(dir);
+  return finish(dir, s);
 }
 
 int cmd_resume(const std::string& dir, int workers, bool quiet, const std::vector<std::string>& set) {
@@ -229,11 +233,16 @@ int cmd_presets() {
                              : grouped(e.population) + ", " + grouped(e.evaluations) +
                                    (e.tournament_evaluates == TournamentEvaluates::All ? " tournaments" : " evaluations");
     if (syl->staged()) {
-      // the first stage's population over every stage's generations
+      // the stages' populations (their range, when they differ) over every stage's generations
       long generations = 0;
-      for (const StageDef& st : syl->stages) generations += total_generations(st.cfg.evolution);
-      budget = grouped(e.population) + " x " + grouped(generations) + " generations in " +
-               std::to_string(syl->stages.size()) + " stages";
+      int least = e.population, most = e.population;
+      for (const StageDef& st : syl->stages) {
+        generations += total_generations(st.cfg.evolution);
+        least = std::min(least, st.cfg.evolution.population);
+        most = std::max(most, st.cfg.evolution.population);
+      }
+      budget = grouped(least) + (most > least ? "-" + grouped(most) : "") + " x " + grouped(generations) +
+               " generations in " + std::to_string(syl->stages.size()) + " stages";
     }
     rows.push_back({p.name, paper_of(cfg), budget, preset_time(p), preset_summary(p)});
   }

@@ -16,6 +16,7 @@
 #include "eval/task_table.h"
 #include "eval/evaluator.h"
 #include "genome/dialect.h"
+#include "genome/json_text.h"
 #include "io/config.h"
 #include "io/replay_file.h"
 #include "task/throwing.h"
@@ -70,7 +71,7 @@ int simulate_without_body(const Subject& c, const SimulateArgs& a) {
     }
     out["warnings"] = res.warnings;
     out["replay"] = nullptr;
-    std::printf("%s\n", out.dump().c_str());
+    std::printf("%s\n", json_text(out).c_str());
     return 0;
   }
   if (!o.viable) {
@@ -124,7 +125,7 @@ int cmd_simulate(const SimulateArgs& a) {
     out["distance"] = 0.0;
     out["warnings"] = nlohmann::json::array();
     if (a.json)
-      std::printf("%s\n", out.dump().c_str());
+      std::printf("%s\n", json_text(out).c_str());
     else
       std::printf("%s: not viable: %s\n", creature->label.c_str(), dev.error().c_str());
     return 0;
@@ -184,7 +185,7 @@ int cmd_simulate(const SimulateArgs& a) {
     }
     out["warnings"] = res.warnings;
     out["replay"] = a.replay.empty() ? nlohmann::json(nullptr) : nlohmann::json(a.replay);
-    std::printf("%s\n", out.dump().c_str());
+    std::printf("%s\n", json_text(out).c_str());
     return 0;
   }
   if (creature->graph_genome())

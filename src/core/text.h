@@ -1,5 +1,5 @@
 // Small text helpers for messages: "did you mean" suggestions, user text
-// quoted on one line.
+// quoted on one line, any bytes (a path) as UTF-8 text.
 #pragma once
 
 #include <algorithm>
@@ -69,6 +69,59 @@ inline std::string one_line(std::string_view text, std::size_t max_chars = 0) {
     }
   }
   if (max_chars > 3 && out.size() > max_chars) out = out.substr(0, max_chars - 3) + "...";
+  return out;
+}
+
+/// The length of the well-formed UTF-8 sequence that starts `text` (1 to 4
+/// bytes), or 0 if none does: a stray continuation byte, an overlong form, a
+/// surrogate, past U+10FFFF, or cut short.
+inline std::size_t utf8_sequence(std::string_view text) {
+  if (text.empty()) return 0;
+  auto byte = [&](std::size_t i) { return i < text.size() ? static_cast<unsigned char>(text[i]) : 0u; };
+  const unsigned c = byte(0);
+  if (c < 0x80) return 1;
+  // the length a lead byte announces, and the range of the byte after it
+  // (narrowed where the sequence would be overlong, a surrogate or past U+10FFFF)
+  std::size_t n = 0;
+  unsigned lo = 0x80, hi = 0xbf;
+  if (c >= 0xc2 && c <= 0xdf) {
+    n = 2;
+  } else if (c >= 0xe0 && c <= 0xef) {
+    n = 3;
+    if (c == 0xe0) lo = 0xa0;
+    if (c == 0xed) hi = 0x9f;
+  } else if (c >= 0xf0 && c <= 0xf4) {
+    n = 4;
+    if (c == 0xf0) lo = 0x90;
+    if (c == 0xf4) hi = 0x8f;
+  } else {
+    return 0;
+  }
+  for (std::size_t i = 1; i < n; ++i, lo = 0x80, hi = 0xbf)
+    if (byte(i) < lo || byte(i) > hi) return 0;
+  return n;
+}
+
+/// `bytes` (a path or a name as the user gave it: any bytes) as UTF-8 text,
+/// which JSON, TOML and the viewer's pages must hold: each byte that is not
+/// part of a well-formed UTF-8 sequence is written as \xNN (as one_line
+/// writes control characters), the rest as it is. The text still names the
+/// file ("run\xff"), and writing it cannot fail.
+inline std::string utf8_text(std::string_view bytes) {
+  std::string out;
+  out.reserve(bytes.size());
+  for (std::size_t i = 0; i < bytes.size();) {
+    if (std::size_t n = utf8_sequence(bytes.substr(i))) {
+      out.append(bytes.substr(i, n));
+      i += n;
+      continue;
+    }
+    const char* hex = "0123456789abcdef";
+    const auto c = static_cast<unsigned char>(bytes[i++]);
+    out += "\\x";
+    out += hex[c >> 4];
+    out += hex[c & 15];
+  }
   return out;
 }
 

@@ -66,9 +66,12 @@ std::unique_ptr<Genotype> GraphOps::graft(const Genotype& trunk, const Genotype&
   return wrap(bx::graft(genome_of(trunk), genome_of(branch), ops_, rng));
 }
 
-bool GraphOps::viable(const Genotype& g) const {
+Status GraphOps::viable(const Genotype& g) const {
   const Genome& genome = genome_of(g);
-  return validate(genome).ok() && develop(genome, develop_).viable();
+  if (Status s = validate(genome); !s) return s;
+  const Development d = develop(genome, develop_);
+  if (!d.viable()) return Error{d.reason};
+  return Ok{};
 }
 
 Result<std::unique_ptr<Genotype>> GraphOps::from_json(const nlohmann::json& j) const {

@@ -20,7 +20,7 @@ class GraphOps : public GenotypeOps {
   std::unique_ptr<Genotype> random(Rng& rng) const override;
   std::unique_ptr<Genotype> mutate(const Genotype& g, double rate, Rng& rng) const override;
   std::unique_ptr<Genotype> crossover(const Genotype& a, const Genotype& b, Rng& rng) const override;
-  bool viable(const Genotype& g) const override;
+  Status viable(const Genotype& g) const override;
   bool can_graft() const override { return true; }
   std::unique_ptr<Genotype> graft(const Genotype& trunk, const Genotype& branch, Rng& rng) const override;
   /// The genome file's form; the genome must be of this dialect.

@@ -105,11 +105,17 @@ std::uint64_t evaluation_seed(std::uint64_t seed, std::int64_t id) {
 std::uint64_t Evolution::eval_seed(std::int64_t id) const { return evaluation_seed(seed_, id); }
 
 // redraws a non-viable child until it is viable; past the limit, a random genome
-Evolution::Child Evolution::viable(Child c, Rng& rng, long& rejected,
-                                   const std::function<Child(Rng&)>& remake) const {
+Result<Evolution::Child> Evolution::viable(Child c, Rng& rng, long& rejected,
+                                           const std::function<Child(Rng&)>& remake) const {
   for (int tries = 0; !ops_->viable(*c.genotype); ++tries) {
     ++rejected;
-    c = tries < evo_.max_regenerations ? remake(rng) : random_child(rng, rejected);
+    if (tries < evo_.max_regenerations) {
+      c = remake(rng);
+      continue;
+    }
+    auto r = random_child(rng, rejected);
+    if (!r) return r;
+    c = std::move(*r);
   }
   return c;
 }
@@ -131,13 +137,29 @@ bool Evolution::copies_parent(const Child& c, const Genotype& a, const Genotype*
   return evo_.distinct_children && (c.genotype->equals(a) || (b && b != &a && c.genotype->equals(*b)));
 }
 
-Evolution::Child Evolution::random_child(Rng& rng, long& rejected) const {
-  // random genomes are redrawn until viable, without a limit
-  for (;;) {
+Result<Evolution::Child> Evolution::random_child(Rng& rng, long& rejected) const {
+  // random genomes are redrawn until viable, up to max_random_redraws in a
+  // row: past it, none may ever be (a config that no body meets), and the
+  // reason most of them gave says why (reasons alike but for their numbers
+  // counted as one)
+  std::map<std::string, std::pair<long, std::string>> reasons;
+  const int bound = std::max(1, evo_.max_random_redraws);
+  for (int draws = 0; draws < bound; ++draws) {
     Child c{ops_->random(rng), -1, -1, "random"};
-    if (ops_->viable(*c.genotype)) return c;
+    const Status v = ops_->viable(*c.genotype);
+    if (v) return c;
     ++rejected;
+    std::string words;
+    for (char ch : v.error())
+      if (ch < '0' || ch > '9') words += ch;
+    auto& [n, example] = reasons[words];
+    if (n++ == 0) example = v.error();
   }
+  const auto most = std::max_element(reasons.begin(), reasons.end(),
+                                     [](const auto& x, const auto& y) { return x.second.first < y.second.first; });
+  return Error{"no creature is viable: " + std::to_string(bound) +
+               " random genotypes in a row were not (evolution.max_random_redraws); " +
+               std::to_string(most->second.first) + " of them: " + one_line(most->second.second, 300)};
 }
 
 // a child given its id, generation and seed, not yet evaluated
@@ -295,27 +317,31 @@ GenerationStats Evolution::stats(const EvolutionState& s) const {
   return st;
 }
 
-GenerationResult Evolution::step(EvolutionState& s, Evaluator& eval) const {
+Result<GenerationResult> Evolution::step(EvolutionState& s, Evaluator& eval) const {
   if (s.generation < 0) return initial(s, eval);
   return evo_.algorithm == Algorithm::Generational ? generational(s, eval) : steady_state(s, eval);
 }
 
-GenerationResult Evolution::initial(EvolutionState& s, Evaluator& eval) const {
+Result<GenerationResult> Evolution::initial(EvolutionState& s, Evaluator& eval) const {
   long rejected = 0, failed = 0;
   std::vector<Child> children;
   const int n = static_cast<int>(founders_.size());
   for (int k = 0; k < evo_.population; ++k) {
     Rng rng(stream_seed({seed_, kInitial, static_cast<std::uint64_t>(k)}));
     if (n == 0) {
-      children.push_back(random_child(rng, rejected));
+      auto c = random_child(rng, rejected);
+      if (!c) return Error{c.error()};
+      children.push_back(std::move(*c));
       continue;
     }
     const Individual& f = founders_[k % n];
     auto make = [&](Rng& r) { return mutant(f, r); };
     // a founder as it is (a stage's tasks may refuse a body the last took:
     // then its mutants); one without an id was read from a file
-    children.push_back(k < n ? viable(Child{f.genotype, f.id, -1, f.id >= 0 ? "copy" : "file"}, rng, rejected, make)
-                             : viable(make(rng), rng, rejected, make));
+    auto c = k < n ? viable(Child{f.genotype, f.id, -1, f.id >= 0 ? "copy" : "file"}, rng, rejected, make)
+                   : viable(make(rng), rng, rejected, make);
+    if (!c) return Error{c.error()};
+    children.push_back(std::move(*c));
   }
   GenerationResult res;
   MetricTally tally;
@@ -330,7 +356,7 @@ GenerationResult Evolution::initial(EvolutionState& s, Evaluator& eval) const {
   return res;
 }
 
-GenerationResult Evolution::generational(EvolutionState& s, Evaluator& eval) const {
+Result<GenerationResult> Evolution::generational(EvolutionState& s, Evaluator& eval) const {
   const int g = s.generation + 1;
   // the best survive
   std::vector<Individual> sorted = s.population;
@@ -358,7 +384,9 @@ GenerationResult Evolution::generational(EvolutionState& s, Evaluator& eval) con
         if (tries >= evo_.max_regenerations || !copies_parent(c, *a.genotype, b.genotype.get())) return c;
       }
     };
-    children.push_back(viable(make(rng), rng, rejected, make));
+    auto c = viable(make(rng), rng, rejected, make);
+    if (!c) return Error{c.error()};
+    children.push_back(std::move(*c));
   }
 
   GenerationResult res;
@@ -405,7 +433,7 @@ void Evolution::tournaments(EvolutionState& s, Evaluator& eval, std::vector<int>
   s.evaluations += static_cast<long>(jobs.size());
 }
 
-GenerationResult Evolution::steady_state(EvolutionState& s, Evaluator& eval) const {
+Result<GenerationResult> Evolution::steady_state(EvolutionState& s, Evaluator& eval) const {
   const long every = evo_.report_every > 0 ? evo_.report_every : evo_.population;
   const long total = s.first_id + evo_.population + evo_.evaluations;
   // creatures born so far: the budget and the intervals count tournaments, so
@@ -458,7 +486,9 @@ GenerationResult Evolution::steady_state(EvolutionState& s, Evaluator& eval) con
           if (tries >= evo_.max_regenerations || !copies_parent(c, *a.genotype, b.genotype.get())) return c;
         }
       };
-      children.push_back(viable(make(rng), rng, rejected, make));
+      auto c = viable(make(rng), rng, rejected, make);
+      if (!c) return Error{c.error()};
+      children.push_back(std::move(*c));
       replaced.push_back(tri[2]);
     }
     std::vector<Individual> born;

@@ -153,8 +153,11 @@ class Evolution {
   static bool finished(const EvolutionDef& evo, const EvolutionState& s);
   /// Generations (steady state: report intervals) the run will have in all.
   int total_generations() const;
-  /// Runs the next generation: the initial population first.
-  GenerationResult step(EvolutionState& s, Evaluator& eval) const;
+  /// Runs the next generation: the initial population first. An error when
+  /// it cannot breed one: max_random_redraws random genotypes in a row not
+  /// viable (with the reason most of them gave); `s` may then be part way through the
+  /// step, to be dropped (a run stores nothing of it).
+  Result<GenerationResult> step(EvolutionState& s, Evaluator& eval) const;
   /// The evaluation seed of an individual.
   std::uint64_t eval_seed(std::int64_t id) const;
 
@@ -164,20 +167,20 @@ class Evolution {
     std::int64_t parent1 = -1, parent2 = -1;
     std::string op;
   };
-  Child random_child(Rng& rng, long& rejected) const;
+  Result<Child> random_child(Rng& rng, long& rejected) const;
   Child mutant(const Individual& a, Rng& rng) const;
   /// Whether `c` must be made again as a copy of parent `a` or `b` (none
   /// for a mutant) (EvolutionDef::distinct_children).
   bool copies_parent(const Child& c, const Genotype& a, const Genotype* b = nullptr) const;
-  Child viable(Child c, Rng& rng, long& rejected, const std::function<Child(Rng&)>& remake) const;
+  Result<Child> viable(Child c, Rng& rng, long& rejected, const std::function<Child(Rng&)>& remake) const;
   std::vector<Individual> evaluate(std::vector<Child> children, EvolutionState& s, Evaluator& eval,
                                    long& failed, MetricTally& tally) const;
   Individual unevaluated(Child c, EvolutionState& s) const;
   void tournaments(EvolutionState& s, Evaluator& eval, std::vector<int> members, std::vector<double>& fresh,
                    long& failed, MetricTally& tally, std::vector<Individual>& evaluated) const;
-  GenerationResult initial(EvolutionState& s, Evaluator& eval) const;
-  GenerationResult generational(EvolutionState& s, Evaluator& eval) const;
-  GenerationResult steady_state(EvolutionState& s, Evaluator& eval) const;
+  Result<GenerationResult> initial(EvolutionState& s, Evaluator& eval) const;
+  Result<GenerationResult> generational(EvolutionState& s, Evaluator& eval) const;
+  Result<GenerationResult> steady_state(EvolutionState& s, Evaluator& eval) const;
   GenerationStats stats(const EvolutionState& s) const;
   int elite_count(int n) const;
   std::vector<Individual> reevaluate_elite(EvolutionState& s, Evaluator& eval, long& failed,

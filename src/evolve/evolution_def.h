@@ -77,6 +77,16 @@ struct EvolutionDef {
   /// at dt/4 only, such as a topple the step decides, is lost too (issue 11).
   bool elite_quarter_step = false;
   int max_regenerations = 1000;   ///< non-viable children redrawn at most this often, then a random genome
+  /// Random genotypes drawn in a row, none of them viable, before the run
+  /// stops and says why (the reason most of them gave): under a config that no
+  /// creature survives (develop.max_body_length below any body) the draws
+  /// would never end. The presets' longest streak in 20,000 draws is 84
+  /// (chaumont2007's catapults, 92% of whose random genomes overlap
+  /// themselves: 10,000 in a row has odds of e^-800), the others' 6 or
+  /// fewer. (A reconciliation stage's random genomes are never viable, as
+  /// they lack its skill: it breeds from its founders, and reaches random
+  /// genomes only after max_regenerations children in a row not viable.)
+  int max_random_redraws = 10000;
   /// A child whose genotype equals a parent's is made again (new parents,
   /// new operator), up to max_regenerations times, then kept. A stage whose
   /// genomes are mostly locked (lessin2015's Fast ESP: the body and every

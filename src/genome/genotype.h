@@ -57,8 +57,8 @@ class GenotypeOps {
   virtual std::unique_ptr<Genotype> mutate(const Genotype& g, double rate, Rng& rng) const = 0;
   virtual std::unique_ptr<Genotype> crossover(const Genotype& a, const Genotype& b, Rng& rng) const = 0;
   /// Whether a genotype may be evaluated at all (a graph genome must grow a
-  /// body); the algorithms redraw a child that is not.
-  virtual bool viable(const Genotype&) const { return true; }
+  /// body), or why not; the algorithms redraw a child that is not.
+  virtual Status viable(const Genotype&) const { return Ok{}; }
   /// Whether graft() exists for this kind (Sims' grafting is a graph
   /// operator); a config giving p_graft > 0 to a kind without it is an error.
   virtual bool can_graft() const { return false; }

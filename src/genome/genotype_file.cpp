@@ -2,6 +2,7 @@
 
 #include "genome/genome_json.h"
 #include "genome/graph_genotype.h"
+#include "genome/json_text.h"
 
 namespace bx {
 
@@ -50,7 +51,7 @@ std::string genotype_file_string(const Genotype& g, const json& provenance) {
   if (const Genome* genome = graph_genome(g)) {
     json j = genome_to_json(*genome);
     if (provenance.is_object()) j["provenance"] = provenance;
-    return j.dump(2) + "\n";
+    return json_text(j, 2) + "\n";
   }
   nlohmann::ordered_json j;
   j["format"] = std::string(kGenotypeFormat);
@@ -59,7 +60,7 @@ std::string genotype_file_string(const Genotype& g, const json& provenance) {
   const json form = g.to_json();
   for (const auto& [k, v] : form.items()) j[k] = v;
   if (provenance.is_object()) j["provenance"] = provenance;
-  return j.dump(2) + "\n";
+  return json_text(j, 2) + "\n";
 }
 
 std::string genotype_text(const Genotype& g) {

@@ -15,6 +15,7 @@
 #include "eval/creature.h"
 #include "eval/task_table.h"
 #include "genome/dialect.h"
+#include "io/toml_numbers.h"
 
 namespace bx {
 
@@ -164,6 +165,7 @@ const std::vector<Field>& fields() {
       {"evolution", "elite_half_step", Field::Bool, 0, 0, {}, [](RunConfig& c) -> void* { return &c.evolution.elite_half_step; }, "the elite's 2nd, 4th, ... evaluations step at half physics.dt, so that (with task.trial_score = min) a gait only the step makes loses its score"},
       {"evolution", "elite_quarter_step", Field::Bool, 0, 0, {}, [](RunConfig& c) -> void* { return &c.evolution.elite_quarter_step; }, "the elite's evaluations cycle through physics.dt, dt/2 (with elite_half_step) and dt/4, so that (with task.trial_score = min) a score the step makes at dt/4 is lost too"},
       {"evolution", "max_regenerations", Field::Int, 0, 1000000, {}, [](RunConfig& c) -> void* { return &c.evolution.max_regenerations; }, "non-viable children redrawn at most this often, then a random genome"},
+      {"evolution", "max_random_redraws", Field::Int, 1, 1e9, {}, [](RunConfig& c) -> void* { return &c.evolution.max_random_redraws; }, "random genotypes drawn in a row, none of them viable, before the run stops saying why (no creature is viable under its config)"},
       {"evolution", "distinct_children", Field::Bool, 0, 0, {}, [](RunConfig& c) -> void* { return &c.evolution.distinct_children; }, "a child whose genotype equals a parent's is made again (up to max_regenerations times), so a stage of mostly locked genomes (Fast ESP) does not spend its evaluations on copies"},
       {"evolution", "evaluation_timeout", Field::Real, 0.1, 1e6, {}, [](RunConfig& c) -> void* { return &c.evolution.evaluation_timeout; }, "seconds before a worker's evaluation is abandoned as failed"},
       {"evolution", "failed_fitness", Field::Real, -1e12, 1e12, {}, [](RunConfig& c) -> void* { return &c.evolution.failed_fitness; }, "fitness of an evaluation that blew up, crashed or timed out (below any real score)"},
@@ -415,11 +417,10 @@ Status apply_config_toml(RunConfig& cfg, std::string_view text, std::string_view
   try {
     root = toml::parse(text, source);
   } catch (const toml::parse_error& e) {
-    const auto& b = e.source().begin;
-    // toml++ quotes what it saw, a newline included
-    return Error{std::string(source) + ":" + std::to_string(b.line) + ":" + std::to_string(b.column) +
-                 ": " + one_line(e.description(), 200)};
+    return Error{toml_error_text(e, text, source)};
   }
+  // a number that would read as 0 (or lose digits) is refused, not rounded
+  if (Status s = check_number_range(root, text, source); !s) return s;
   RunConfig out = cfg;  // apply all or nothing
   std::vector<std::string> set;  // the keys this layer sets, section.key
   for (auto&& [sec_key, sec_node] : root) {

@@ -7,6 +7,7 @@
 #include <string_view>
 
 #include "core/files.h"
+#include "genome/json_text.h"
 
 namespace bx {
 
@@ -47,9 +48,9 @@ std::string view_data_json(const std::vector<LabelledReplay>& replays,
   std::string out = "{\"replays\":[";
   for (std::size_t i = 0; i < replays.size(); ++i) {
     if (i) out += ',';
-    out += "{\"label\":" + json(replays[i].label).dump() + ",\"replay\":";
+    out += "{\"label\":" + json_text(json(replays[i].label)) + ",\"replay\":";
     out += trim(replays[i].replay_json);
-    if (!replays[i].genome.empty()) out += ",\"genome\":" + json(replays[i].genome).dump();
+    if (!replays[i].genome.empty()) out += ",\"genome\":" + json_text(json(replays[i].genome));
     out += '}';
   }
   out += "],\"run\":";
@@ -87,7 +88,7 @@ std::string view_data_json(const std::vector<LabelledReplay>& replays,
       }
       r["stages"] = std::move(stages);
     }
-    out += r.dump();
+    out += json_text(r);
   }
   out += '}';
   return out;

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/text.h"
+
 namespace bx {
 
 namespace {
@@ -14,10 +16,10 @@ std::string fmt(const char* f, double v) {
   return buf;
 }
 
-// XML-safe text
+// XML-safe text (UTF-8, as XML must be: a run's name may be a path of any bytes)
 std::string escape(const std::string& s) {
   std::string out;
-  for (char c : s) {
+  for (char c : utf8_text(s)) {
     switch (c) {
       case '&': out += "&amp;"; break;
       case '<': out += "&lt;"; break;

@@ -8,6 +8,7 @@
 #include "brain/neuron_set.h"
 #include "core/files.h"
 #include "core/version.h"
+#include "genome/json_text.h"
 #include "io/rounding.h"
 #include "io/scene_record_json.h"
 
@@ -193,7 +194,7 @@ std::string replay_to_string(const CreatureModel& m, const Replay& r, const Eval
     for (const Metric& mt : res.metrics) metrics[mt.name] = mt.value;
     j["result"]["metrics"] = metrics;
   }
-  return j.dump() + "\n";
+  return json_text(j) + "\n";
 }
 
 Status save_replay(const std::string& path, const CreatureModel& m, const Replay& r,

@@ -11,6 +11,7 @@
 #include "core/text.h"
 #include "genome/genotype_file.h"
 #include "genome/shipped_creatures.h"
+#include "io/toml_numbers.h"
 
 namespace bx {
 
@@ -171,6 +172,8 @@ Result<Syllabus> read_syllabus(std::string_view text, std::string_view source,
     if (!cfg) return Error{cfg.error()};
     return Error{src + ": not TOML"};
   }
+  // before a stage's tables are written out again, where 1e-400 would be 0.0
+  if (Status s = check_number_range(root, text, source); !s) return Error{s.error()};
   Syllabus out;
   toml::node* stages_node = root.get("stage");
   if (!stages_node) {

@@ -16,6 +16,7 @@
 
 #include "core/files.h"
 #include "core/hash.h"
+#include "core/text.h"
 #include "core/version.h"
 #include "develop/graph_ops.h"
 #include "eval/evaluator.h"
@@ -41,6 +42,14 @@ std::string creating_prefix(const fs::path& dir) {
   std::string p = ".";
   p += dir.filename().string();
   p += ".creating-";
+  return p;
+}
+
+// where a run folder named `dir` is: its path in normal form, without a
+// trailing separator ("runs/x/" is "runs/x", not a folder inside it)
+fs::path run_folder(const std::string& dir) {
+  fs::path p = fs::path(dir).lexically_normal();
+  if (p.filename().empty() && p.has_parent_path()) p = p.parent_path();
   return p;
 }
 
@@ -80,7 +89,7 @@ Status create_run(const std::string& dir, const Syllabus& stages, const std::str
   // built under another name and renamed into place, so that `dir` appears
   // complete (config.toml, and the database with the config and seed) or not at
   // all, whenever the process is killed or the disk fills
-  const fs::path target = fs::path(dir).lexically_normal();
+  const fs::path target = run_folder(dir);
   std::error_code ec;
   if (!target.parent_path().empty()) fs::create_directories(target.parent_path(), ec);
   if (ec) return Error{target.parent_path().string() + ": cannot create directory (" + ec.message() + ")"};
@@ -93,8 +102,10 @@ Status create_run(const std::string& dir, const Syllabus& stages, const std::str
     fs::remove_all(tmp, ignored);
     return Status(Error{why});
   };
-  // the resolved config: every key, as this run will use it
-  std::string resolved = "# Resolved config of this run (from " + name + ")\n" + syllabus_to_toml(stages);
+  // the resolved config: every key, as this run will use it (its source's
+  // name as TOML's UTF-8 text on one line, whatever bytes the path holds)
+  std::string resolved =
+      "# Resolved config of this run (from " + one_line(utf8_text(name)) + ")\n" + syllabus_to_toml(stages);
   if (Status s = write_file_atomic(run_config_path(tmp.string()), resolved); !s)
     return fail(dir + ": " + s.error());
   {
@@ -113,6 +124,22 @@ Status create_run(const std::string& dir, const Syllabus& stages, const std::str
   }
   sync_dir(target.parent_path());
   return Ok{};
+}
+
+void discard_unstarted_run(const std::string& dir) {
+  const fs::path target = run_folder(dir);  // where create_run put it
+  {
+    auto store = RunStore::open(run_db_path(target.string()));
+    if (!store) return;
+    auto cp = (*store)->checkpoint();
+    if (!cp || *cp) return;  // a generation stored (or no telling): the run is kept
+  }  // closed before its folder goes
+  // out of place first, as create_run put it in place: `dir` is gone at
+  // once, and what a kill leaves is a stale creation the next run removes
+  const fs::path gone = creating_path(target, static_cast<long>(::getpid()));
+  std::error_code ec;
+  fs::rename(target, gone, ec);
+  if (!ec) fs::remove_all(gone, ec);
 }
 
 namespace {
@@ -441,7 +468,16 @@ Status drive_run(const std::string& dir, const RunOptions& opt) {
     for (; !evo.finished(state); ++done, ++done_in_stage) {
       if (opt.stop_after > 0 && done >= opt.stop_after) break;
       const long evaluations_before = state.evaluations;
-      GenerationResult res = evo.step(state, *evaluator);
+      auto step = evo.step(state, *evaluator);
+      if (!step) {
+        // no creature to breed (none viable): nothing of the step is stored,
+        // the run stands at its last checkpoint
+        const std::string why = (run->syllabus.staged() ? "stage \"" + st.name + "\": " : "") + step.error();
+        log << "stopped: " << why << std::endl;
+        if (tty && done > 0) std::printf("\n");  // after the progress line
+        return Error{why};
+      }
+      GenerationResult& res = *step;
       // the database numbers generations through the stages
       res.stats.generation += stage.first_gen;
       for (Individual& ind : res.born) ind.generation += stage.first_gen;

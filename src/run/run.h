@@ -50,6 +50,12 @@ inline Status create_run(const std::string& dir, const RunConfig& cfg, const std
   return create_run(dir, Syllabus{{std::move(one)}}, config_text, name, seed);
 }
 
+/// Removes the run directory `dir` that create_run made, if the run has
+/// stored no generation yet: a run refused once begun (drive_run's error
+/// before its first generation) then leaves nothing, as a run refused before
+/// create_run does. A run with a generation stored is kept, resumable.
+void discard_unstarted_run(const std::string& dir);
+
 /// Whether every stage's breeding suits its genotypes (check_breeding) and
 /// a stage that locks the body evolves creatures with one; the error names
 /// the stage and the key. `run` checks before it creates the run folder.

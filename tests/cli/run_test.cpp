@@ -327,6 +327,10 @@ TEST_F(RunCli, BadInputGivesOneErrorLineAndWritesNothing) {
                                           "\"quick\"?) (`" BESTIARY_BINARY " presets` lists them)"},
       {"run " + cfg + " --out " + out.string() + " --set evolution.populaton=5",
        "--set evolution.populaton=5: evolution.populaton: unknown key (did you mean \"population\"?)"},
+      // a number read as 0 is not rounded to it (issue 37: 0 is "no limit" here)
+      {"run " + cfg + " --out " + out.string() + " --set motor.torque_max_linear_speed=1e-400",
+       "--set motor.torque_max_linear_speed=1e-400: motor.torque_max_linear_speed: underflows: below 2.2e-308 a "
+       "number reads as 0 or loses digits (write 0, or a larger number), got 1e-400"},
   };
   for (const auto& c : cases) {
     Outcome r = bestiary(c.args);
@@ -342,6 +346,53 @@ TEST_F(RunCli, BadInputGivesOneErrorLineAndWritesNothing) {
   EXPECT_EQ(r.err.rfind("bestiary: " + out.string() + ": already exists", 0), 0u) << r.err;
   EXPECT_TRUE(fs::exists(out / "keep.txt"));
   EXPECT_FALSE(fs::exists(out / "run.sqlite"));
+}
+
+// A config under which no creature is viable drew random genomes forever,
+// printing and storing nothing (issue 37): the run stops after
+// evolution.max_random_redraws in a row, in one line with the reason most of
+// them gave, and a run refused before it stored a generation leaves nothing.
+TEST_F(RunCli, ARunUnderWhichNoCreatureIsViableStopsInOneLineAndLeavesNothing) {
+  const fs::path out = dir / "none";
+  // a folder named with a trailing '/' too (it left an empty folder)
+  for (const auto& [algorithm, named] : {std::pair{"generational", out.string()}, {"steady_state", out.string() + "/"}}) {
+    // `timeout`: without the bound the run never ends
+    Outcome r = bxtest::run_command("timeout 120 " BESTIARY_BINARY " run quick --out " + named +
+                                    " --set develop.max_body_length=1e-6 --set evolution.algorithm=" + algorithm +
+                                    " --workers 0");
+    EXPECT_EQ(r.code, 2) << algorithm << r.err;
+    EXPECT_EQ(bxtest::count_lines(r.err), 1) << r.err;
+    EXPECT_EQ(r.err.rfind("bestiary: no creature is viable: 10000 random genotypes in a row were not "
+                          "(evolution.max_random_redraws); ", 0),
+              0u)
+        << r.err;
+    EXPECT_NE(r.err.find("above develop.max_body_length 1e-06\n"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(out)) << algorithm;
+    for (const auto& e : fs::directory_iterator(dir))  // nor the folder it was created under
+      EXPECT_EQ(e.path().filename().string().find(".none.creating"), std::string::npos) << e.path();
+  }
+}
+
+// A run refused once it has stored a generation keeps it (and says the same
+// when resumed): its second stage, from random genotypes, has none viable.
+TEST_F(RunCli, ARunRefusedAfterItStoredAGenerationKeepsIt) {
+  std::ofstream(dir / "stages.toml") << "[genome]\ndialect = \"sims1994\"\n[evolution]\npopulation = 12\n"
+                                        "generations = 2\n[task]\nseconds = 2\n"
+                                        "[[stage]]\nname = \"first\"\n"
+                                        "[[stage]]\nname = \"none\"\nstart = \"random\"\n"
+                                        "[stage.develop]\nmax_body_length = 1e-6\n";
+  const fs::path out = dir / "staged";
+  const std::string refusal = "bestiary: stage \"none\": no creature is viable: ";
+  // `timeout`: without the bound the second stage never ends
+  Outcome r = bxtest::run_command("timeout 120 " BESTIARY_BINARY " run " + (dir / "stages.toml").string() + " --out " +
+                                  out.string() + " --workers 0 --quiet");
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_EQ(r.err.rfind(refusal, 0), 0u) << r.err;
+  EXPECT_EQ(bxtest::query(out / "run.sqlite", "SELECT count(*) FROM generation"), "2|\n");
+  Outcome again = bxtest::run_command("timeout 120 " BESTIARY_BINARY " resume " + out.string() + " --workers 0 --quiet");
+  EXPECT_EQ(again.code, 2) << again.err;
+  EXPECT_EQ(again.err.rfind(refusal, 0), 0u) << again.err;
+  EXPECT_EQ(bxtest::query(out / "run.sqlite", "SELECT count(*) FROM generation"), "2|\n");
 }
 
 TEST_F(RunCli, PresetsAreListedOneLineEach) {
@@ -365,9 +416,10 @@ TEST_F(RunCli, PresetsAreListedOneLineEach) {
   // a steady state that evaluates a tournament's three counts tournaments (evolution.evaluations)
   EXPECT_NE(line_of("rivercrossing-small").find(" tournaments "), std::string::npos) << r.out;
   EXPECT_NE(line_of("miconi2006-small").find(" evaluations "), std::string::npos) << r.out;
-  // a run of stages (an ESP syllabus): its stages' generations, from the first stage's population
+  // a run of stages (an ESP syllabus): its stages' generations, with the range of their populations
   EXPECT_NE(line_of("lessin2015-fast-small").find("Lessin et al. 2015"), std::string::npos) << r.out;
-  EXPECT_NE(line_of("lessin2015-fast-small").find("30 x 100 generations in 10 stages"), std::string::npos) << r.out;
+  EXPECT_NE(line_of("lessin2015-fast-small").find("30-60 x 120 generations in 10 stages"), std::string::npos) << r.out;
+  EXPECT_NE(line_of("lessin2015-high-reach-fast-small").find("30 x 20 generations in 2 stages"), std::string::npos) << r.out;
 }
 
 }  // namespace

@@ -37,7 +37,7 @@ std::vector<GenerationResult> run(const RunConfig& c, std::uint64_t seed, Evalua
                                   EvolutionState& s) {
   Evolution evo(std::make_shared<GraphOps>(c.dialect, c.operators, c.sim.develop), c.evolution, seed);
   std::vector<GenerationResult> out;
-  while (!evo.finished(s)) out.push_back(evo.step(s, ev));
+  while (!evo.finished(s)) out.push_back(*evo.step(s, ev));
   return out;
 }
 
@@ -143,6 +143,40 @@ TEST_P(Loops, BreedInTheConfiguredShares) {
   }
 }
 
+// Under a config no body meets (develop.max_body_length below any), the step
+// stops after max_random_redraws random genotypes in a row that are not
+// viable, with the reason most of them gave, instead of drawing forever
+// (issue 37); so does a stage whose founder's children never are viable
+// (their redraws end in random genotypes).
+TEST_P(Loops, NoViableGenotypeStopsTheStepWithTheReasonMostOfThemGave) {
+  RunConfig c = small(GetParam().first, GetParam().second);
+  // a founder: a random genotype viable under the dialect's own limits
+  const GraphOps free_ops(c.dialect, c.operators, c.sim.develop);
+  Rng draw(5);
+  std::shared_ptr<const Genotype> viable = free_ops.random(draw);
+  while (!free_ops.viable(*viable)) viable = free_ops.random(draw);
+  Individual founder;
+  founder.id = 0;
+  founder.genotype = viable;
+
+  c.sim.develop.max_body_length = 1e-6;
+  c.evolution.max_random_redraws = 300;
+  c.evolution.max_regenerations = 20;
+  const auto ops = std::make_shared<GraphOps>(c.dialect, c.operators, c.sim.develop);
+  SerialEvaluator ev(c.sim);
+  for (const auto& founders : {std::vector<Individual>{}, std::vector<Individual>{founder}}) {
+    EvolutionState s;
+    const auto r = Evolution(ops, c.evolution, 3, TrialScore::Mean, 0, founders).step(s, ev);
+    ASSERT_FALSE(r) << founders.size();
+    EXPECT_EQ(r.error().rfind("no creature is viable: 300 random genotypes in a row were not "
+                              "(evolution.max_random_redraws); ", 0),
+              0u)
+        << r.error();
+    EXPECT_NE(r.error().find(" of them: too large: body length "), std::string::npos) << r.error();
+    EXPECT_NE(r.error().find("above develop.max_body_length 1e-06"), std::string::npos) << r.error();
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(
     Paper, Loops,
     ::testing::Values(std::pair{Dialect::Chaumont2007, Algorithm::Generational},
@@ -198,7 +232,7 @@ TEST_P(FloatLoops, BreedAFloatVectorTowardsATargetPoint) {
   std::vector<GenerationStats> stats;
   std::map<std::string, int> made;
   while (!evo.finished(s)) {
-    GenerationResult r = evo.step(s, problem);
+    GenerationResult r = *evo.step(s, problem);
     stats.push_back(r.stats);
     for (const auto& ind : r.born) {
       ++made[ind.op];
@@ -281,7 +315,7 @@ TEST_P(EliteEvaluations, EveryEliteIsTheMeanOfItsEvaluationsAndLuckCountsLess) {
     EvolutionState s;
     long born = 0;
     while (!evo.finished(s)) {
-      GenerationResult r = evo.step(s, problem);
+      GenerationResult r = *evo.step(s, problem);
       born += static_cast<long>(r.born.size());
       // every evaluation is counted
       EXPECT_EQ(s.evaluations, problem.evaluations);
@@ -464,7 +498,7 @@ TEST(TournamentEvaluatesAll, EachTournamentEvaluatesItsThreeAfreshAndAChildWaits
     const long before = s.evaluations;
     const std::int64_t born_before = s.next_id;
     problem.seeds.clear();
-    GenerationResult r = evo.step(s, problem);
+    GenerationResult r = *evo.step(s, problem);
     stats.push_back(r.stats);
     for (const auto& ind : r.born) latest[ind.id] = ind;
     for (const auto& ind : r.reevaluated) {
@@ -528,7 +562,7 @@ TEST(TournamentEvaluatesAll, TheThreeCompeteOnTheirFreshEvaluationsNotTheirMeans
   while (!evo.finished(s)) {
     std::vector<Individual> before = s.population;
     problem.seeds.clear();
-    GenerationResult r = evo.step(s, problem);
+    GenerationResult r = *evo.step(s, problem);
     if (before.size() != 3 || r.born.size() != 1 || problem.seeds.size() != 3) continue;
     ++steps;
     // the replaced one is the worst of its fresh evaluation
@@ -587,7 +621,7 @@ TEST_P(FloatLoops, DistinctChildrenAreNeverCopiesOfAParent) {
     std::map<std::int64_t, std::shared_ptr<const Genotype>> by_id;
     int copies = 0, children = 0;
     while (!evo.finished(s)) {
-      GenerationResult r = evo.step(s, problem);
+      GenerationResult r = *evo.step(s, problem);
       for (const auto& ind : r.born) {
         by_id[ind.id] = ind.genotype;
         if (ind.op == "random") continue;
@@ -643,7 +677,7 @@ TEST(Retests, AChildBelowARetestScoresZeroForGoodAndTheRestScoreTheirOwnTask) {
   EvolutionState s;
   int fell = 0, kept = 0;
   while (!evo.finished(s)) {
-    GenerationResult r = evo.step(s, problem);
+    GenerationResult r = *evo.step(s, problem);
     bool recorded = false;
     for (const MetricStat& m : r.stats.metrics) recorded |= m.name == "retest first";
     EXPECT_TRUE(recorded);

@@ -2,6 +2,7 @@
 #include "io/config.h"
 
 #include "core/files.h"
+#include "io/syllabus.h"
 
 #include <gtest/gtest.h>
 
@@ -131,6 +132,41 @@ TEST(Config, QuotedStringsStayOnOneLine) {
   EXPECT_EQ(s.error(), "x.toml:1:12: Error while parsing boolean: expected 'true', saw 't\\n'");
   s = apply_config_toml(cfg, "[motor]\n\"mo\\ndel\" = 1\n", "x.toml");
   EXPECT_EQ(s.error(), "x.toml: motor.mo\\ndel: unknown key (did you mean \"model\"?)");
+}
+
+// A number a double (or a 64-bit integer) cannot hold is refused as written,
+// never rounded: 1e-400 read as 0 would make motor.torque_max_linear_speed
+// "no limit" (issue 37).
+TEST(Config, ANumberThatUnderflowsOrOverflowsIsRefusedWithTheKeyAndTheValueAsWritten) {
+  const std::string under =
+      ": underflows: below 2.2e-308 a number reads as 0 or loses digits (write 0, or a larger number), got ";
+  EXPECT_EQ(apply_error("[motor]\ntorque_max_linear_speed = 1e-400\n"),
+            "run.toml: motor.torque_max_linear_speed" + under + "1e-400");
+  EXPECT_EQ(apply_error("[motor]\ntorque_max_linear_speed = -1.5e-400\n"),
+            "run.toml: motor.torque_max_linear_speed" + under + "-1.5e-400");
+  // below the least normal double it keeps only some of its digits
+  EXPECT_EQ(apply_error("[motor]\ntorque_max_linear_speed = 1e-320\n"),
+            "run.toml: motor.torque_max_linear_speed" + under + "1e-320");
+  EXPECT_EQ(apply_error("[catapult]\nprojectile_size = [0.1, 1e-400, 0.1]\n"),
+            "run.toml: catapult.projectile_size[1]" + under + "1e-400");
+  // 0 however written is 0, and the least normal double is kept
+  EXPECT_EQ(apply_error("[motor]\ntorque_max_linear_speed = 0.0e-400\n"), "");
+  EXPECT_EQ(apply_error("[motor]\ntorque_max_linear_speed = 2.3e-308\n"), "");
+  // too large: toml++ refuses it naming the value, the error names its key too
+  EXPECT_EQ(apply_error("[motor]\ntorque_max_linear_speed = 1e400\n"),
+            "run.toml:2:32: motor.torque_max_linear_speed: overflows: a number holds at most 1.8e308 in magnitude, "
+            "got 1e400");
+  EXPECT_EQ(apply_error("[evolution]\n  population = 99999999999999999999 # many\n"),
+            "run.toml:2:36: evolution.population: overflows: an integer holds at most 9223372036854775807 in "
+            "magnitude, got 99999999999999999999");
+  // from --set, and in a stage of a run of several, whose tables are written
+  // out again (1e-400 as 0.0) before their keys are read
+  auto set = read_run_config("", "run.toml", {"motor.torque_max_linear_speed=1e-400"});
+  ASSERT_FALSE(set);
+  EXPECT_EQ(set.error(), "--set motor.torque_max_linear_speed=1e-400: motor.torque_max_linear_speed" + under + "1e-400");
+  auto staged = read_syllabus("[[stage]]\nname = \"a\"\n[stage.motor]\ntorque_max_linear_speed = 1e-400\n", "run.toml");
+  ASSERT_FALSE(staged);
+  EXPECT_EQ(staged.error(), "run.toml: stage[0].motor.torque_max_linear_speed" + under + "1e-400");
 }
 
 TEST(Config, BadInputChangesNothing) {
