@@ -84,9 +84,9 @@ def finished(run_dir):
     if not os.path.exists(db):
         return False
     con = sqlite3.connect(db)
-    if stages(run_dir):
-        n = con.execute("select count(*) from generation").fetchone()[0]
-        return n >= sum(g for _, g in stages(run_dir))
+    staged = stages(run_dir)
+    if staged:
+        return con.execute("select count(*) from generation").fetchone()[0] >= sum(g for _, g in staged)
     cfg = dict(con.execute("select key, value from run"))["config"]
     n = con.execute("select count(*), max(evaluations) from generation").fetchone()
     alg = re.search(r'^algorithm = "(\w+)"', cfg, re.M).group(1)
@@ -153,14 +153,14 @@ def check_row(preset, seed, run_dir, check_set=()):
             f"{verdict} |")
 
 
-def stage_rows(preset, seed, run_dir, check_set=()):
+def stage_rows(preset, seed, run_dir, staged, check_set=()):
     """A syllabus run, a row per stage: its generations, its best in its
     first and last generation, and `bestiary check` of that last best (its
     stage's task and config)."""
     con = sqlite3.connect(os.path.join(run_dir, "run.sqlite"))
     firsts = [g for (g,) in con.execute("select first_gen from stage order by idx")]
     out = []
-    for k, (name, gens) in enumerate(stages(run_dir)):
+    for k, (name, _) in enumerate(staged):
         if k >= len(firsts):
             break
         g0 = firsts[k]
@@ -406,9 +406,11 @@ def main():
                 r = sh(args + ["--workers", a.workers, "--quiet"])
                 if r.returncode != 0:
                     sys.exit(r.stderr)
-            if stages(run_dir):
-                syllabus.extend(stage_rows(preset, seed, run_dir, a.check_set))
-                print("\n".join(syllabus[-len(stages(run_dir)):]), flush=True)
+            staged = stages(run_dir)
+            if staged:
+                rows_of_run = stage_rows(preset, seed, run_dir, staged, a.check_set)
+                syllabus.extend(rows_of_run)
+                print("\n".join(rows_of_run), flush=True)
                 continue
             checks.append(check_row(preset, seed, run_dir, a.check_set))
             print(checks[-1], flush=True)

@@ -87,15 +87,8 @@ TEST(Muscle, SilentItPullsNothingAndAtItsRestLengthActiveNeither) {
 // A fixed 0.8 m tall post and a 0.6 m limb sticking out of its side,
 // hinged about y where they meet, which gravity pulls down; a muscle from
 // the post's top corner to the limb's far end at its built length (a lever
-// arm of 0.31 m about the hinge). The limb's turn (rad) after `seconds`
-// under a constant activation, and its largest joint speed over the last second.
-struct Held {
-  double turn, speed;
-};
-Held hold(double activation, double seconds = 5) {
-  PhysicsDef def;
-  def.dt = 0.005;
-  World w(def);
+// arm of 0.31 m about the hinge), driven by effector 0.
+CreatureModel limb_on_post() {
   CreatureModel cm;
   cm.parts = {box_part({0.2, 0.2, 0.8}, 5, {0, 0, 1}), box_part({0.6, 0.1, 0.1}, 0.5, {0.4, 0, 1.05})};
   cm.parts[1].parent = 0;
@@ -111,6 +104,19 @@ Held hold(double activation, double seconds = 5) {
   EffectorModel e;
   e.muscle = 0;
   cm.effectors.push_back(e);
+  return cm;
+}
+
+// limb_on_post()'s limb: its turn (rad) after `seconds` under a constant
+// activation, and its largest joint speed over the last second.
+struct Held {
+  double turn, speed;
+};
+Held hold(double activation, double seconds = 5) {
+  PhysicsDef def;
+  def.dt = 0.005;
+  World w(def);
+  CreatureModel cm = limb_on_post();
   w.add_creature(cm, {{0, 0, 0}, Mat3::identity()});
   w.fix_part_to_world(0);
   const double s[1] = {activation};
@@ -161,27 +167,13 @@ TEST(Muscle, ABrakeHoldsItWhereItWasThenReleasedItPullsToItsRestLength) {
 }
 
 TEST(Muscle, ABrakeHoldsADroopingLimbAtItsAngleNotAtItsRestLength) {
-  // hold()'s limb, silent for 0.3 s (it droops), then braked with all its
+  // limb_on_post()'s limb, silent for 0.3 s (it droops), then braked with all its
   // strength: it stays where it drooped to, within the sag of its spring;
   // pulling to its rest length (its built length) would lift it back to 0
   PhysicsDef def;
   def.dt = 0.005;
   World w(def);
-  CreatureModel cm;
-  cm.parts = {box_part({0.2, 0.2, 0.8}, 5, {0, 0, 1}), box_part({0.6, 0.1, 0.1}, 0.5, {0.4, 0, 1.05})};
-  cm.parts[1].parent = 0;
-  JointModel j;
-  j.type = JointType::Hinge;
-  j.parent = 0;
-  j.child = 1;
-  j.anchor = {0.1, 0, 1.05};
-  j.axis1 = {0, 1, 0};
-  cm.joints.push_back(j);
-  const Vec3 top{0.1, 0, 1.4}, tip{0.7, 0, 1.1};
-  cm.muscles.push_back({0, 1, top, tip, 2000, norm(tip - top)});
-  EffectorModel e;
-  e.muscle = 0;
-  cm.effectors.push_back(e);
+  CreatureModel cm = limb_on_post();
   w.add_creature(cm, {{0, 0, 0}, Mat3::identity()});
   w.fix_part_to_world(0);
   const double silent[1] = {0};
