@@ -17,7 +17,7 @@ namespace bx {
 /// `simulate` and `config` (src/cli/simulate.cpp).
 void add_simulate_commands(CLI::App& app);
 
-/// `run`, `resume`, `best` and `presets` (src/cli/evolve_cmds.cpp).
+/// `run`, `resume`, `verify`, `best` and `presets` (src/cli/evolve_cmds.cpp).
 void add_evolve_commands(CLI::App& app);
 
 /// `show` and `render` (src/cli/watch.cpp).

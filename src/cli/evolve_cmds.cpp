@@ -170,6 +170,19 @@ int cmd_resume(const std::string& dir, int workers, bool quiet, const std::vecto
   return finish(dir, drive_run(dir, {workers, quiet, 0}));
 }
 
+int cmd_verify(const std::string& dir) {
+  if (!fs::is_directory(dir)) return fail(dir + ": no such run directory");
+  auto v = verify_run(dir);
+  if (!v) return fail(v.error());
+  std::printf("%s: sound: %ld generations, %ld individuals, %ld stage%s, the checkpoint and the config; "
+              "%ld rows match their checksums",
+              dir.c_str(), v->generations, v->individuals, v->stages, v->stages == 1 ? "" : "s", v->sealed);
+  if (v->unsealed > 0)
+    std::printf(", %ld stored before runs kept checksums were read but cannot be checked", v->unsealed);
+  std::printf("\n");
+  return 0;
+}
+
 int cmd_best(const std::string& target, const CreatureFlags& flags, const std::string& out) {
   if (!names_run(target)) return fail(target + ": expected a run directory (RUN_DIR, RUN_DIR:ID or RUN_DIR:gen=G)");
   auto c = resolve_creature(target, flags);
@@ -285,6 +298,11 @@ void add_evolve_commands(CLI::App& app) {
   s->add_option("--set", resume_set,
                 "Lengthen the run: evolution.generations=N (generational) or evolution.evaluations=N (steady state)");
   s->callback([] { std::exit(cmd_resume(resume_dir, resume_workers, resume_quiet, resume_set)); });
+
+  static std::string verify_dir;
+  auto* v = app.add_subcommand("verify", "Check a run's database whole: every stored row against its checksum, none missing");
+  v->add_option("dir", verify_dir, "Run directory")->required();
+  v->callback([] { std::exit(cmd_verify(verify_dir)); });
 
   static std::string best_target, best_out;
   static CreatureFlags best_flags;

@@ -108,7 +108,7 @@ std::uint64_t Evolution::eval_seed(std::int64_t id) const { return evaluation_se
 Result<Evolution::Child> Evolution::viable(Child c, Rng& rng, long& rejected,
                                            const std::function<Child(Rng&)>& remake) const {
   for (int tries = 0; !ops_->viable(*c.genotype); ++tries) {
-    ++rejected;
+    rejected_one(rejected);
     if (tries < evo_.max_regenerations) {
       c = remake(rng);
       continue;
@@ -148,7 +148,7 @@ Result<Evolution::Child> Evolution::random_child(Rng& rng, long& rejected) const
     Child c{ops_->random(rng), -1, -1, "random"};
     const Status v = ops_->viable(*c.genotype);
     if (v) return c;
-    ++rejected;
+    rejected_one(rejected);
     std::string words;
     for (char ch : v.error())
       if (ch < '0' || ch > '9') words += ch;

@@ -160,6 +160,11 @@ class Evolution {
   Result<GenerationResult> step(EvolutionState& s, Evaluator& eval) const;
   /// The evaluation seed of an individual.
   std::uint64_t eval_seed(std::int64_t id) const;
+  /// Called with the generation's count of non-viable children redrawn so
+  /// far, at every kRedrawReport-th: progress while breeding is slow
+  /// because few children are viable (it changes nothing of the run).
+  void on_redraws(std::function<void(long)> report) { on_redraws_ = std::move(report); }
+  static constexpr long kRedrawReport = 1000;
 
  private:
   struct Child {
@@ -193,6 +198,10 @@ class Evolution {
   int task_;
   std::vector<Individual> founders_;
   std::vector<Retest> retests_;
+  std::function<void(long)> on_redraws_;
+  void rejected_one(long& rejected) const {
+    if (++rejected % kRedrawReport == 0 && on_redraws_) on_redraws_(rejected);
+  }
 };
 
 }  // namespace bx

@@ -4,6 +4,8 @@
 
 #include <unistd.h>
 
+#include <cassert>
+#include <cstring>
 #include <filesystem>
 #include <optional>
 #include <nlohmann/json.hpp>
@@ -16,25 +18,95 @@ namespace {
 
 using nlohmann::json;
 
+// user_version 1: every row carries a checksum of its values (`digest`)
+constexpr int kFormat = 1;
+
 const char* kSchema = R"(
 PRAGMA journal_mode = WAL;
-CREATE TABLE run (key TEXT PRIMARY KEY, value TEXT NOT NULL);
+PRAGMA user_version = 1;
+CREATE TABLE run (key TEXT PRIMARY KEY, value TEXT NOT NULL, digest TEXT);
 CREATE TABLE generation (
   gen INTEGER PRIMARY KEY, evaluations INTEGER NOT NULL,
   best REAL NOT NULL, mean REAL NOT NULL, median REAL NOT NULL, best_id INTEGER NOT NULL,
-  rejected INTEGER NOT NULL, failed INTEGER NOT NULL);
+  rejected INTEGER NOT NULL, failed INTEGER NOT NULL, digest TEXT);
 CREATE TABLE individual (
   id INTEGER PRIMARY KEY, gen INTEGER NOT NULL, genome TEXT NOT NULL,
   fitness REAL NOT NULL, distance REAL NOT NULL, parent1 INTEGER, parent2 INTEGER,
   operator TEXT NOT NULL, failure TEXT NOT NULL, seed TEXT, kind TEXT NOT NULL DEFAULT 'graph',
-  evaluations INTEGER NOT NULL DEFAULT 1);
+  evaluations INTEGER NOT NULL DEFAULT 1, digest TEXT);
 CREATE INDEX individual_gen ON individual (gen);
 CREATE TABLE generation_metric (
-  gen INTEGER NOT NULL, name TEXT NOT NULL, mean REAL NOT NULL, nonzero REAL NOT NULL,
+  gen INTEGER NOT NULL, name TEXT NOT NULL, mean REAL NOT NULL, nonzero REAL NOT NULL, digest TEXT,
   PRIMARY KEY (gen, name));
-CREATE TABLE checkpoint (id INTEGER PRIMARY KEY CHECK (id = 1), gen INTEGER NOT NULL, state TEXT NOT NULL);
-CREATE TABLE stage (idx INTEGER PRIMARY KEY, name TEXT NOT NULL, first_gen INTEGER NOT NULL, first_id INTEGER NOT NULL);
+CREATE TABLE checkpoint (id INTEGER PRIMARY KEY CHECK (id = 1), gen INTEGER NOT NULL, state TEXT NOT NULL, digest TEXT);
+CREATE TABLE stage (idx INTEGER PRIMARY KEY, name TEXT NOT NULL, first_gen INTEGER NOT NULL, first_id INTEGER NOT NULL,
+  digest TEXT);
 )";
+
+// A table whose rows are sealed: `digest` = bx_digest(table, its values...),
+// written with the row and compared by check_integrity. A generation's covers
+// how many metric rows it has, so a lost one is named too.
+struct Sealed {
+  const char* table;
+  const char* values;  ///< the expressions hashed, in order
+  const char* who;     ///< an expression naming the row in the user's terms
+};
+constexpr Sealed kSealed[] = {
+    {"run", "key, value", "'the run''s ' || quote(key)"},
+    {"stage", "idx, name, first_gen, first_id", "'stage ' || idx"},
+    {"checkpoint", "id, gen, state", "'the checkpoint'"},
+    {"generation",
+     "gen, evaluations, best, mean, median, best_id, rejected, failed, "
+     "(SELECT count(*) FROM generation_metric m WHERE m.gen = generation.gen)",
+     "'generation ' || gen"},
+    {"generation_metric", "gen, name, mean, nonzero", "'generation ' || gen || '''s metric ' || quote(name)"},
+    {"individual", "id, gen, genome, fitness, distance, parent1, parent2, operator, failure, seed, kind, evaluations",
+     "'individual ' || id"},
+};
+
+const Sealed& sealed(std::string_view table) {
+  for (const Sealed& t : kSealed)
+    if (table == t.table) return t;
+  assert(false && "not a sealed table");
+  return kSealed[0];
+}
+
+// bx_digest(values...): FNV-1a (64 bits) of each value's type and content
+// (integers and reals as their 8 bytes, little-endian; text and blobs with
+// their length), as 16 hex digits. A change of any one byte of any value
+// changes it (each step of FNV-1a is a bijection of the state).
+void digest_function(sqlite3_context* ctx, int argc, sqlite3_value** argv) {
+  std::uint64_t h = 14695981039346656037ull;
+  auto byte = [&](unsigned char c) { h = (h ^ c) * 1099511628211ull; };
+  auto word = [&](std::uint64_t v) {
+    for (int k = 0; k < 8; ++k) byte(static_cast<unsigned char>(v >> (8 * k)));
+  };
+  for (int i = 0; i < argc; ++i) {
+    const int type = sqlite3_value_type(argv[i]);
+    byte(static_cast<unsigned char>(type));
+    if (type == SQLITE_INTEGER) {
+      word(static_cast<std::uint64_t>(sqlite3_value_int64(argv[i])));
+    } else if (type == SQLITE_FLOAT) {
+      const double d = sqlite3_value_double(argv[i]);
+      std::uint64_t bits = 0;
+      std::memcpy(&bits, &d, sizeof bits);
+      word(bits);
+    } else if (type == SQLITE_TEXT || type == SQLITE_BLOB) {
+      const auto* p = static_cast<const unsigned char*>(type == SQLITE_TEXT ? sqlite3_value_text(argv[i])
+                                                                            : sqlite3_value_blob(argv[i]));
+      const int n = sqlite3_value_bytes(argv[i]);
+      word(static_cast<std::uint64_t>(n));
+      for (int k = 0; k < n; ++k) byte(p[k]);
+    }
+  }
+  char buf[17];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+  sqlite3_result_text(ctx, buf, 16, SQLITE_TRANSIENT);
+}
+
+std::string digest_expr(const Sealed& t) {
+  return std::string("bx_digest('") + t.table + "', " + t.values + ")";
+}
 
 // a prepared statement, finalized on scope exit
 class Stmt {
@@ -74,14 +146,23 @@ Status exec(sqlite3* db, const char* sql) {
   return Ok{};
 }
 
+// `text` on one line: line breaks (SQLite's messages have them) as spaces
+std::string one_line(std::string text) {
+  for (char& c : text)
+    if (c == '\n' || c == '\r') c = ' ';
+  return text;
+}
+
 Result<sqlite3*> open_db(const std::string& path, int flags) {
   sqlite3* db = nullptr;
   if (sqlite3_open_v2(path.c_str(), &db, flags, nullptr) != SQLITE_OK) {
-    std::string msg = path + ": cannot open run database (" + sqlite3_errmsg(db) + ")";
+    std::string msg = path + ": cannot open run database (" + one_line(sqlite3_errmsg(db)) + ")";
     sqlite3_close(db);
     return Error{msg};
   }
   sqlite3_busy_timeout(db, 5000);
+  sqlite3_create_function_v2(db, "bx_digest", -1, SQLITE_UTF8 | SQLITE_DETERMINISTIC, nullptr, digest_function,
+                             nullptr, nullptr, nullptr);
   return db;
 }
 
@@ -106,6 +187,75 @@ Status number_column(sqlite3_stmt* s, int c, const std::string& what) {
   std::string v = p ? reinterpret_cast<const char*>(p) : "NULL";
   if (v.size() > 40) v = v.substr(0, 40) + "...";
   return Error{what + " is not a number (\"" + v + "\")"};
+}
+
+// seals the rows of `t` that `where` picks (with ?1 = key): their digest of their values now
+template <class Key>
+bool seal(sqlite3* db, const Sealed& t, const char* where, const Key& key) {
+  const std::string sql = std::string("UPDATE ") + t.table + " SET digest = " + digest_expr(t) + " WHERE " + where;
+  Stmt s(db, sql.c_str());
+  s.bind(1, key);
+  return s.ok() && s.step() == SQLITE_DONE;
+}
+
+bool has_table(sqlite3* db, const char* table) {
+  Stmt s(db, "SELECT count(*) FROM sqlite_schema WHERE type = 'table' AND name = ?");
+  s.bind(1, std::string(table));
+  return s.step() == SQLITE_ROW && s.i64(0) == 1;
+}
+
+bool has_column(sqlite3* db, const char* table, const char* column) {
+  const std::string sql = std::string("SELECT count(*) FROM pragma_table_info('") + table + "') WHERE name = ?";
+  Stmt s(db, sql.c_str());
+  s.bind(1, std::string(column));
+  return s.step() == SQLITE_ROW && s.i64(0) == 1;
+}
+
+// what a database declares: each table's and index's SQL, by name
+std::string schema_of(sqlite3* db) {
+  std::string out;
+  Stmt s(db, "SELECT type, name, tbl_name, sql FROM sqlite_schema ORDER BY name");
+  while (s.step() == SQLITE_ROW) out += s.text(0) + "|" + s.text(1) + "|" + s.text(2) + "|" + s.text(3) + "\n";
+  return out;
+}
+
+// one table's or index's declaration: its type, table and SQL ("" if absent)
+std::string declaration(sqlite3* db, const std::string& name) {
+  Stmt s(db, "SELECT type, tbl_name, sql FROM sqlite_schema WHERE name = ?");
+  s.bind(1, name);
+  return s.step() == SQLITE_ROW ? s.text(0) + "|" + s.text(1) + "|" + s.text(2) : "";
+}
+
+sqlite3* fresh_schema();
+
+// a format-1 database declares exactly what kSchema does; an error names the
+// first table (or the table of the first index) that differs
+Status same_declarations(sqlite3* db, const std::string& path) {
+  if (schema_of(db) == schema_of(fresh_schema())) return Ok{};
+  Stmt s(fresh_schema(), "SELECT type, name, tbl_name FROM sqlite_schema ORDER BY type DESC, name");
+  while (s.step() == SQLITE_ROW) {
+    const std::string type = s.text(0), name = s.text(1), table = s.text(2);
+    const std::string have = declaration(db, name);
+    if (have == declaration(fresh_schema(), name)) continue;
+    if (type == "table")
+      return Error{path + ": the run database " +
+                   (have.empty() ? "lacks its " + name + " table"
+                                 : "declares its " + name + " table otherwise than it was created") +
+                   " (damaged)"};
+    return Error{path + ": the run database's index of its " + table + " table is missing or changed (damaged)"};
+  }
+  return Error{path + ": the run database declares a table or index it was not created with (damaged)"};
+}
+
+// a database made from kSchema in memory: what a new run declares
+sqlite3* fresh_schema() {
+  static sqlite3* db = [] {
+    sqlite3* m = nullptr;
+    sqlite3_open_v2(":memory:", &m, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE, nullptr);
+    exec(m, kSchema);
+    return m;
+  }();
+  return db;
 }
 
 }  // namespace
@@ -138,7 +288,26 @@ Result<std::unique_ptr<RunStore>> RunStore::open(const std::string& path) {
   store->read_only_ = !writable;
   Stmt check(*db, "SELECT count(*) FROM run");
   if (!check.ok() || check.step() != SQLITE_ROW)
-    return Error{path + ": not a Bestiary run database (" + sqlite3_errmsg(*db) + ")"};
+    return Error{path + ": not a Bestiary run database (" + one_line(sqlite3_errmsg(*db)) + ")"};
+  Stmt version(*db, "PRAGMA user_version");
+  store->format_ = version.step() == SQLITE_ROW ? static_cast<int>(version.i64(0)) : -1;
+  if (store->format_ < 0 || store->format_ > kFormat)
+    return Error{path + ": a run database of format " + std::to_string(store->format_) +
+                 ", which this Bestiary does not know (it writes format " + std::to_string(kFormat) +
+                 "): made by a newer Bestiary, or damaged"};
+  // a run with checksums (format 1) declares its tables as it was created,
+  // and needs none of the migrations below; a changed declaration would
+  // change what its rows read as
+  if (store->format_ >= 1) {
+    if (Status d = same_declarations(*db, path); !d) return Error{d.error()};
+    return store;
+  }
+  // every run has had these tables
+  for (const char* table : {"generation", "individual", "checkpoint"})
+    if (!has_table(*db, table))
+      return Error{path + ": the run database lacks its " + table + " table (damaged; a run stores " +
+                   (std::string_view(table) == "checkpoint" ? "its checkpoint" : std::string("its ") + table + "s") +
+                   " there)"};
   // databases written before individuals kept their evaluation seed get the
   // column (empty: the seed is derived, see individual()); read-only, they stay as they are
   Stmt has_seed(*db, "SELECT count(*) FROM pragma_table_info('individual') WHERE name = 'seed'");
@@ -165,6 +334,15 @@ Result<std::unique_ptr<RunStore>> RunStore::open(const std::string& path) {
   if (has_stage.ok() && has_stage.step() == SQLITE_ROW && has_stage.i64(0) == 0)
     store->stage_table_ = writable && exec(*db, "CREATE TABLE stage (idx INTEGER PRIMARY KEY, name TEXT NOT NULL, "
                                                 "first_gen INTEGER NOT NULL, first_id INTEGER NOT NULL)").ok();
+  // and before rows carried checksums: those written from now on get them
+  for (const Sealed& t : kSealed) {
+    if (!has_table(*db, t.table) || has_column(*db, t.table, "digest")) continue;
+    if (!writable) break;
+    exec(*db, (std::string("ALTER TABLE ") + t.table + " ADD COLUMN digest TEXT").c_str());
+  }
+  store->digest_columns_ = true;
+  for (const Sealed& t : kSealed)
+    if (!has_column(*db, t.table, "digest")) store->digest_columns_ = false;
   return store;
 }
 
@@ -182,25 +360,28 @@ Result<std::string> RunStore::config_text() const {
   return text;
 }
 
-Status RunStore::check_integrity() const {
-  Stmt s(db_, "PRAGMA quick_check");
+Result<Integrity> RunStore::check_integrity() const {
+  // SQLite's own check: pages, records, and every index against its table
+  Stmt s(db_, "PRAGMA integrity_check");
   std::string problems;
   int n = 0;
   int rc;
   while ((rc = s.step()) == SQLITE_ROW) {
     std::string line = s.text(0);
     if (line == "ok") continue;
-    if (n++ < 3) problems += (problems.empty() ? "" : "; ") + line;
+    if (n++ < 3) problems += (problems.empty() ? "" : "; ") + one_line(line);
   }
-  if (rc != SQLITE_DONE && problems.empty()) problems = sqlite3_errmsg(db_);
+  if (rc != SQLITE_DONE && problems.empty()) problems = one_line(sqlite3_errmsg(db_));
   if (!problems.empty()) return Error{path_ + ": the database is damaged (" + problems + (n > 3 ? "; ..." : "") + ")"};
-  // every number a number: SQLite stores what it is given, and a text reads as 0
+  // every number a number: SQLite stores what it is given, and a text reads
+  // as 0 (a run with checksums: its checksums say so, below)
   const char* numeric[][2] = {
       {"generation", "evaluations"}, {"generation", "best"}, {"generation", "mean"}, {"generation", "median"},
       {"generation", "best_id"},     {"generation", "rejected"}, {"generation", "failed"},
       {"individual", "gen"},         {"individual", "fitness"}, {"individual", "distance"},
       {"individual", "evaluations"}};
   for (const auto& [table, column] : numeric) {
+    if (format_ >= 1) break;
     std::string sql = std::string("SELECT rowid, ") + column + " FROM " + table + " WHERE typeof(" + column +
                       ") NOT IN ('integer', 'real') LIMIT 1";
     Stmt q(db_, sql.c_str());
@@ -208,7 +389,87 @@ Status RunStore::check_integrity() const {
       return Error{path_ + ": " + table + " " + std::to_string(q.i64(0)) + "'s " + column + " is not a number (\"" +
                    q.text(1).substr(0, 40) + "\")"};
   }
-  return Ok{};
+  // every row as it was written: its values against its checksum (a run
+  // begun before checksums has none on the rows it stored then), in one
+  // pass over each table
+  Integrity out;
+  if (digest_columns_) {
+    for (const Sealed& t : kSealed) {
+      if (format_ < 1 && !has_table(db_, t.table)) continue;
+      const std::string bad = std::string("digest IS NOT ") + digest_expr(t) +
+                              (format_ >= 1 ? "" : " AND digest IS NOT NULL");
+      const std::string sql = std::string("SELECT count(digest), count(*) - count(digest), min(CASE WHEN ") + bad +
+                              " THEN rowid END) FROM " + t.table;
+      Stmt q(db_, sql.c_str());
+      if (!q.ok() || q.step() != SQLITE_ROW)
+        return Error{path_ + ": the database is damaged (" + one_line(sqlite3_errmsg(db_)) + ")"};
+      if (!q.null(2)) {
+        const std::string which = std::string("SELECT ") + t.who + ", digest IS NULL FROM " + t.table + " WHERE rowid = ?";
+        Stmt w(db_, which.c_str());
+        w.bind(1, q.i64(2));
+        const bool row = w.step() == SQLITE_ROW;
+        return Error{path_ + ": " + (row ? one_line(w.text(0)).substr(0, 80) : std::string(t.table) + " row") +
+                     (row && w.i64(1) ? " has no checksum" : " does not match its checksum") +
+                     " (damaged: a stored value changed since it was written)"};
+      }
+      out.sealed += q.i64(0);
+      out.unsealed += q.i64(1);
+    }
+  }
+  // and no row missing: generations 0..the checkpoint's, individuals
+  // 0..its next id - 1, stages 0..its stage (each stored with its first generation)
+  auto cp = checkpoint();
+  if (!cp) return Error{cp.error()};
+  auto ids = [&](const char* sql) {
+    std::vector<std::int64_t> v;
+    Stmt q(db_, sql);
+    while (q.step() == SQLITE_ROW) v.push_back(q.i64(0));
+    return v;
+  };
+  const std::vector<std::int64_t> gens = ids("SELECT gen FROM generation ORDER BY gen");
+  const std::vector<std::int64_t> born = ids("SELECT id FROM individual ORDER BY id");
+  const std::vector<std::int64_t> staged =
+      stage_table_ ? ids("SELECT idx FROM stage ORDER BY idx") : std::vector<std::int64_t>{};
+  if (!*cp) {
+    if (!gens.empty() || !born.empty())
+      return Error{path_ + ": the checkpoint is missing, though " + std::to_string(gens.size()) +
+                   " generations and " + std::to_string(born.size()) + " individuals are stored (damaged)"};
+    return out;
+  }
+  // the first of 0..n-1 that `v` (sorted) lacks, or n if it holds them all, or -1 if it holds more
+  auto first_gap = [](const std::vector<std::int64_t>& v, std::int64_t n) -> std::int64_t {
+    for (std::int64_t k = 0; k < n; ++k)
+      if (k >= static_cast<std::int64_t>(v.size()) || v[static_cast<std::size_t>(k)] != k) return k;
+    return static_cast<std::int64_t>(v.size()) == n ? n : -1;
+  };
+  const Checkpoint& c = **cp;
+  struct Rows {
+    const std::vector<std::int64_t>& have;
+    std::int64_t expected;  // rows 0..expected-1
+    const char* noun;
+    std::string context;    // what the checkpoint says of them
+  };
+  std::vector<Rows> rows = {
+      {gens, c.generation + 1, "generation", "the checkpoint follows generation " + std::to_string(c.generation)},
+      {born, c.next_id, "individual", "the checkpoint counts " + std::to_string(c.next_id) + " born"}};
+  if (format_ >= 1 || !staged.empty())
+    rows.push_back({staged, c.stage.index + 1, "stage", "the checkpoint is in stage " + std::to_string(c.stage.index)});
+  for (const Rows& r : rows) {
+    const std::int64_t gap = first_gap(r.have, r.expected);
+    if (gap == r.expected) continue;
+    const std::int64_t which = gap >= 0 ? gap : r.have.back();
+    return Error{path_ + ": " + r.noun + " " + std::to_string(which) + (gap >= 0 ? " is missing" : " should not be there") +
+                 " (damaged: " + r.context + ")"};
+  }
+  for (std::int64_t id : c.population)
+    if (id >= c.next_id)
+      return Error{path_ + ": the checkpoint's population names individual " + std::to_string(id) +
+                   ", but there is no individual " + std::to_string(id) + " (damaged: " + std::to_string(c.next_id) +
+                   " were born)"};
+  out.generations = static_cast<long>(gens.size());
+  out.individuals = static_cast<long>(born.size());
+  out.stages = static_cast<long>(staged.size());
+  return out;
 }
 
 RunStore::~RunStore() { sqlite3_close(db_); }
@@ -216,6 +477,7 @@ RunStore::~RunStore() { sqlite3_close(db_); }
 Status RunStore::set_meta(const std::string& key, const std::string& value) {
   Stmt s(db_, "INSERT INTO run (key, value) VALUES (?, ?) ON CONFLICT(key) DO UPDATE SET value = excluded.value");
   if (s.bind(1, key).bind(2, value).step() != SQLITE_DONE) return Error{sqlite3_errmsg(db_)};
+  if (digest_columns_ && !seal(db_, sealed("run"), "key = ?1", key)) return Error{sqlite3_errmsg(db_)};
   return Ok{};
 }
 
@@ -244,7 +506,8 @@ Status RunStore::write_generation(const GenerationStats& st, const std::vector<I
       if (ind.parent2 >= 0) ins.bind(7, ind.parent2); else ins.bind_null(7);
       ins.bind(8, ind.op).bind(9, ind.failure).bind(10, std::to_string(ind.seed))
           .bind(11, std::string(ind.genotype->kind())).bind(12, static_cast<std::int64_t>(ind.evaluations));
-      if (ins.step() != SQLITE_DONE) return rollback("storing individual " + std::to_string(ind.id));
+      if (ins.step() != SQLITE_DONE || !seal(db_, sealed("individual"), "id = ?1", ind.id))
+        return rollback("storing individual " + std::to_string(ind.id));
       ins.reset();
     }
   }
@@ -253,7 +516,7 @@ Status RunStore::write_generation(const GenerationStats& st, const std::vector<I
     Stmt up(db_, "UPDATE individual SET fitness = ?, evaluations = ? WHERE id = ?");
     for (const auto& ind : reevaluated) {
       up.bind(1, ind.fitness).bind(2, static_cast<std::int64_t>(ind.evaluations)).bind(3, ind.id);
-      if (up.step() != SQLITE_DONE || sqlite3_changes(db_) != 1)
+      if (up.step() != SQLITE_DONE || sqlite3_changes(db_) != 1 || !seal(db_, sealed("individual"), "id = ?1", ind.id))
         return rollback("updating individual " + std::to_string(ind.id));
       up.reset();
     }
@@ -276,12 +539,18 @@ Status RunStore::write_generation(const GenerationStats& st, const std::vector<I
       m.reset();
     }
   }
+  // sealed once its metrics are in (its digest counts them)
+  const auto gen = static_cast<std::int64_t>(st.generation);
+  if (!seal(db_, sealed("generation_metric"), "gen = ?1", gen) || !seal(db_, sealed("generation"), "gen = ?1", gen))
+    return rollback("storing generation " + std::to_string(st.generation));
   // the stage it belongs to, stored with its first generation
   if (cp.generation == cp.stage.first_gen) {
     Stmt g(db_, "INSERT INTO stage (idx, name, first_gen, first_id) VALUES (?, ?, ?, ?)");
     g.bind(1, static_cast<std::int64_t>(cp.stage.index)).bind(2, cp.stage.name)
         .bind(3, static_cast<std::int64_t>(cp.stage.first_gen)).bind(4, cp.stage.first_id);
-    if (g.step() != SQLITE_DONE) return rollback("storing stage " + std::to_string(cp.stage.index));
+    if (g.step() != SQLITE_DONE ||
+        !seal(db_, sealed("stage"), "idx = ?1", static_cast<std::int64_t>(cp.stage.index)))
+      return rollback("storing stage " + std::to_string(cp.stage.index));
   }
   // and the checkpoint that resumes after it
   {
@@ -292,7 +561,8 @@ Status RunStore::write_generation(const GenerationStats& st, const std::vector<I
     Stmt c(db_, "INSERT INTO checkpoint (id, gen, state) VALUES (1, ?, ?) "
                 "ON CONFLICT(id) DO UPDATE SET gen = excluded.gen, state = excluded.state");
     c.bind(1, static_cast<std::int64_t>(cp.generation)).bind(2, state.dump());
-    if (c.step() != SQLITE_DONE) return rollback("storing the checkpoint");
+    if (c.step() != SQLITE_DONE || !seal(db_, sealed("checkpoint"), "id = ?1", std::int64_t{1}))
+      return rollback("storing the checkpoint");
   }
   if (Status s = exec(db_, "COMMIT"); !s) return rollback("commit");
   return Ok{};

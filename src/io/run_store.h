@@ -41,6 +41,13 @@ struct Checkpoint {
   StageRow stage;          ///< the stage it is in
 };
 
+/// What check_integrity found sound.
+struct Integrity {
+  long generations = 0, individuals = 0, stages = 0;
+  long sealed = 0;    ///< rows that matched their checksum
+  long unsealed = 0;  ///< rows stored before runs kept checksums (an older run's), unchecked
+};
+
 /// An open run database.
 class RunStore {
  public:
@@ -85,9 +92,13 @@ class RunStore {
   /// The run's config text, as stored ("config"); an error if it is missing
   /// (a database that lacks it is no complete run).
   Result<std::string> config_text() const;
-  /// SQLite's quick check of the whole file, and every stored number a
-  /// number: an error names what is damaged.
-  Status check_integrity() const;
+  /// Everything a run stored as it was written: SQLite's integrity check of
+  /// the file, every stored number a number, every row against its checksum
+  /// (its `digest`, written with it), and no row missing (generations and
+  /// individuals up to the checkpoint's, its stages); an error names the
+  /// first damage in the user's terms (a generation, an individual, the
+  /// checkpoint, the run's config).
+  Result<Integrity> check_integrity() const;
   /// Opened read-only (this user may not write the run).
   bool read_only() const { return read_only_; }
 
@@ -101,6 +112,8 @@ class RunStore {
   bool metric_table_ = true;  ///< false: an older database opened read-only, without generation_metric
   bool evaluations_column_ = true;  ///< false: one without individual.evaluations (each was evaluated once)
   bool stage_table_ = true;  ///< false: an older database opened read-only, without stage
+  int format_ = 1;           ///< PRAGMA user_version: 0 before rows carried checksums
+  bool digest_columns_ = true;  ///< false: an older database opened read-only, without digest columns
 };
 
 }  // namespace bx

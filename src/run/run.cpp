@@ -302,7 +302,7 @@ Status check_run(const Syllabus& syl) {
 Result<RunProgress> run_progress(const std::string& dir) {
   auto run = open_run(dir);
   if (!run) return Error{run.error()};
-  if (Status s = run->store->check_integrity(); !s) return Error{s.error()};
+  if (auto s = run->store->check_integrity(); !s) return Error{s.error()};
   auto at = standing(dir, *run->store, false);
   if (!at) return Error{at.error()};
   const auto& stages = run->syllabus.stages;
@@ -315,9 +315,23 @@ Result<RunProgress> run_progress(const std::string& dir) {
   return p;
 }
 
+Result<Integrity> verify_run(const std::string& dir) {
+  auto run = open_run(dir);  // its config and seed read
+  if (!run) return Error{run.error()};
+  auto sound = run->store->check_integrity();
+  if (!sound) return Error{sound.error()};
+  // and every genome read as its kind (a run begun before checksums has
+  // only this for its older rows)
+  for (std::int64_t id = 0; id < sound->individuals; ++id)
+    if (auto ind = run->store->individual(id); !ind) return Error{run_db_path(dir) + ": " + ind.error()};
+  return sound;
+}
+
 Status extend_run(const std::string& dir, const std::vector<std::string>& overrides) {
   auto run = open_run(dir);
   if (!run) return Error{run.error()};
+  // nothing is written to a damaged run
+  if (auto sound = run->store->check_integrity(); !sound) return Error{sound.error()};
   if (run->store->read_only()) return Error{dir + ": read-only here (permission denied): cannot lengthen the run"};
   RunStore* store = run->store.get();
   if (run->syllabus.staged())
@@ -378,7 +392,7 @@ Status drive_run(const std::string& dir, const RunOptions& opt) {
   if (!run) return Error{run.error()};
   RunStore& store = *run->store;
   if (store.read_only()) return Error{dir + ": read-only here (permission denied): cannot continue the run"};
-  if (Status s = store.check_integrity(); !s) return s;
+  if (auto s = store.check_integrity(); !s) return Error{s.error()};
   const std::vector<StageDef>& stages = run->syllabus.stages;
   const int n_stages = static_cast<int>(stages.size());
   if (Status s = check_run(run->syllabus); !s) return s;
@@ -463,6 +477,19 @@ Status drive_run(const std::string& dir, const RunOptions& opt) {
     Evolution evo(genotype_ops(st.cfg), st.cfg.evolution, stage_seed(run->seed, stage.index), st.cfg.sim.trial_score,
                   stage.index, founders, std::move(*retests));
     const int total = evo.total_generations();
+    if (!opt.quiet) {
+      // while few children are viable, a generation may take long before it is evaluated
+      auto last = std::chrono::steady_clock::now();
+      evo.on_redraws([&, last](long rejected) mutable {
+        const auto now = std::chrono::steady_clock::now();
+        if (now - last < std::chrono::seconds(2)) return;
+        last = now;
+        std::printf("%sgen %d/%d: %ld non-viable children redrawn so far (the limits of [develop]; at most "
+                    "evolution.max_random_redraws random ones in a row)%s",
+                    tty ? "\r\033[K" : "", state.generation + 1, total - 1, rejected, tty ? "" : "\n");
+        std::fflush(stdout);
+      });
+    }
     double first_step = 0;  // seconds
     int done_in_stage = 0;
     for (; !evo.finished(state); ++done, ++done_in_stage) {

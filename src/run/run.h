@@ -9,6 +9,7 @@
 
 #include "core/result.h"
 #include "io/config.h"
+#include "io/run_store.h"
 #include "io/syllabus.h"
 
 namespace bx {
@@ -30,6 +31,11 @@ struct RunProgress {
   bool complete = false;
 };
 Result<RunProgress> run_progress(const std::string& dir);
+
+/// `bestiary verify`: the run's database checked whole (RunStore::
+/// check_integrity), its config and seed read, and every stored genome read
+/// as its kind; an error names the first damage.
+Result<Integrity> verify_run(const std::string& dir);
 
 /// Lengthens a run: `overrides` may set only evolution.generations
 /// (generational) or evolution.evaluations (steady state), to at least what

@@ -191,40 +191,50 @@ TEST_F(RobustRun, SigtermToTheProcessGroupStopsOnceAndTakesTheWorkersAlong) {
   EXPECT_EQ(dump(run), dump(whole()));
 }
 
-// a damaged copy of the undisturbed run, and what `resume` and `best` say of it
+// a damaged copy of a run stopped after 3 generations, and what `resume` says of it
 struct Damage {
   const char* what;
-  std::string sql;       // run on the copy's database
-  std::string expected;  // in the one error line
+  std::string sql;        // run on the copy's database
+  std::string expected;   // in the one error line
+  std::string unsealed;   // what a run stored before rows carried checksums says ("": the same)
 };
 
 TEST_F(RobustRun, ADamagedRunDatabaseIsNamedNeverRunWithDefaultsOrCrashedOn) {
-  fs::path good = whole();
+  fs::path good = dir / "stopped";
+  ASSERT_EQ(bestiary("run " + cfg + " --out " + good.string() + " --stop-after 3 --quiet").code, 0);
+  const std::string changed = "does not match its checksum (damaged: a stored value changed since it was written)";
   const std::vector<Damage> damages = {
-      {"checkpoint not JSON", "UPDATE checkpoint SET state = '{bad'", "the checkpoint is not a JSON object"},
-      {"checkpoint without next_id", "UPDATE checkpoint SET state = '{\"evaluations\": 3, \"population\": [1]}'",
-       "the checkpoint lacks \"next_id\""},
+      {"checkpoint not JSON", "UPDATE checkpoint SET state = '{bad'", "the checkpoint " + changed,
+       "the checkpoint is not a JSON object"},
+      {"checkpoint without next_id", "UPDATE checkpoint SET state = json_remove(state, '$.next_id')",
+       "the checkpoint " + changed, "the checkpoint lacks \"next_id\""},
       {"checkpoint naming a missing individual",
-       "UPDATE checkpoint SET state = '{\"evaluations\": 3, \"next_id\": 9, \"population\": [99999]}', gen = 2",
+       "UPDATE checkpoint SET state = json_set(state, '$.population[0]', 99999)", "the checkpoint " + changed,
        "no individual 99999"},
       {"seed not a number", "UPDATE run SET value = 'abc' WHERE key = 'seed'",
-       "the run's seed is not a whole number (\"abc\")"},
-      {"no config", "DELETE FROM run WHERE key = 'config'", "the run's config is missing"},
-      {"text fitness", "UPDATE individual SET fitness = 'abc' WHERE id = 3",
+       "the run's seed is not a whole number (\"abc\")", ""},
+      {"no config", "DELETE FROM run WHERE key = 'config'", "the run's config is missing", ""},
+      {"text fitness", "UPDATE individual SET fitness = 'abc' WHERE id = 3", "individual 3 " + changed,
        "individual 3's fitness is not a number (\"abc\")"},
   };
-  for (const auto& d : damages) {
-    SCOPED_TRACE(d.what);
-    fs::path copy = dir / "damaged";
-    fs::remove_all(copy);
-    fs::copy(good, copy);
-    execute(copy / "run.sqlite", d.sql);
-    // resume would go on from the checkpoint: make it unfinished
-    execute(copy / "run.sqlite", "UPDATE checkpoint SET gen = 2 WHERE gen = 4");
-    Outcome r = bestiary("resume " + copy.string() + " --quiet");
-    EXPECT_EQ(r.code, 2) << r.out << r.err;
-    EXPECT_NE(r.err.find(d.expected), std::string::npos) << r.err;
-    EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << r.err;
+  for (const bool sealed : {true, false}) {
+    for (const auto& d : damages) {
+      SCOPED_TRACE(std::string(d.what) + (sealed ? "" : ", stored before checksums"));
+      fs::path copy = dir / "damaged";
+      fs::remove_all(copy);
+      fs::copy(good, copy);
+      if (!sealed) execute(copy / "run.sqlite", bxtest::kBeforeChecksums);
+      execute(copy / "run.sqlite", d.sql);
+      Outcome r = bestiary("resume " + copy.string() + " --quiet");
+      EXPECT_EQ(r.code, 2) << r.out << r.err;
+      const std::string& expected = sealed || d.unsealed.empty() ? d.expected : d.unsealed;
+      EXPECT_NE(r.err.find(expected), std::string::npos) << r.err;
+      EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << r.err;
+      // and `verify` says the same
+      Outcome v = bestiary("verify " + copy.string());
+      EXPECT_EQ(v.code, 2) << v.out << v.err;
+      EXPECT_NE(v.err.find(expected), std::string::npos) << v.err;
+    }
   }
   // garbage over the middle of the file: SQLite's check names it
   fs::path copy = dir / "overwritten";

@@ -224,6 +224,7 @@ TEST_F(RunCli, ACreatureNamedInARunIsEvaluatedExactlyAsScored) {
   {
     sqlite3* db = nullptr;
     ASSERT_EQ(sqlite3_open((run / "run.sqlite").c_str(), &db), SQLITE_OK);
+    EXPECT_EQ(sqlite3_exec(db, bxtest::kBeforeChecksums, nullptr, nullptr, nullptr), SQLITE_OK);
     EXPECT_EQ(sqlite3_exec(db, "ALTER TABLE individual DROP COLUMN seed", nullptr, nullptr, nullptr), SQLITE_OK);
     sqlite3_close(db);
   }
@@ -287,6 +288,7 @@ TEST_F(RunCli, ARunStoredBeforeGenotypeKindsResumesExactly) {
   {
     sqlite3* db = nullptr;
     ASSERT_EQ(sqlite3_open((run / "run.sqlite").c_str(), &db), SQLITE_OK);
+    EXPECT_EQ(sqlite3_exec(db, bxtest::kBeforeChecksums, nullptr, nullptr, nullptr), SQLITE_OK);
     EXPECT_EQ(sqlite3_exec(db, "ALTER TABLE individual DROP COLUMN kind", nullptr, nullptr, nullptr), SQLITE_OK);
     sqlite3_close(db);
   }
@@ -295,8 +297,13 @@ TEST_F(RunCli, ARunStoredBeforeGenotypeKindsResumesExactly) {
   const char* rows = "SELECT id, gen, genome, fitness, distance, parent1, parent2, operator, failure, seed, kind "
                      "FROM individual ORDER BY id";
   EXPECT_EQ(query(run / "run.sqlite", rows), query(dir / "whole" / "run.sqlite", rows));
-  EXPECT_EQ(query(run / "run.sqlite", "SELECT * FROM generation ORDER BY gen"),
-            query(dir / "whole" / "run.sqlite", "SELECT * FROM generation ORDER BY gen"));
+  const char* gens = "SELECT gen, evaluations, best, mean, median, best_id, rejected, failed FROM generation ORDER BY gen";
+  EXPECT_EQ(query(run / "run.sqlite", gens), query(dir / "whole" / "run.sqlite", gens));
+  // the generations it stored after (and the one it resumed at) carry checksums, and verify checks them
+  EXPECT_EQ(query(run / "run.sqlite", "SELECT count(digest) FROM generation"), "3|\n");
+  Outcome v = bestiary("verify " + run.string());
+  EXPECT_EQ(v.code, 0) << v.err;
+  EXPECT_NE(v.out.find("stored before runs kept checksums were read but cannot be checked"), std::string::npos) << v.out;
 }
 
 TEST_F(RunCli, BadInputGivesOneErrorLineAndWritesNothing) {
@@ -321,7 +328,7 @@ TEST_F(RunCli, BadInputGivesOneErrorLineAndWritesNothing) {
        "--stop-after: expected a whole number from 1 to 2147483647, got \"0\" (see " BESTIARY_BINARY " run --help)"},
       {"run " + cfg + " --out " + out.string() + " --frob",
        "The following argument was not expected: --frob (see " BESTIARY_BINARY " run --help)"},
-      {"runn " + cfg, "runn: no such command (did you mean \"run\"?); the commands: simulate, config, run, resume, "
+      {"runn " + cfg, "runn: no such command (did you mean \"run\"?); the commands: simulate, config, run, resume, verify, "
                       "best, presets, show, render, plot, check"},
       {"run quikc --out " + out.string(), "quikc: no such config file, and no preset of that name (did you mean "
                                           "\"quick\"?) (`" BESTIARY_BINARY " presets` lists them)"},

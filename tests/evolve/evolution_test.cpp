@@ -175,6 +175,14 @@ TEST_P(Loops, NoViableGenotypeStopsTheStepWithTheReasonMostOfThemGave) {
     EXPECT_NE(r.error().find(" of them: too large: body length "), std::string::npos) << r.error();
     EXPECT_NE(r.error().find("above develop.max_body_length 1e-06"), std::string::npos) << r.error();
   }
+  // and while it draws, progress hears the count of redraws at every thousandth
+  c.evolution.max_random_redraws = 2500;
+  Evolution evo(ops, c.evolution, 3);
+  std::vector<long> heard;
+  evo.on_redraws([&](long n) { heard.push_back(n); });
+  EvolutionState s;
+  ASSERT_FALSE(evo.step(s, ev));
+  EXPECT_EQ(heard, (std::vector<long>{1000, 2000}));
 }
 
 INSTANTIATE_TEST_SUITE_P(

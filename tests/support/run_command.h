@@ -65,6 +65,13 @@ inline std::string query(const fs::path& db_path, const std::string& sql) {
   return out;
 }
 
+/// SQL that turns a run database into one as Bestiary stored runs before
+/// rows carried checksums (format 0, no `digest` columns).
+inline const char* kBeforeChecksums =
+    "PRAGMA user_version = 0; ALTER TABLE run DROP COLUMN digest; ALTER TABLE generation DROP COLUMN digest; "
+    "ALTER TABLE individual DROP COLUMN digest; ALTER TABLE generation_metric DROP COLUMN digest; "
+    "ALTER TABLE checkpoint DROP COLUMN digest; ALTER TABLE stage DROP COLUMN digest;";
+
 /// Runs the bestiary binary with arguments.
 inline Outcome bestiary(const std::string& args) {
   return run_command(std::string(BESTIARY_BINARY) + " " + args);
