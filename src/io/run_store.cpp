@@ -361,6 +361,16 @@ Result<std::string> RunStore::config_text() const {
 }
 
 Result<Integrity> RunStore::check_integrity() const {
+  // one read transaction: a run going on beside it (show, verify of a live
+  // run) is seen at one generation boundary, not half of one
+  const bool snapshot = sqlite3_get_autocommit(db_) && exec(db_, "BEGIN").ok();
+  struct End {
+    sqlite3* db;
+    bool on;
+    ~End() {
+      if (on) exec(db, "COMMIT");
+    }
+  } end{db_, snapshot};
   // SQLite's own check: pages, records, and every index against its table
   Stmt s(db_, "PRAGMA integrity_check");
   std::string problems;
