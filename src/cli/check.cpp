@@ -71,6 +71,9 @@ int cmd_check(const CheckArgs& a) {
                                  {"failed", v.result.failed}, {"failure", v.result.failure},
                                  {"seed_fitness", v.seed_fitness}});
     out["median_other_seeds"] = rep.median_other_seeds;
+    // ratios of the gain over doing nothing, where doing nothing scores
+    out["idle"] = rep.basis.idle_scores ? nlohmann::json(rep.idle) : nlohmann::json(nullptr);
+    out["posture"] = rep.basis.posture;
     out["effector_mean"] = d.effector_mean;
     out["effector_sd"] = d.effector_sd;
     out["effector_hz"] = d.effector_hz;
@@ -102,6 +105,8 @@ int cmd_check(const CheckArgs& a) {
     for (double f : rep.scored_by_seed) std::printf(" %.4g", f);
     std::printf(" = %.6g (other seeds' ratios are to this)\n", rep.scored_fitness);
   }
+  if (rep.basis.idle_scores)
+    std::printf("  doing nothing (every joint held) scores %.6g: each ratio below is of the gain over it\n", rep.idle);
   int width = 0;  // the names in one column
   for (const auto& v : rep.variants) width = std::max(width, static_cast<int>(v.name.size()));
   for (const auto& v : rep.variants) {

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "core/rng.h"
+#include "eval/task_table.h"
 
 namespace bx {
 
@@ -61,13 +62,30 @@ CheckReport check_creature(const Creature& creature, const SimConfig& cfg, std::
   // what selection saw: the mean (or least) over the creature's evaluations, folded as the run folded them
   rep.scored_fitness =
       repeats.evaluations > 1 ? repeated_fitness(creature, cfg, seed, repeats, rep.scored, &rep.scored_by_seed) : scored;
-  auto ratio = [](double f, double of) { return of > 0 ? f / of : 0; };
+  // a task at which doing nothing scores: every ratio is of the gain over
+  // the creature's score with every joint held (its idle score)
+  const TaskRow& row = task_row(cfg.task_kind);
+  rep.basis = row.check_basis ? row.check_basis(cfg) : CheckBasis{};
+  double idle = 0;
+  auto ratio = [&](double f, double of) { return of - idle > 0 ? (f - idle) / (of - idle) : 0; };
   auto run = [&](std::string name, const SimConfig& c, std::uint64_t s, double of, Replay* frames = nullptr) {
     CheckVariant v{std::move(name), evaluate(creature, c, s, frames), 0, {}};
     v.ratio = ratio(v.result.fitness, of);
     rep.variants.push_back(std::move(v));
     return rep.variants.back().ratio;
   };
+  auto held_config = [&] {
+    SimConfig c = cfg;
+    c.hold_joints = true;
+    return c;
+  };
+  double held = -1;
+  if (rep.basis.idle_scores) {
+    // measured first: the ratios below need it
+    held = run("held: doing nothing", held_config(), seed, scored);
+    rep.idle = idle = rep.variants.back().result.fitness;
+    rep.variants.back().ratio = 0;
+  }
 
   // other physics seeds: their median, so one lucky or unlucky seed does not decide
   std::vector<double> seeds;
@@ -152,12 +170,8 @@ CheckReport check_creature(const Creature& creature, const SimConfig& cfg, std::
   }
   // every joint held still, the controller still acting on the task (a
   // catapult's release): a throw that keeps its distance is a fall
-  double held = -1;
-  {
-    SimConfig c = cfg;
-    c.hold_joints = true;
-    held = run(m.effectors.empty() ? "held (no effectors)" : "held", c, seed, scored);
-  }
+  if (!rep.basis.idle_scores)
+    held = run(m.effectors.empty() ? "held (no effectors)" : "held", held_config(), seed, scored);
   // locomotion twice as long: does the gait go on?
   std::string sustained_failure;
   if (cfg.task_kind == TaskKind::Locomotion && def.min_sustained > 0) {
@@ -181,11 +195,22 @@ CheckReport check_creature(const Creature& creature, const SimConfig& cfg, std::
     }
   }
 
-  if (held > kPassiveHeld)
+  if (rep.basis.idle_scores)
+    rep.notes.push_back("doing nothing (every joint held) scores " + fixed(idle) +
+                        ": every ratio is of the gain over it, (fitness - " + fixed(idle) + ") / (scored - " +
+                        fixed(idle) + ")");
+  else if (held > kPassiveHeld)
     rep.notes.push_back("mostly passive: with its joints held it keeps " + fixed(held) +
                         " of its fitness (a fall, not a swing)");
+  if (rep.basis.posture)
+    rep.notes.push_back("a posture, which constant signals may hold: the clamped gate does not apply");
 
   // the gates
+  if (rep.basis.idle_scores && !(std::min(scored, rep.scored_fitness) > idle)) {
+    rep.failures.push_back("the scored fitness " + fixed(std::min(scored, rep.scored_fitness)) +
+                           " is no more than doing nothing's " + fixed(idle) + " (every joint held)");
+    return rep;
+  }
   if (!(scored > 0) || !(rep.scored_fitness > 0)) {
     rep.failures.push_back("the scored fitness " + fixed(std::min(scored, rep.scored_fitness)) + " is not positive");
     return rep;
@@ -209,7 +234,7 @@ CheckReport check_creature(const Creature& creature, const SimConfig& cfg, std::
     for (std::size_t k = 0; k < buzz.size(); ++k) what += (k ? "; " : "") + buzz[k];
     rep.failures.push_back(what);
   }
-  if (clamped > def.max_clamped) {
+  if (clamped > def.max_clamped && !rep.basis.posture) {
     const std::string keep = "clamped effectors keep " + fixed(clamped);
     const std::string window = "in its last " + fixed(def.rest_seconds) + " s";
     if (rep.clamped_end_travel >= 0 && rep.clamped_end_travel < kRestTravel)
@@ -222,7 +247,7 @@ CheckReport check_creature(const Creature& creature, const SimConfig& cfg, std::
                                   ? ", still moving (" + share(rep.clamped_end_travel) + " of its length " + window + ")"
                                   : ""));
   }
-  if (held > def.max_held)
+  if (!rep.basis.idle_scores && held > def.max_held)
     rep.failures.push_back("held joints keep " + fixed(held) + " > " + fixed(def.max_held));
   if (!sustained_failure.empty()) rep.failures.push_back(sustained_failure);
   return rep;

@@ -12,6 +12,7 @@
 
 #include "eval/creature.h"
 #include "eval/evaluate.h"
+#include "eval/task_table.h"
 
 namespace bx {
 
@@ -96,6 +97,11 @@ struct CheckReport {
   /// over first; -1: not measured: not locomotion, the gate off, or a run
   /// that failed).
   double sustained_first = 0, sustained_last = 0, sustained = -1;
+  /// How its task is judged (TaskRow::check_basis): when doing nothing
+  /// scores, `idle` is the score with every joint held, and every ratio is
+  /// of the gain over it.
+  CheckBasis basis;
+  double idle = 0;
   /// The creature earns its fitness by buzzing: the lag or the half rate took it.
   bool buzzer = false;
   std::vector<std::string> failures;  ///< each gate that failed, with its figures; empty: passed

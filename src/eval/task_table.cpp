@@ -192,6 +192,12 @@ std::vector<SimField> reach_fields() {
   };
 }
 
+// doing nothing faces a light half the time (over headings on both sides), and stands as high as it stands
+CheckBasis light_basis(const SimConfig& c) {
+  return {c.light.goal == LightGoal::Face || c.light.goal == LightGoal::FaceAway, false};
+}
+CheckBasis reach_basis(const SimConfig&) { return {true, true}; }
+
 double& reach_seconds(SimConfig& c) { return c.reach.seconds; }
 double reach_drop(const SimConfig& c) { return c.reach.drop_height; }
 
@@ -220,11 +226,11 @@ const TaskRow kTasks[] = {
     {TaskKind::Strike, "strike", make_strike, strike_seconds, strike_drop, "strike.seconds", "strike.drop_height",
      strike_fields},
     {TaskKind::Light, "light", make_light, light_seconds, light_drop, "light.seconds", "light.drop_height", light_fields,
-     light_check, light_fold, light_fold_name},
+     light_check, light_fold, light_fold_name, light_basis},
     {TaskKind::Fight, "fight_or_flight", make_fight, light_seconds, light_drop, "light.seconds", "light.drop_height",
      fight_fields, fight_check, fight_fold_of, fight_fold_name},
     {TaskKind::Reach, "high_reach", make_reach, reach_seconds, reach_drop, "reach.seconds", "reach.drop_height",
-     reach_fields},
+     reach_fields, nullptr, nullptr, nullptr, reach_basis},
 };
 
 }  // namespace

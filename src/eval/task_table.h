@@ -19,6 +19,19 @@
 
 namespace bx {
 
+/// How `check` judges a task's fitness (eval/check.h).
+struct CheckBasis {
+  /// Doing nothing scores (a light to face is half faced, a body stands as
+  /// high as it stands): check's ratios are of the gain over the creature's
+  /// score with every joint held (its idle score), and the held gate, which
+  /// asks whether a fall earned the fitness, does not apply.
+  bool idle_scores = false;
+  /// The task asks for a posture, which constant signals may hold: the
+  /// clamped gate, which asks whether constant signals move the creature,
+  /// does not apply.
+  bool posture = false;
+};
+
 /// One task kind.
 struct TaskRow {
   TaskKind kind;
@@ -42,6 +55,8 @@ struct TaskRow {
   double (*fold)(const SimConfig&, std::span<const double>) = nullptr;
   /// What that fold is, for messages ("...: the fitness is X of N trials").
   std::string (*fold_name)(const SimConfig&) = nullptr;
+  /// How check judges it under this config (nullptr: doing nothing scores 0, no posture).
+  CheckBasis (*check_basis)(const SimConfig&) = nullptr;
 };
 
 /// The row of a kind.

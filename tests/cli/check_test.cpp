@@ -189,6 +189,41 @@ TEST(Check, ACreatureWithoutEffectorsIsAllPassive) {
   EXPECT_EQ(j["notes"].back(), "mostly passive: with its joints held it keeps 1 of its fitness (a fall, not a swing)");
 }
 
+// Where doing nothing scores (facing a light: half faced over headings on
+// both sides), check measures it with every joint held and takes every
+// ratio of the gain over it: a creature that never moves fails as doing
+// nothing, not as a fall (held keeps all) or a clamped gait (issue 34).
+TEST(Check, WhereDoingNothingScoresTheRatiosAreOfTheGainOverIt) {
+  nlohmann::json j = check_report(creature("pinned.json") +
+                                      " --set task.kind=light --set light.goal=face --set task.trials=4"
+                                      " --set light.seconds=3 --set check.other_seeds=2",
+                                  1);
+  ASSERT_TRUE(j["idle"].is_number()) << j.dump();
+  EXPECT_NEAR(j["idle"].get<double>(), 0.5, 0.01);  // (1 + cos h) / 2 over 45, 135, -135, -45
+  EXPECT_EQ(j["variants"][0]["name"], "held: doing nothing");
+  ASSERT_EQ(j["failures"].size(), 1u) << j.dump();
+  EXPECT_NE(j["failures"][0].get<std::string>().find("is no more than doing nothing's 0.5 (every joint held)"),
+            std::string::npos)
+      << j["failures"][0];
+  // a task at which doing nothing scores 0 has no idle score
+  nlohmann::json walk = check_report(creature("pinned.json") + " --set check.other_seeds=0", 1);
+  EXPECT_TRUE(walk["idle"].is_null());
+}
+
+// A posture (high reach) may be held by constant signals: the clamped gate
+// does not apply to it, and its idle score is its height with joints held.
+TEST(Check, APostureHeldByConstantSignalsIsNotFailedByTheClampedGate) {
+  // pinned.json holds its one effector at -1, which lifts its limb above its held start
+  nlohmann::json j = check_report(creature("pinned.json") +
+                                      " --set task.kind=high_reach --set reach.seconds=3 --set check.other_seeds=2",
+                                  0);
+  EXPECT_TRUE(j["posture"].get<bool>());
+  EXPECT_LT(j["idle"].get<double>(), j["fitness"].get<double>());
+  EXPECT_NEAR(ratio(j, "clamped"), 1.0, 0.05);  // constant signals keep all of it
+  for (const auto& f : j["failures"]) EXPECT_EQ(f.get<std::string>().find("clamped"), std::string::npos) << f;
+  EXPECT_NE(j["notes"].dump().find("a posture, which constant signals may hold"), std::string::npos) << j["notes"];
+}
+
 TEST(Check, ACreatureWithAConstantEffectorFailsTheClampedGate) {
   // pinned.json holds its one effector at -1: clamping changes nothing
   Outcome r = bestiary("check " + creature("pinned.json"));
