@@ -1,6 +1,7 @@
 #include "run/run.h"
 
 #include <fcntl.h>
+#include <sys/file.h>
 #include <signal.h>
 #include <unistd.h>
 
@@ -150,6 +151,34 @@ struct OpenRun {
   std::unique_ptr<RunStore> store;
   Syllabus syllabus;  ///< its stages (a plain config's run: one)
   std::uint64_t seed = 0;
+};
+
+// One process drives or lengthens a run at a time: it holds an flock on the
+// run's database file while it does (SQLite's own locks are fcntl locks, which
+// this does not touch; workers close every descriptor but their pipes, and
+// the lock goes with the process however it ends).
+class RunLock {
+ public:
+  static Result<std::unique_ptr<RunLock>> take(const std::string& dir) {
+    const int fd = ::open(run_db_path(dir).c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) return Error{run_db_path(dir) + ": " + std::strerror(errno)};
+    if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
+      const int err = errno;
+      ::close(fd);
+      if (err == EWOULDBLOCK)
+        return Error{dir + ": the run is going on in another process (which holds its lock): wait for it to end, "
+                           "or stop it first (Ctrl-C there); nothing was changed"};
+      return Error{run_db_path(dir) + ": cannot lock the run (" + std::strerror(err) + ")"};
+    }
+    return std::unique_ptr<RunLock>(new RunLock(fd));
+  }
+  ~RunLock() { ::close(fd_); }
+  RunLock(const RunLock&) = delete;
+  RunLock& operator=(const RunLock&) = delete;
+
+ private:
+  explicit RunLock(int fd) : fd_(fd) {}
+  int fd_;
 };
 
 Result<OpenRun> open_run(const std::string& dir, const std::vector<std::string>& overrides = {}) {
@@ -333,6 +362,8 @@ Status extend_run(const std::string& dir, const std::vector<std::string>& overri
   // nothing is written to a damaged run
   if (auto sound = run->store->check_integrity(); !sound) return Error{sound.error()};
   if (run->store->read_only()) return Error{dir + ": read-only here (permission denied): cannot lengthen the run"};
+  auto lock = RunLock::take(dir);
+  if (!lock) return Error{lock.error()};
   RunStore* store = run->store.get();
   if (run->syllabus.staged())
     return Error{dir + ": a run of several stages cannot be lengthened (yet): its stages' budgets are its syllabus'"};
@@ -392,6 +423,8 @@ Status drive_run(const std::string& dir, const RunOptions& opt) {
   if (!run) return Error{run.error()};
   RunStore& store = *run->store;
   if (store.read_only()) return Error{dir + ": read-only here (permission denied): cannot continue the run"};
+  auto lock = RunLock::take(dir);
+  if (!lock) return Error{lock.error()};
   if (auto s = store.check_integrity(); !s) return Error{s.error()};
   const std::vector<StageDef>& stages = run->syllabus.stages;
   const int n_stages = static_cast<int>(stages.size());

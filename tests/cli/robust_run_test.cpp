@@ -252,6 +252,42 @@ TEST_F(RobustRun, ADamagedRunDatabaseIsNamedNeverRunWithDefaultsOrCrashedOn) {
   EXPECT_NE(r.err.find("damaged"), std::string::npos) << r.err;
 }
 
+// A second resume (or a lengthening) of a run that is going on is refused in
+// one line and changes nothing: the run ends as an undisturbed one, and its
+// log has no word of the refusal (issue 36: it died on "UNIQUE constraint
+// failed" and wrote into the live run's log)
+TEST_F(RobustRun, AResumeOfARunGoingOnIsRefusedAndChangesNothing) {
+  const std::string longer = (dir / "longer.toml").string();
+  std::ofstream(longer) << "[genome]\ndialect = \"sims1994\"\n[evolution]\npopulation = 12\ngenerations = 7\n"
+                           "[task]\nseconds = 2\n";
+  fs::path undisturbed = dir / "undisturbed";
+  ASSERT_EQ(bestiary("run " + longer + " --out " + undisturbed.string() + " --quiet").code, 0);
+  fs::path run = dir / "live";
+  pid_t pid = start({"run", longer, "--out", run.string(), "--workers", "1", "--quiet"});
+  // once its first generation is stored
+  for (int k = 0; k < 2000 && query(run / "run.sqlite", "SELECT count(*) FROM generation") == ""; ++k)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  for (const std::string& args : {"resume " + run.string() + " --quiet",
+                                  "resume " + run.string() + " --set evolution.generations=9 --quiet"}) {
+    SCOPED_TRACE(args);
+    Outcome r = bestiary(args);
+    ASSERT_TRUE(alive(pid)) << "the run ended before it could be tried";
+    EXPECT_EQ(r.code, 2) << r.out << r.err;
+    EXPECT_EQ(r.err, "bestiary: " + run.string() +
+                         ": the run is going on in another process (which holds its lock): wait for it to end, or "
+                         "stop it first (Ctrl-C there); nothing was changed\n");
+  }
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << status;
+  EXPECT_EQ(dump(run), dump(undisturbed));
+  const std::string log = slurp(run / "run.log");
+  EXPECT_EQ(log.find("session:"), log.rfind("session:")) << log;  // its own session only
+  EXPECT_EQ(slurp(run / "config.toml"), slurp(undisturbed / "config.toml"));
+  // and once it ended, resume says it is complete
+  EXPECT_EQ(bestiary("resume " + run.string() + " --quiet").code, 0);
+}
+
 TEST_F(RobustRun, ResumeRunsTheStoredConfigAndSaysWhenConfigTomlDiffers) {
   fs::path run = dir / "edited";
   ASSERT_EQ(bestiary("run " + cfg + " --out " + run.string() + " --stop-after 2 --quiet").code, 0);
