@@ -203,7 +203,8 @@ CheckReport check_creature(const Creature& creature, const SimConfig& cfg, std::
     rep.notes.push_back("mostly passive: with its joints held it keeps " + fixed(held) +
                         " of its fitness (a fall, not a swing)");
   if (rep.basis.posture)
-    rep.notes.push_back("a posture, which constant signals may hold: the clamped gate does not apply");
+    rep.notes.push_back("a posture task, whose highest point constant signals may reach (a pose held, or the swing "
+                        "as the muscles come on): the clamped gate does not apply");
 
   // the gates
   if (rep.basis.idle_scores && !(std::min(scored, rep.scored_fitness) > idle)) {

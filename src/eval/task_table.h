@@ -26,7 +26,9 @@ struct CheckBasis {
   /// score with every joint held (its idle score), and the held gate, which
   /// asks whether a fall earned the fitness, does not apply.
   bool idle_scores = false;
-  /// The task asks for a posture, which constant signals may hold: the
+  /// The task asks for a posture, whose score constant signals may earn (a
+  /// pose held, or the swing as the muscles come on: lessin2015's Fast ESP
+  /// creatures "jump as high as possible, or reach one limb up"): the
   /// clamped gate, which asks whether constant signals move the creature,
   /// does not apply.
   bool posture = false;
