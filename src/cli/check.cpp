@@ -68,7 +68,7 @@ int cmd_check(const CheckArgs& a) {
     out["failure"] = s.failure;
     for (const auto& v : rep.variants)
       out["variants"].push_back({{"name", v.name}, {"fitness", v.result.fitness}, {"ratio", v.ratio},
-                                 {"failed", v.result.failed}, {"failure", v.result.failure},
+                                 {"gate", v.gate}, {"failed", v.result.failed}, {"failure", v.result.failure},
                                  {"seed_fitness", v.seed_fitness}});
     out["median_other_seeds"] = rep.median_other_seeds;
     // ratios of the gain over doing nothing, where doing nothing scores
@@ -110,7 +110,8 @@ int cmd_check(const CheckArgs& a) {
   int width = 0;  // the names in one column
   for (const auto& v : rep.variants) width = std::max(width, static_cast<int>(v.name.size()));
   for (const auto& v : rep.variants) {
-    std::printf("  %-*s fitness %-12.6g ratio %s", width, v.name.c_str(), v.result.fitness, ratio_text(v.ratio).c_str());
+    std::printf("  %-*s fitness %-12.6g ratio %-7s gate %s", width, v.name.c_str(), v.result.fitness,
+                ratio_text(v.ratio).c_str(), v.gate.c_str());
     if (v.result.failed) std::printf("  (failed: %s)", v.result.failure.c_str());
     if (!v.seed_fitness.empty()) {
       std::printf("  by seed:");
@@ -133,8 +134,11 @@ int cmd_check(const CheckArgs& a) {
   if (d.effector_hz.empty()) std::printf(" none");
   std::printf("\n  largest joint separation %.2f mm", 1000 * d.max_joint_gap);
   if (d.worst_joint >= 0) std::printf(" (joint %d)", d.worst_joint);
-  std::printf(", stop overshoot %.3f, deepest interpenetration %.2f mm\n", d.max_stop_overshoot,
-              1000 * d.max_penetration);
+  std::printf(", stop overshoot %.3f (rad, or m for a slider), deepest interpenetration %.2f mm\n",
+              d.max_stop_overshoot, 1000 * d.max_penetration);
+  std::printf("  (ratio: each variant's fitness over the scored one; clamped: every effector held at its mean "
+              "signal, so constant signals must not travel; held: every joint held still by its motor; stop "
+              "overshoot: how far any joint went past its limit)\n");
   for (const auto& n : rep.notes) std::printf("note: %s\n", n.c_str());
   if (rep.passed()) {
     std::printf("verdict: pass\n");

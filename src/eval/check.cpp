@@ -69,7 +69,7 @@ CheckReport check_creature(const Creature& creature, const SimConfig& cfg, std::
   double idle = 0;
   auto ratio = [&](double f, double of) { return of - idle > 0 ? (f - idle) / (of - idle) : 0; };
   auto run = [&](std::string name, const SimConfig& c, std::uint64_t s, double of, Replay* frames = nullptr) {
-    CheckVariant v{std::move(name), evaluate(creature, c, s, frames), 0, {}};
+    CheckVariant v{std::move(name), evaluate(creature, c, s, frames), 0, {}, {}};
     v.ratio = ratio(v.result.fitness, of);
     rep.variants.push_back(std::move(v));
     return rep.variants.back().ratio;
@@ -104,7 +104,7 @@ CheckReport check_creature(const Creature& creature, const SimConfig& cfg, std::
   const double base = median(at_dt);
   auto compare = [&](const std::string& name, const SimConfig& c) {
     if (ks == 1) return run(name, c, seed, scored);
-    CheckVariant v{name + " (median of " + std::to_string(ks) + " seeds)", evaluate(creature, c, seed), 0, {}};
+    CheckVariant v{name + " (median of " + std::to_string(ks) + " seeds)", evaluate(creature, c, seed), 0, {}, {}};
     std::vector<double> f{v.result.fitness};
     for (int k = 1; k < ks; ++k) f.push_back(evaluate(creature, c, check_seed(seed, k)).fitness);
     v.seed_fitness = f;
@@ -195,6 +195,26 @@ CheckReport check_creature(const Creature& creature, const SimConfig& cfg, std::
     }
   }
 
+  // each variant's gate, in words, for the report
+  for (CheckVariant& v : rep.variants) {
+    const auto starts = [&](const char* p) { return v.name.rfind(p, 0) == 0; };
+    if (starts("seed "))
+      v.gate = "their median >= " + fixed(def.min_other_seeds);
+    else if (starts("dt/") || starts("2x iterations"))
+      v.gate = "in [" + fixed(def.min_converged) + ", " + fixed(def.max_converged) + "]";
+    else if (starts("motor lag"))
+      v.gate = ">= " + fixed(def.min_motor_lag);
+    else if (starts("brain at"))
+      v.gate = ">= " + fixed(def.min_half_rate);
+    else if (starts("held: doing nothing"))
+      v.gate = "none: the idle score the ratios subtract";
+    else if (starts("clamped"))
+      v.gate = rep.basis.posture ? "none: a posture task"
+                                 : "<= " + fixed(def.max_clamped) + ", or at rest over its last " +
+                                       fixed(def.rest_seconds) + " s";
+    else if (starts("held"))
+      v.gate = "<= " + fixed(def.max_held);
+  }
   if (rep.basis.idle_scores)
     rep.notes.push_back("doing nothing (every joint held) scores " + fixed(idle) +
                         ": every ratio is of the gain over it, (fitness - " + fixed(idle) + ") / (scored - " +

@@ -72,6 +72,8 @@ struct CheckVariant {
   /// median fitness over the seeds)
   EvalResult result;
   double ratio = 0;   ///< its fitness over the scored fitness (or medians over medians)
+  /// The gate its ratio is judged by, in words ("median >= 0.75", "in [0.75, 1.25]", "none: ...").
+  std::string gate;
   /// Under converge_seeds > 1: the fitness under each seed, the scored seed
   /// first (a step that switches some seeds to another outcome shows here).
   std::vector<double> seed_fitness;

@@ -201,6 +201,10 @@ TEST(Check, WhereDoingNothingScoresTheRatiosAreOfTheGainOverIt) {
   ASSERT_TRUE(j["idle"].is_number()) << j.dump();
   EXPECT_NEAR(j["idle"].get<double>(), 0.5, 0.01);  // (1 + cos h) / 2 over 45, 135, -135, -45
   EXPECT_EQ(j["variants"][0]["name"], "held: doing nothing");
+  // each variant says the gate it is judged by
+  EXPECT_EQ(j["variants"][0]["gate"], "none: the idle score the ratios subtract");
+  for (const auto& v : j["variants"])
+    if (v["name"] == "dt/2") EXPECT_EQ(v["gate"], "in [0.75, 1.25]");
   ASSERT_EQ(j["failures"].size(), 1u) << j.dump();
   EXPECT_NE(j["failures"][0].get<std::string>().find("is no more than doing nothing's 0.5 (every joint held)"),
             std::string::npos)
