@@ -2,7 +2,7 @@
 """Runs presets over several seeds (resuming any that were interrupted) and
 prints the results table of docs/results.md.
 
-    scripts/results.py PRESET:SEEDS [PRESET:SEEDS ...] [--runs DIR] [--workers K]
+    scripts/results.py PRESET:SEEDS [PRESET:SEEDS ...] [--runs-dir DIR] [--workers K]
 
 e.g. scripts/results.py miconi2006-small:1-5 chaumont2007-walker-small:1-3
 
