@@ -35,13 +35,17 @@ const std::vector<Vec3>& LocomotionTask::parts_of(const Observation& o) {
 
 void LocomotionTask::begin(const Observation& o) {
   work_ = o.muscle_work();
-  if (def_.metric == DistanceMetric::Forward) heading_ = heading(o);
+  if (def_.metric == DistanceMetric::Forward || def_.metric == DistanceMetric::Front)
+    step_heading_ = heading_ = heading(o);
   start(o.centre_of_mass(), parts_of(o));
 }
 
 void LocomotionTask::observe(const Observation& o) {
   work_ = o.muscle_work();
-  if (def_.metric == DistanceMetric::Forward) heading_ = heading(o);
+  if (def_.metric == DistanceMetric::Forward || def_.metric == DistanceMetric::Front) {
+    step_heading_ = heading_;
+    heading_ = heading(o);
+  }
   observe(o.time(), o.centre_of_mass(), parts_of(o));
 }
 
@@ -60,6 +64,8 @@ void LocomotionTask::begin_measure(double t, Vec3 com) {
   const double end = def_.activation == Activation::Always ? def_.seconds : t + def_.seconds;
   window_ = (end - t) / std::max(1, def_.windows);
   marks_.assign(1, com);
+  path_ = 0;
+  path_marks_.assign(1, 0);
 }
 
 // moves on once the parts have been still for settle.seconds, gives up after
@@ -97,10 +103,17 @@ void LocomotionTask::observe(double t, Vec3 com, const std::vector<Vec3>& parts)
     case Phase::Measure: {
       // without the sequence, measuring starts after skip_fraction of the time
       if (!measured_ && t >= def_.skip_fraction * def_.seconds - 1e-9) begin_measure(t, com);
+      // the step just taken, front first (not the one measuring began at)
+      if (measured_ && t > t_start_ + 1e-12 && def_.metric == DistanceMetric::Front) {
+        const Vec3 d = com - last_;
+        path_ += d.x * std::cos(step_heading_) + d.y * std::sin(step_heading_);
+      }
       if (measured_)
         while (static_cast<int>(marks_.size()) <= def_.windows &&
-               t >= t_start_ + static_cast<double>(marks_.size()) * window_ - 1e-9)
+               t >= t_start_ + static_cast<double>(marks_.size()) * window_ - 1e-9) {
           marks_.push_back(com);
+          path_marks_.push_back(path_);
+        }
       double end = def_.activation == Activation::Always ? def_.seconds : phase_start_ + def_.seconds;
       if (t >= end - 1e-9) phase_ = Phase::Done;
       break;
@@ -116,17 +129,25 @@ double LocomotionTask::displacement(Vec3 from, Vec3 to) const {
     case DistanceMetric::Planar: break;
     case DistanceMetric::AlongX: return d.x;
     case DistanceMetric::Forward: return d.x * forward_.x + d.y * forward_.y;
+    case DistanceMetric::Front: break;  // a path, not a displacement (path_)
   }
   return std::hypot(d.x, d.y);
 }
 
-double LocomotionTask::distance() const { return measured_ ? displacement(start_, last_) : 0; }
+double LocomotionTask::distance() const {
+  if (!measured_) return 0;
+  return def_.metric == DistanceMetric::Front ? path_ : displacement(start_, last_);
+}
 
 double LocomotionTask::scored_distance() const {
   if (def_.windows <= 1) return distance();
   if (!measured_ || static_cast<int>(marks_.size()) < def_.windows + 1) return 0;
-  double least = displacement(marks_[0], marks_[1]);
-  for (std::size_t i = 2; i < marks_.size(); ++i) least = std::min(least, displacement(marks_[i - 1], marks_[i]));
+  auto window = [&](std::size_t i) {
+    return def_.metric == DistanceMetric::Front ? path_marks_[i] - path_marks_[i - 1]
+                                                : displacement(marks_[i - 1], marks_[i]);
+  };
+  double least = window(1);
+  for (std::size_t i = 2; i < marks_.size(); ++i) least = std::min(least, window(i));
   return def_.windows * least;
 }
 

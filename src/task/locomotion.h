@@ -20,6 +20,12 @@ enum class DistanceMetric {
   /// its heading (task.h's heading(), its front on the ground), the
   /// forward lessin2015's light tasks aim (task/light.h)
   Forward,
+  /// the path travelled front first: each step's horizontal displacement
+  /// projected on the heading the creature had at the step's start, summed.
+  /// A gait that curves scores its whole path, one that backs or sidles
+  /// none of it: locomotion along the creature's own front, which a skill
+  /// that steers it (lessin2015's turn to light) can then aim.
+  Front,
 };
 
 /// What the fitness is made of.
@@ -131,7 +137,10 @@ class LocomotionTask : public Task {
   Phase phase_ = Phase::Measure;
   bool measured_ = false;
   Vec3 start_, last_;
-  double heading_ = 0;        // the root's heading at the last observation (DistanceMetric::Forward)
+  double heading_ = 0;        // the root's heading at the last observation (DistanceMetric::Forward, Front)
+  double step_heading_ = 0;   // ... at the one before: the heading a step starts from (DistanceMetric::Front)
+  double path_ = 0;           // the path travelled front first while measured (DistanceMetric::Front)
+  std::vector<double> path_marks_;  // path_ where each window began (and the last ended)
   Vec3 forward_{1, 0, 0};     // the unit forward on the ground when measuring began (DistanceMetric::Forward)
   std::vector<Vec3> marks_;  // the centre of mass where each window began (and the last ended)
   double window_ = 0;        // s: each window's length

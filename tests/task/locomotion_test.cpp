@@ -359,6 +359,47 @@ TEST(Locomotion, ForwardCountsDisplacementAlongTheHeadingWhenMeasuringBegan) {
   EXPECT_NEAR(walked(DistanceMetric::Forward, h, along, 2.0, 2), 2, 1e-12);
 }
 
+// task.metric = "front": the path travelled front first. A walker that
+// goes round a circle nose first scores the circle's path (the chords of
+// its steps, each along the heading it started from); backwards, minus
+// that; sideways, nothing; "forward" scores the same circle nearly 0.
+TEST(Locomotion, FrontCountsThePathTravelledFrontFirst) {
+  auto circled = [](DistanceMetric metric, double facing, int windows = 1) {
+    LocomotionDef def;
+    const int n = 64;  // steps round the circle
+    def.seconds = n;
+    def.metric = metric;
+    def.windows = windows;
+    LocomotionTask t(def, 1.0, 1);
+    Walker o;
+    const double r = 2;
+    auto at = [&](int i) {
+      const double a = 2 * kPi * i / n;
+      o.com = {r * std::cos(a), r * std::sin(a), 0.5};
+      o.h = a + kPi / 2 + facing;  // the tangent, turned by `facing`
+    };
+    at(0);
+    t.begin(o);
+    for (int i = 1; i <= n; ++i) {
+      o.t = i;
+      at(i);
+      t.observe(o);
+    }
+    EXPECT_TRUE(t.done());
+    return t.scored_distance();
+  };
+  // each step's chord 2 r sin(pi / n), along a heading half a step behind it
+  const double chord = 2 * 2 * std::sin(kPi / 64), along = chord * std::cos(kPi / 64);
+  EXPECT_NEAR(circled(DistanceMetric::Front, 0), 64 * along, 1e-9);
+  EXPECT_NEAR(64 * along, 2 * kPi * 2, 0.03);  // about the circumference
+  EXPECT_NEAR(circled(DistanceMetric::Front, kPi), -64 * along, 1e-9);    // backwards
+  // sideways: only each chord's tilt from the side (half a step's turn), 5% of the path
+  EXPECT_NEAR(circled(DistanceMetric::Front, kPi / 2), 64 * chord * std::sin(kPi / 64), 1e-9);
+  EXPECT_NEAR(circled(DistanceMetric::Forward, 0), 0, 1e-9);              // back where it began
+  // windows: the least half, twice
+  EXPECT_NEAR(circled(DistanceMetric::Front, 0, 2), 64 * along, 1e-9);
+}
+
 // measuring after settling: forward is the heading when settling ended
 TEST(Locomotion, ForwardIsTheHeadingWhenSettlingEnded) {
   LocomotionDef def;
