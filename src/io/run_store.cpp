@@ -310,28 +310,23 @@ Result<std::unique_ptr<RunStore>> RunStore::open(const std::string& path) {
                    " there)"};
   // databases written before individuals kept their evaluation seed get the
   // column (empty: the seed is derived, see individual()); read-only, they stay as they are
-  Stmt has_seed(*db, "SELECT count(*) FROM pragma_table_info('individual') WHERE name = 'seed'");
-  if (has_seed.ok() && has_seed.step() == SQLITE_ROW && has_seed.i64(0) == 0)
+  if (!has_column(*db, "individual", "seed"))
     store->seed_column_ = writable && exec(*db, "ALTER TABLE individual ADD COLUMN seed TEXT").ok();
   // and before they kept their genotype's kind: all were graph genomes
-  Stmt has_kind(*db, "SELECT count(*) FROM pragma_table_info('individual') WHERE name = 'kind'");
-  if (has_kind.ok() && has_kind.step() == SQLITE_ROW && has_kind.i64(0) == 0)
+  if (!has_column(*db, "individual", "kind"))
     store->kind_column_ =
         writable && exec(*db, "ALTER TABLE individual ADD COLUMN kind TEXT NOT NULL DEFAULT 'graph'").ok();
   // and before an elite's fitness could be the mean of several evaluations
-  Stmt has_evaluations(*db, "SELECT count(*) FROM pragma_table_info('individual') WHERE name = 'evaluations'");
-  if (has_evaluations.ok() && has_evaluations.step() == SQLITE_ROW && has_evaluations.i64(0) == 0)
+  if (!has_column(*db, "individual", "evaluations"))
     store->evaluations_column_ =
         writable && exec(*db, "ALTER TABLE individual ADD COLUMN evaluations INTEGER NOT NULL DEFAULT 1").ok();
   // and before a generation kept its task's metrics
-  Stmt has_metrics(*db, "SELECT count(*) FROM sqlite_schema WHERE type = 'table' AND name = 'generation_metric'");
-  if (has_metrics.ok() && has_metrics.step() == SQLITE_ROW && has_metrics.i64(0) == 0)
+  if (!has_table(*db, "generation_metric"))
     store->metric_table_ = writable && exec(*db, "CREATE TABLE generation_metric (gen INTEGER NOT NULL, "
                                                  "name TEXT NOT NULL, mean REAL NOT NULL, nonzero REAL NOT NULL, "
                                                  "PRIMARY KEY (gen, name))").ok();
   // and before a run could have stages
-  Stmt has_stage(*db, "SELECT count(*) FROM sqlite_schema WHERE type = 'table' AND name = 'stage'");
-  if (has_stage.ok() && has_stage.step() == SQLITE_ROW && has_stage.i64(0) == 0)
+  if (!has_table(*db, "stage"))
     store->stage_table_ = writable && exec(*db, "CREATE TABLE stage (idx INTEGER PRIMARY KEY, name TEXT NOT NULL, "
                                                 "first_gen INTEGER NOT NULL, first_id INTEGER NOT NULL)").ok();
   // and before rows carried checksums: those written from now on get them
