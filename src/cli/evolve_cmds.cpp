@@ -15,6 +15,7 @@
 
 #include "cli/commands.h"
 #include "cli/creature.h"
+#include "cluster/mpi_evaluator.h"
 #include "core/text.h"
 #include "core/files.h"
 #include "eval/creature.h"
@@ -114,9 +115,34 @@ int finish(const std::string& dir, const Status& s) {
   return 0;
 }
 
+// The evaluator a run or resume asked for: the process pool (`--workers`),
+// or, under mpirun, the other MPI ranks (`--evaluator mpi`; docs/cluster.md).
+struct EvaluatorArgs {
+  std::string kind = "pool";
+  bool workers_given = false;
+};
+
+Status check_evaluator(const EvaluatorArgs& e) {
+  if (e.kind != "mpi") return Ok{};
+  if (e.workers_given)
+    return Error{"--workers and --evaluator mpi: under MPI the ranks other than 0 are the workers "
+                 "(mpirun -np N gives N - 1); drop --workers"};
+  return Ok{};
+}
+
+RunOptions run_options(const EvaluatorArgs& e, int workers, bool quiet, int stop_after) {
+  RunOptions o;
+  o.workers = workers;
+  o.quiet = quiet;
+  o.stop_after = stop_after;
+  if (e.kind == "mpi") o.evaluator = make_mpi_evaluator;
+  return o;
+}
+
 struct RunArgs {
   std::string config, out;
   std::uint64_t seed = 1;
+  EvaluatorArgs evaluator;
   int workers = default_workers();
   std::vector<std::string> set;
   bool quiet = false;
@@ -131,6 +157,10 @@ int cmd_run(const RunArgs& a) {
   const RunConfig* cfg = &syl->stages.front().cfg;
   if (Status s = check_run(*syl); !s) return fail(s.error());
   if (a.workers < 0) return fail("--workers: expected 0 or more, got " + std::to_string(a.workers));
+  if (Status s = check_evaluator(a.evaluator); !s) return fail(s.error());
+  const int workers = a.evaluator.kind == "mpi" ? mpi_evaluating_ranks() : a.workers;
+  if (a.evaluator.kind == "mpi")
+    if (Status s = mpi_ready(); !s) return fail(s.error());  // before a folder exists
   std::string dir = a.out;
   if (dir.empty()) {
     dir = "runs/" + src->first + "-" + timestamp();
@@ -142,17 +172,23 @@ int cmd_run(const RunArgs& a) {
                                ? std::string(to_string(cfg->dialect))
                                : std::string(creature_kind_row(cfg->sim.creature).name) + " creatures";
   const std::string stages = syl->staged() ? ", " + std::to_string(syl->stages.size()) + " stages" : "";
-  if (!a.quiet) std::printf("run %s: %s%s, seed %llu, %d workers -> %s\n", src->first.c_str(), what.c_str(),
-                            stages.c_str(), static_cast<unsigned long long>(a.seed), a.workers, dir.c_str());
+  if (!a.quiet)
+    std::printf("run %s: %s%s, seed %llu, %d %s -> %s\n", src->first.c_str(), what.c_str(), stages.c_str(),
+                static_cast<unsigned long long>(a.seed), workers,
+                a.evaluator.kind == "mpi" ? "MPI ranks evaluating" : "workers", dir.c_str());
   catch_interrupts(dir);
-  const Status s = drive_run(dir, {a.workers, a.quiet, a.stop_after});
+  const Status s = drive_run(dir, run_options(a.evaluator, a.workers, a.quiet, a.stop_after));
   // refused before a generation was stored: it leaves nothing, as a run refused before it began
   if (!s) discard_unstarted_run(dir);
   return finish(dir, s);
 }
 
-int cmd_resume(const std::string& dir, int workers, bool quiet, const std::vector<std::string>& set) {
+int cmd_resume(const std::string& dir, const EvaluatorArgs& evaluator, int workers, bool quiet,
+               const std::vector<std::string>& set) {
   if (!fs::is_directory(dir)) return fail(dir + ": no such run directory");
+  if (Status s = check_evaluator(evaluator); !s) return fail(s.error());
+  if (evaluator.kind == "mpi")
+    if (Status s = mpi_ready(); !s) return fail(s.error());
   if (!set.empty())
     if (Status s = extend_run(dir, set); !s) return fail(s.error());
   auto p = run_progress(dir);
@@ -167,7 +203,7 @@ int cmd_resume(const std::string& dir, int workers, bool quiet, const std::vecto
     std::printf("resuming %s at generation %d of %d (%ld evaluations done)\n", dir.c_str(), p->generations_done,
                 p->generations_total, p->evaluations);
   catch_interrupts(dir);
-  return finish(dir, drive_run(dir, {workers, quiet, 0}));
+  return finish(dir, drive_run(dir, run_options(evaluator, workers, quiet, 0)));
 }
 
 int cmd_verify(const std::string& dir) {
@@ -278,26 +314,39 @@ void add_evolve_commands(CLI::App& app) {
   r->add_option("config", run.config, "Preset name (see `bestiary presets`) or config file")->required();
   r->add_option("--out", run.out, "Run directory to create (default runs/NAME-TIME)");
   r->add_option("--seed", run.seed, "Master seed of the run")->default_val(1)->check(whole_number(0, UINT64_MAX));
-  r->add_option("--workers", run.workers, "Worker processes (default: the number of cores; 0: in-process)")
-      ->check(whole_number(0, 256));
+  auto* rw = r->add_option("--workers", run.workers, "Worker processes (default: the number of cores; 0: in-process)")
+                 ->check(whole_number(0, 256));
+  r->add_option("--evaluator", run.evaluator.kind,
+                "pool (worker processes on this machine; default) or mpi (under mpirun: the other ranks evaluate; "
+                "docs/cluster.md)")
+      ->check(CLI::IsMember({"pool", "mpi"}));
   r->add_option("--set", run.set, "Override a config key: section.key=value (repeatable)");
   r->add_flag("--quiet", run.quiet, "No progress output");
   r->add_option("--stop-after", run.stop_after, "Stop after N generations (the run stays resumable)")
       ->check(whole_number(1, INT32_MAX));
-  r->callback([] { std::exit(cmd_run(run)); });
+  r->callback([rw] {
+    run.evaluator.workers_given = rw->count() > 0;
+    std::exit(cmd_run(run));
+  });
 
   static std::string resume_dir;
   static int resume_workers = default_workers();
+  static EvaluatorArgs resume_evaluator;
   static bool resume_quiet = false;
   static std::vector<std::string> resume_set;
   auto* s = app.add_subcommand("resume", "Continue a run from its last checkpoint");
   s->add_option("dir", resume_dir, "Run directory")->required();
-  s->add_option("--workers", resume_workers, "Worker processes (results do not depend on it)")
-      ->check(whole_number(0, 256));
+  auto* sw = s->add_option("--workers", resume_workers, "Worker processes (results do not depend on it)")
+                 ->check(whole_number(0, 256));
+  s->add_option("--evaluator", resume_evaluator.kind, "pool (default) or mpi (under mpirun; results do not depend on it)")
+      ->check(CLI::IsMember({"pool", "mpi"}));
   s->add_flag("--quiet", resume_quiet, "No progress output");
   s->add_option("--set", resume_set,
                 "Lengthen the run: evolution.generations=N (generational) or evolution.evaluations=N (steady state)");
-  s->callback([] { std::exit(cmd_resume(resume_dir, resume_workers, resume_quiet, resume_set)); });
+  s->callback([sw] {
+    resume_evaluator.workers_given = sw->count() > 0;
+    std::exit(cmd_resume(resume_dir, resume_evaluator, resume_workers, resume_quiet, resume_set));
+  });
 
   static std::string verify_dir;
   auto* v = app.add_subcommand("verify", "Check a run's database whole: every stored row against its checksum, none missing");

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "cli/commands.h"
+#include "cluster/mpi_evaluator.h"
 #include "core/text.h"
 #include "core/version.h"
 
@@ -64,6 +65,10 @@ Status make_parent_dir(const std::string& flag, const std::string& path) {
 
 int main(int argc, char** argv) {
   bx::set_program(argc > 0 ? argv[0] : nullptr);
+  // under mpirun with --evaluator mpi: rank 0 goes on with the command, the
+  // other ranks evaluate for it until it ends (docs/cluster.md)
+  if (bx::mpi_requested(argc, argv))
+    if (auto code = bx::mpi_start(&argc, &argv)) return *code;
   CLI::App app{"Bestiary: evolve virtual creatures, bodies and brains together, in 3D physics"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string(bx::bestiary_version()) + " (" + bx::bestiary_git() + ")");

@@ -77,6 +77,17 @@ double repeated_genotype_fitness(const Genotype& g, const SimConfig& cfg, std::u
   return score;
 }
 
+std::vector<int> longest_first(const std::vector<EvalJob>& jobs) {
+  std::vector<int> order(jobs.size());
+  std::vector<double> cost(jobs.size());
+  for (int i = 0; i < static_cast<int>(jobs.size()); ++i) {
+    order[i] = i;
+    cost[i] = jobs[i].genotype->cost_hint();
+  }
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return cost[a] > cost[b]; });
+  return order;
+}
+
 SerialEvaluator::SerialEvaluator(const std::vector<SimConfig>& tasks) {
   for (const SimConfig& c : tasks) steps_.emplace_back(c);
 }
@@ -250,15 +261,8 @@ int ProcessPoolEvaluator::workers() const { return static_cast<int>(impl_->worke
 std::vector<EvalOutcome> ProcessPoolEvaluator::evaluate(const std::vector<EvalJob>& jobs) {
   auto& im = *impl_;
   std::vector<EvalOutcome> out(jobs.size());
-  // longest jobs first (a graph genome: most parts), so no worker idles on
-  // one long job at the end of a batch; results still come back in job order
-  std::vector<int> order(jobs.size());
-  std::vector<double> cost(jobs.size());
-  for (int i = 0; i < static_cast<int>(jobs.size()); ++i) {
-    order[i] = i;
-    cost[i] = jobs[i].genotype->cost_hint();
-  }
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return cost[a] > cost[b]; });
+  // longest jobs first; results still come back in job order
+  const std::vector<int> order = longest_first(jobs);
   std::deque<int> pending(order.begin(), order.end());
   std::size_t done = 0;
   // a worker lost on a job (killed from outside, stopped past the timeout, or

@@ -54,6 +54,11 @@ EvalOutcome evaluate_genotype(const Genotype& g, const SimConfig& cfg, std::uint
 double repeated_genotype_fitness(const Genotype& g, const SimConfig& cfg, std::uint64_t seed, const Repeats& r,
                                  const EvalOutcome& first, std::vector<double>* each = nullptr);
 
+/// The order in which to hand a batch's jobs out: longest first (a graph
+/// genome: most parts; Genotype::cost_hint), so that no worker idles on one
+/// long job at the end of a batch; ties keep the batch's order.
+std::vector<int> longest_first(const std::vector<EvalJob>& jobs);
+
 /// Evaluates batches of jobs; results come back in job order. An evaluator
 /// holds a task table: the configs its jobs name by EvalJob::task (as
 /// pagmo's batch evaluator receives the problem with each batch), so one

@@ -462,7 +462,14 @@ Status drive_run(const std::string& dir, const RunOptions& opt) {
   // and each General ESP retest's (task_table)
   double timeout = 0;
   for (const StageDef& st : stages) timeout = std::max(timeout, st.cfg.evolution.evaluation_timeout);
-  auto evaluator = make_evaluator(task_table(run->syllabus), opt.workers, timeout);
+  std::unique_ptr<Evaluator> evaluator;
+  if (opt.evaluator) {
+    auto e = opt.evaluator(task_table(run->syllabus), timeout);
+    if (!e) return Error{e.error()};
+    evaluator = std::move(*e);
+  } else {
+    evaluator = make_evaluator(task_table(run->syllabus), opt.workers, timeout);
+  }
   std::ofstream log(run_log_path(dir), std::ios::app);
   const bool tty = !opt.quiet && ::isatty(STDOUT_FILENO);
   auto t0 = std::chrono::steady_clock::now();

@@ -4,10 +4,13 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "core/result.h"
+#include "eval/evaluator.h"
 #include "io/config.h"
 #include "io/run_store.h"
 #include "io/syllabus.h"
@@ -20,6 +23,10 @@ struct RunOptions {
   bool quiet = false;       ///< no progress output
   /// Stop after this many generations of this session (tests); 0: run to the end.
   int stop_after = 0;
+  /// Makes the run's evaluator from its task table and evaluation timeout
+  /// instead of a process pool of `workers` (the MPI evaluator,
+  /// cluster/mpi_evaluator.h, lives above this layer); empty: the pool.
+  std::function<Result<std::unique_ptr<Evaluator>>(const std::vector<SimConfig>& tasks, double timeout)> evaluator = {};
 };
 
 /// Where a run stands, for what `resume` says before it goes on; an error

@@ -1,0 +1,220 @@
+// The MPI evaluator end to end (docs/cluster.md): `mpirun -np N bestiary run
+// ... --evaluator mpi` stores the same database, bit for bit, as the process
+// pool with 1 and 2 workers, for 2, 3 and 4 ranks (oversubscribed on this
+// machine's cores, on loopback), for a generational, a steady-state, a river
+// crossing and a multi-stage General ESP run; a run stopped and resumed under
+// MPI ends the same; an evaluation child killed from outside costs nothing;
+// misuse is refused in one line, leaving no folder.
+#include <gtest/gtest.h>
+#include <signal.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "support/general_esp.h"
+#include "support/run_command.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using bxtest::bestiary;
+using bxtest::Outcome;
+
+// mpirun as the tests run it: root allowed (CI runs as root), more ranks than
+// cores, every rank on this machine
+std::string mpirun(int ranks) {
+  return "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 timeout 300 mpirun --oversubscribe -np " +
+         std::to_string(ranks) + " " BESTIARY_BINARY " ";
+}
+
+const char* kGenerational = R"(
+[genome]
+dialect = "sims1994"
+[evolution]
+algorithm = "generational"
+population = 10
+generations = 3
+[task]
+seconds = 1
+)";
+
+const char* kSteadyState = R"(
+[genome]
+dialect = "miconi2006"
+[evolution]
+population = 10
+evaluations = 24
+batch = 4
+report_every = 8
+[task]
+seconds = 1
+)";
+
+const char* kRiver = R"(
+[genotype]
+kind = "river"
+[river]
+seconds = 1
+[evolution]
+algorithm = "steady_state"
+tournament_evaluates = "all"
+population = 9
+evaluations = 9
+batch = 3
+report_every = 3
+p_asexual = 0
+p_crossover = 1
+p_graft = 0
+)";
+
+// every stored row that evolution writes, as text
+std::string dump(const fs::path& dir) {
+  std::string out;
+  for (const char* q : {"SELECT * FROM generation ORDER BY gen", "SELECT * FROM individual ORDER BY id",
+                        "SELECT * FROM generation_metric ORDER BY gen, name", "SELECT * FROM stage ORDER BY idx",
+                        "SELECT * FROM checkpoint"})
+    out += bxtest::query(dir / "run.sqlite", q);
+  return out;
+}
+
+class MpiRun : public bxtest::InTempDir {
+ protected:
+  // the run of `config` with the pool's 1 and 2 workers, then under mpirun with 2, 3 and 4 ranks: all the same
+  void expect_the_same_for_any_width(const std::string& name, const std::string& config) {
+    const fs::path cfg = write(name + ".toml", config);
+    std::string expected;
+    for (int w : {1, 2}) {
+      const fs::path out = dir / (name + "-w" + std::to_string(w));
+      Outcome r = bestiary("run " + cfg.string() + " --quiet --workers " + std::to_string(w) + " --out " + out.string());
+      ASSERT_EQ(r.code, 0) << r.err;
+      const std::string d = dump(out);
+      if (expected.empty()) expected = d;
+      EXPECT_EQ(d, expected) << name << ", " << w << " workers";
+    }
+    EXPECT_GT(expected.size(), 500u);
+    for (int ranks : {2, 3, 4}) {
+      const fs::path out = dir / (name + "-mpi" + std::to_string(ranks));
+      Outcome r = bxtest::run_command(mpirun(ranks) + "run " + cfg.string() + " --quiet --evaluator mpi --out " +
+                                      out.string());
+      ASSERT_EQ(r.code, 0) << name << ", " << ranks << " ranks: " << r.err;
+      EXPECT_EQ(dump(out), expected) << name << ", " << ranks << " ranks";
+    }
+  }
+};
+
+TEST_F(MpiRun, AGenerationalRunIsTheSameForAnyNumberOfRanksOrWorkers) {
+  expect_the_same_for_any_width("generational", kGenerational);
+}
+
+TEST_F(MpiRun, ASteadyStateRunIsTheSameForAnyNumberOfRanksOrWorkers) {
+  expect_the_same_for_any_width("steady", kSteadyState);
+}
+
+TEST_F(MpiRun, ARiverCrossingRunIsTheSameForAnyNumberOfRanksOrWorkers) {
+  expect_the_same_for_any_width("river", kRiver);
+}
+
+TEST_F(MpiRun, AGeneralEspSyllabusWithRetestsIsTheSameForAnyNumberOfRanksOrWorkers) {
+  expect_the_same_for_any_width("general", bxtest::general_syllabus());
+}
+
+TEST_F(MpiRun, StoppedAndResumedUnderMpiItEndsAsAnUninterruptedRun) {
+  const fs::path cfg = write("g.toml", kGenerational), whole = dir / "whole", cut = dir / "cut";
+  ASSERT_EQ(bestiary("run " + cfg.string() + " --quiet --workers 2 --out " + whole.string()).code, 0);
+  Outcome r = bxtest::run_command(mpirun(3) + "run " + cfg.string() + " --quiet --evaluator mpi --stop-after 1 --out " +
+                                  cut.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(dump(cut), dump(whole));
+  r = bxtest::run_command(mpirun(2) + "resume " + cut.string() + " --quiet --evaluator mpi");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(dump(cut), dump(whole));
+}
+
+// the command line of process `pid` with its NULs as spaces ("" once it has gone)
+std::string cmdline(const std::string& pid) {
+  std::ifstream f("/proc/" + pid + "/cmdline");
+  std::string s((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  for (char& c : s)
+    if (c == '\0') c = ' ';
+  return s;
+}
+
+std::string parent_of(const std::string& pid) {
+  std::ifstream f("/proc/" + pid + "/stat");
+  std::string line;
+  std::getline(f, line);
+  // pid (comm) state ppid ...: comm may hold spaces, so read after its ')'
+  std::istringstream rest(line.substr(line.rfind(')') + 1));
+  std::string state, ppid;
+  rest >> state >> ppid;
+  return ppid;
+}
+
+TEST_F(MpiRun, AnEvaluationChildKilledFromOutsideCostsNothing) {
+  // the child lives as long as its rank: killed inside an evaluation or
+  // between two, its job (or its next) is given again to a fresh child
+  const fs::path cfg = write("k.toml", R"(
+[genome]
+dialect = "sims1994"
+[evolution]
+algorithm = "generational"
+population = 8
+generations = 4
+[task]
+seconds = 4
+)");
+  const fs::path whole = dir / "whole", hit = dir / "hit";
+  ASSERT_EQ(bestiary("run " + cfg.string() + " --quiet --workers 2 --out " + whole.string()).code, 0);
+  std::thread killer([&] {
+    // an evaluation child: a process of this run whose parent is one of its ranks
+    const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+    while (std::chrono::steady_clock::now() < until) {
+      for (const auto& e : fs::directory_iterator("/proc")) {
+        const std::string pid = e.path().filename().string();
+        if (pid.find_first_not_of("0123456789") != std::string::npos) continue;
+        // a rank's parent is mpirun; an evaluation child's is a rank
+        auto of_run = [&](const std::string& p) {
+          const std::string c = cmdline(p);
+          return c.find(hit.string()) != std::string::npos && c.find("mpirun") == std::string::npos;
+        };
+        if (!of_run(pid) || !of_run(parent_of(pid))) continue;
+        if (::kill(std::stoi(pid), SIGKILL) == 0) return;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    ADD_FAILURE() << "no evaluation child of the run's ranks was seen";
+  });
+  Outcome r = bxtest::run_command(mpirun(3) + "run " + cfg.string() + " --quiet --evaluator mpi --out " + hit.string());
+  killer.join();
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(dump(hit), dump(whole));
+}
+
+TEST_F(MpiRun, MisuseIsRefusedInOneLineAndLeavesNoFolder) {
+  const fs::path cfg = write("g.toml", kGenerational), out = dir / "r";
+  // not under mpirun: only one process
+  Outcome r = bestiary("run " + cfg.string() + " --evaluator mpi --out " + out.string());
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("--evaluator mpi: this is the only MPI process"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_FALSE(fs::exists(out));
+  // --workers beside it
+  r = bxtest::run_command(mpirun(2) + "run " + cfg.string() + " --evaluator mpi --workers 2 --out " + out.string());
+  EXPECT_NE(r.code, 0);
+  EXPECT_NE(r.err.find("--workers and --evaluator mpi"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out));
+  // an evaluator that is not one
+  r = bestiary("run " + cfg.string() + " --evaluator threads --out " + out.string());
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("--evaluator"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out));
+}
+
+}  // namespace
