@@ -247,6 +247,13 @@ int main(int argc, char** argv) {
   }
   ensure_ode_initialized();
 
+  // where evaluate() puts a creature: drop_height above the ground, raised
+  // and turned about the vertical by what its physics seed draws
+  // (task.start_drop_jitter, task.start_yaw_jitter: evaluate.h's seed_draw)
+  auto placement_of = [&](const Sample& c) {
+    const SeedDraw d = seed_draw(cfg.sim, c.seed);
+    return Pose{{0, 0, cfg.sim.task.drop_height + d.lift - c.model.min_z()}, Mat3::rotation({0, 0, 1}, d.yaw)};
+  };
   // ---- creatures: random viable genomes, each recorded once (untimed) with a
   // frame every step for its motor tape; redrawn if not viable or if its
   // evaluation blows up (the raw replay needs a complete run)
@@ -285,8 +292,7 @@ int main(int argc, char** argv) {
       }
       c.tape = record_motor_tape(c.model, cfg.sim, replay, c.steps);
       // check: raw ODE reproduces our trajectory (same physics work)
-      const Pose placement{{0, 0, cfg.sim.task.drop_height - c.model.min_z()}, Mat3::identity()};
-      double dev_m = max_part_deviation(c.model, replay, run_raw(c.model, cfg.sim, placement, c.tape, c.seed));
+      double dev_m = max_part_deviation(c.model, replay, run_raw(c.model, cfg.sim, placement_of(c), c.tape, c.seed));
       if (dev_m == 0) ++identical;
       if (std::isnan(dev_m) || dev_m > worst_dev) worst_dev = dev_m;
       cs.push_back(std::move(c));
@@ -364,9 +370,7 @@ int main(int argc, char** argv) {
         ++pool_mismatch;
     }
   };
-  auto placement_of = [&](const Sample& c) {
-    return Pose{{0, 0, cfg.sim.task.drop_height - c.model.min_z()}, Mat3::identity()};
-  };
+
 
   // ---- raw ODE in K processes at once, each replaying every creature: what
   // this machine gives K copies of the bare physics (shared caches, memory,
