@@ -197,6 +197,25 @@ seconds = 4
   EXPECT_EQ(dump(hit), dump(whole));
 }
 
+TEST_F(MpiRun, TheSlurmScriptStartsARunAndTheSameLineResumesIt) {
+  // outside Slurm, mpirun starts one rank per core: on this machine 2, so one evaluates
+  const fs::path cfg = write("g.toml", kGenerational), out = dir / "slurm-run";
+  const std::string line = "cd " + dir.string() + " && OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 PRESET=" +
+                           cfg.string() + " SEED=3 OUT=" + out.string() + " BESTIARY=" BESTIARY_BINARY
+                           " timeout 300 bash " BESTIARY_SOURCE_DIR "/scripts/slurm/bestiary.sbatch";
+  Outcome r = bxtest::run_command(line + " --stop-after 1");
+  ASSERT_EQ(r.code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("starting"), std::string::npos) << r.out;
+  ASSERT_TRUE(fs::exists(out / "run.sqlite"));
+  r = bxtest::run_command(line);
+  ASSERT_EQ(r.code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("resuming"), std::string::npos) << r.out;
+  // the same as the run made in one go with the pool
+  const fs::path whole = dir / "whole";
+  ASSERT_EQ(bestiary("run " + cfg.string() + " --seed 3 --quiet --workers 2 --out " + whole.string()).code, 0);
+  EXPECT_EQ(dump(out), dump(whole));
+}
+
 TEST_F(MpiRun, MisuseIsRefusedInOneLineAndLeavesNoFolder) {
   const fs::path cfg = write("g.toml", kGenerational), out = dir / "r";
   // not under mpirun: only one process
