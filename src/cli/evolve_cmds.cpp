@@ -142,6 +142,8 @@ RunOptions run_options(const EvaluatorArgs& e, int workers, bool quiet, int stop
 struct RunArgs {
   std::string config, out;
   std::uint64_t seed = 1;
+  bool seed_given = false;
+  std::string seeds;  ///< --seeds: several runs, one per seed (under MPI side by side)
   EvaluatorArgs evaluator;
   int workers = default_workers();
   std::vector<std::string> set;
@@ -149,7 +151,46 @@ struct RunArgs {
   int stop_after = 0;
 };
 
+int cmd_run(const RunArgs& a);
+
+// `run --seeds`: one run per seed, each in OUT/seed-S; under MPI each group of
+// ranks runs its own seed side by side (mpi_group), otherwise one after another
+int cmd_run_seeds(const RunArgs& a) {
+  auto seeds = parse_seed_list(a.seeds);
+  if (!seeds) return fail(seeds.error());
+  if (a.seed_given) return fail("--seed and --seeds: give one of them");
+  RunArgs one = a;
+  one.seeds.clear();
+  auto out_of = [&](std::uint64_t s) { return (fs::path(one.out) / ("seed-" + std::to_string(s))).string(); };
+  if (a.evaluator.kind == "mpi") {
+    if (a.out.empty())
+      return fail("--seeds under --evaluator mpi needs --out DIR (each seed's run goes to DIR/seed-S)");
+    const int ranks = mpi_world_size();
+    if (static_cast<int>(seeds->size()) != mpi_groups())
+      return fail("--seeds: " + std::to_string(seeds->size()) + " seeds side by side need at least " +
+                  std::to_string(2 * seeds->size()) + " MPI ranks (each seed a rank 0 and at least one evaluating); "
+                  "this job has " + std::to_string(ranks) + " (mpirun -np N)");
+    one.seed = (*seeds)[static_cast<std::size_t>(mpi_group())];
+    one.out = out_of(one.seed);
+    return cmd_run(one);
+  }
+  if (one.out.empty()) {
+    auto src = config_source(a.config);
+    if (!src) return fail(src.error());
+    one.out = "runs/" + src->first + "-" + timestamp();
+    for (int k = 2; fs::exists(one.out); ++k) one.out = "runs/" + src->first + "-" + timestamp() + "-" + std::to_string(k);
+  }
+  const std::string base = one.out;
+  for (std::uint64_t s : *seeds) {
+    one.seed = s;
+    one.out = (fs::path(base) / ("seed-" + std::to_string(s))).string();
+    if (int code = cmd_run(one); code != 0) return code;
+  }
+  return 0;
+}
+
 int cmd_run(const RunArgs& a) {
+  if (!a.seeds.empty()) return cmd_run_seeds(a);
   auto src = config_source(a.config);
   if (!src) return fail(src.error());
   auto syl = read_syllabus(src->second, a.config, a.set);
@@ -313,7 +354,10 @@ void add_evolve_commands(CLI::App& app) {
   auto* r = app.add_subcommand("run", "Start an evolutionary run from a preset or a TOML config");
   r->add_option("config", run.config, "Preset name (see `bestiary presets`) or config file")->required();
   r->add_option("--out", run.out, "Run directory to create (default runs/NAME-TIME)");
-  r->add_option("--seed", run.seed, "Master seed of the run")->default_val(1)->check(whole_number(0, UINT64_MAX));
+  auto* rs = r->add_option("--seed", run.seed, "Master seed of the run")->default_val(1)->check(whole_number(0, UINT64_MAX));
+  r->add_option("--seeds", run.seeds,
+                "Several runs, one per seed (A-B, A,B,C), each in OUT/seed-S: one after another, or under "
+                "--evaluator mpi side by side, the ranks split between them (docs/cluster.md)");
   auto* rw = r->add_option("--workers", run.workers, "Worker processes (default: the number of cores; 0: in-process)")
                  ->check(whole_number(0, 256));
   r->add_option("--evaluator", run.evaluator.kind,
@@ -324,8 +368,9 @@ void add_evolve_commands(CLI::App& app) {
   r->add_flag("--quiet", run.quiet, "No progress output");
   r->add_option("--stop-after", run.stop_after, "Stop after N generations (the run stays resumable)")
       ->check(whole_number(1, INT32_MAX));
-  r->callback([rw] {
+  r->callback([rw, rs] {
     run.evaluator.workers_given = rw->count() > 0;
+    run.seed_given = rs->count() > 0;
     std::exit(cmd_run(run));
   });
 

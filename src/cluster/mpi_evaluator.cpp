@@ -13,6 +13,7 @@
 
 #include "eval/records_json.h"
 #include "io/config.h"
+#include "run/run.h"
 
 namespace bx {
 
@@ -25,7 +26,10 @@ constexpr int kTable = 1, kJob = 2, kResult = 3, kStop = 4;
 
 bool g_started = false;   // MPI_Init done by mpi_start
 bool g_stopped = false;   // the worker ranks told to stop
-int g_rank = 0, g_size = 1;
+// this process's group (`run --seeds`: one group of ranks per seed, each its
+// own rank 0 and evaluators; otherwise one group, the world), its rank and size in it
+MPI_Comm g_comm = MPI_COMM_NULL;
+int g_rank = 0, g_size = 1, g_group = 0, g_groups = 1;
 
 // Waits for a message without spinning a core: an MPI implementation's
 // blocking receive polls flat out, which on an oversubscribed node takes the
@@ -36,7 +40,7 @@ MPI_Status wait_message(int source, int tag) {
   int flag = 0;
   useconds_t nap = 0;
   for (;;) {
-    MPI_Iprobe(source, tag, MPI_COMM_WORLD, &flag, &st);
+    MPI_Iprobe(source, tag, g_comm, &flag, &st);
     if (flag) return st;
     nap = std::min<useconds_t>(nap * 2 + 10, 200);
     ::usleep(nap);
@@ -47,13 +51,13 @@ std::string receive_text(const MPI_Status& st) {
   int n = 0;
   MPI_Get_count(&st, MPI_CHAR, &n);
   std::string s(static_cast<std::size_t>(n), '\0');
-  MPI_Recv(s.data(), n, MPI_CHAR, st.MPI_SOURCE, st.MPI_TAG, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+  MPI_Recv(s.data(), n, MPI_CHAR, st.MPI_SOURCE, st.MPI_TAG, g_comm, MPI_STATUS_IGNORE);
   return s;
 }
 
 void send_text(const std::string& s, int dest, int tag) {
   if (s.size() > static_cast<std::size_t>(INT32_MAX)) throw std::length_error("MPI message over 2 GiB");
-  MPI_Send(s.data(), static_cast<int>(s.size()), MPI_CHAR, dest, tag, MPI_COMM_WORLD);
+  MPI_Send(s.data(), static_cast<int>(s.size()), MPI_CHAR, dest, tag, g_comm);
 }
 
 // a task's config back from the TOML text config_to_toml wrote
@@ -170,14 +174,41 @@ bool mpi_requested(int argc, char** argv) {
 std::optional<int> mpi_start(int* argc, char*** argv) {
   MPI_Init(argc, argv);
   g_started = true;
-  MPI_Comm_rank(MPI_COMM_WORLD, &g_rank);
-  MPI_Comm_size(MPI_COMM_WORLD, &g_size);
+  int world_rank = 0, world_size = 1;
+  MPI_Comm_rank(MPI_COMM_WORLD, &world_rank);
+  MPI_Comm_size(MPI_COMM_WORLD, &world_size);
+  // `run --seeds`: the world in one group of consecutive ranks per seed (sizes
+  // differing by at most one), each running its seed's run; a list the
+  // command refuses leaves one group, and the command says why
+  for (int i = 1; i < *argc; ++i) {
+    std::string list;
+    if (std::strcmp((*argv)[i], "--seeds") == 0 && i + 1 < *argc) list = (*argv)[i + 1];
+    else if (std::strncmp((*argv)[i], "--seeds=", 8) == 0) list = (*argv)[i] + 8;
+    else continue;
+    if (auto seeds = parse_seed_list(list); seeds && seeds->size() <= static_cast<std::size_t>(world_size / 2))
+      g_groups = static_cast<int>(seeds->size());
+    break;
+  }
+  g_group = static_cast<int>(static_cast<long>(world_rank) * g_groups / world_size);
+  MPI_Comm_split(MPI_COMM_WORLD, g_group, world_rank, &g_comm);
+  MPI_Comm_rank(g_comm, &g_rank);
+  MPI_Comm_size(g_comm, &g_size);
   if (g_rank != 0) return serve();
   std::atexit(stop_ranks);
   return std::nullopt;
 }
 
 int mpi_evaluating_ranks() { return g_started && g_rank == 0 ? g_size - 1 : 0; }
+
+int mpi_group() { return g_group; }
+
+int mpi_groups() { return g_groups; }
+
+int mpi_world_size() {
+  int n = 1;
+  if (g_started) MPI_Comm_size(MPI_COMM_WORLD, &n);
+  return n;
+}
 
 Status mpi_ready() {
   if (!g_started)

@@ -34,6 +34,17 @@ std::optional<int> mpi_start(int* argc, char*** argv);
 /// when this process is the only rank).
 int mpi_evaluating_ranks();
 
+/// `run --seeds` under MPI: the world is split into one group of ranks per
+/// seed (consecutive ranks; at least 2 each, so at most half as many seeds as
+/// ranks), each with its own rank 0 running that seed's run and its own
+/// evaluators. This process's group (0-based: the seed's place in the list)
+/// and the number of groups (1 without --seeds, or when the list has more
+/// seeds than half the ranks: the command then says so).
+int mpi_group();
+int mpi_groups();
+/// Processes in the whole MPI job (1 when MPI was not started).
+int mpi_world_size();
+
 /// Whether this process can be the MPI evaluator's rank 0: MPI started and
 /// at least one other rank, or an error that says how to launch it.
 Status mpi_ready();

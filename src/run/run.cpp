@@ -5,6 +5,8 @@
 #include <signal.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <charconv>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
@@ -416,6 +418,40 @@ std::string duration(double s) {
 }
 
 }  // namespace
+
+Result<std::vector<std::uint64_t>> parse_seed_list(const std::string& text) {
+  const std::string what = "--seeds \"" + text + "\": expected seeds as A-B, A,B,C or one seed (whole numbers)";
+  auto number = [](std::string_view t) -> std::optional<std::uint64_t> {
+    std::uint64_t v = 0;
+    auto r = std::from_chars(t.data(), t.data() + t.size(), v);
+    if (t.empty() || r.ec != std::errc() || r.ptr != t.data() + t.size()) return std::nullopt;
+    return v;
+  };
+  std::vector<std::uint64_t> seeds;
+  const std::size_t dash = text.find('-');
+  if (dash != std::string::npos) {
+    auto a = number(std::string_view(text).substr(0, dash)), b = number(std::string_view(text).substr(dash + 1));
+    if (!a || !b || *b < *a) return Error{what};
+    if (*b - *a >= 10000) return Error{"--seeds \"" + text + "\": more than 10,000 seeds"};
+    for (std::uint64_t s = *a;; ++s) {
+      seeds.push_back(s);
+      if (s == *b) break;
+    }
+    return seeds;
+  }
+  for (std::size_t at = 0;;) {
+    const std::size_t comma = text.find(',', at);
+    auto v = number(std::string_view(text).substr(at, comma == std::string::npos ? std::string::npos : comma - at));
+    if (!v) return Error{what};
+    if (std::find(seeds.begin(), seeds.end(), *v) != seeds.end())
+      return Error{"--seeds \"" + text + "\": seed " + std::to_string(*v) + " twice"};
+    seeds.push_back(*v);
+    if (seeds.size() > 10000) return Error{"--seeds \"" + text + "\": more than 10,000 seeds"};
+    if (comma == std::string::npos) break;
+    at = comma + 1;
+  }
+  return seeds;
+}
 
 Status drive_run(const std::string& dir, const RunOptions& opt) {
   // the run's own config and seed, as stored when it was created

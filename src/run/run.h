@@ -79,6 +79,10 @@ Status check_run(const Syllabus& stages);
 /// creature that ended the skill's last stage, on that stage's task).
 std::uint64_t retest_seed(std::uint64_t run_seed, int stage, int retest);
 
+/// The seeds of `run --seeds`: "A-B" (A to B), "A,B,C" or one seed, each a
+/// whole number; an error names the text. At most 10,000 seeds, none twice.
+Result<std::vector<std::uint64_t>> parse_seed_list(const std::string& text);
+
 /// Runs (or resumes) the run in `dir` until it is finished. Safe to call on a
 /// run killed at any moment: it continues from the last checkpoint and ends
 /// exactly as the uninterrupted run would.

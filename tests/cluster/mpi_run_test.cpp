@@ -216,6 +216,28 @@ TEST_F(MpiRun, TheSlurmScriptStartsARunAndTheSameLineResumesIt) {
   EXPECT_EQ(dump(out), dump(whole));
 }
 
+TEST_F(MpiRun, SeveralSeedsSideBySideAreEachTheSameAsTheirOwnRun) {
+  // 5 ranks for 2 seeds: groups of 2 and 3 ranks, each its own rank 0
+  const fs::path cfg = write("g.toml", kGenerational), side = dir / "side", alone = dir / "alone";
+  Outcome r = bxtest::run_command(mpirun(5) + "run " + cfg.string() + " --quiet --evaluator mpi --seeds 4-5 --out " +
+                                  side.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  // the pool runs them one after another, into the same folders
+  r = bestiary("run " + cfg.string() + " --quiet --workers 2 --seeds 4,5 --out " + alone.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  for (const char* s : {"seed-4", "seed-5"}) {
+    EXPECT_GT(dump(side / s).size(), 500u) << s;
+    EXPECT_EQ(dump(side / s), dump(alone / s)) << s;
+  }
+  EXPECT_NE(dump(side / "seed-4"), dump(side / "seed-5"));
+  // too few ranks for the seeds: refused before any folder
+  const fs::path few = dir / "few";
+  r = bxtest::run_command(mpirun(3) + "run " + cfg.string() + " --quiet --evaluator mpi --seeds 1-2 --out " + few.string());
+  EXPECT_NE(r.code, 0);
+  EXPECT_NE(r.err.find("2 seeds side by side need at least 4 MPI ranks"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(few));
+}
+
 TEST_F(MpiRun, MisuseIsRefusedInOneLineAndLeavesNoFolder) {
   const fs::path cfg = write("g.toml", kGenerational), out = dir / "r";
   // not under mpirun: only one process

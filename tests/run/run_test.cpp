@@ -91,6 +91,20 @@ class Runs : public ::testing::Test {
   fs::path root;
 };
 
+TEST(SeedList, ReadsARangeAListOrOneSeedAndNamesBadText) {
+  EXPECT_EQ(*parse_seed_list("3-6"), (std::vector<std::uint64_t>{3, 4, 5, 6}));
+  EXPECT_EQ(*parse_seed_list("7,2,9"), (std::vector<std::uint64_t>{7, 2, 9}));
+  EXPECT_EQ(*parse_seed_list("5"), (std::vector<std::uint64_t>{5}));
+  EXPECT_EQ(*parse_seed_list("4-4"), (std::vector<std::uint64_t>{4}));
+  for (const char* bad : {"", "6-3", "a-b", "1,,2", "1-", "-2", "1.5", "1,2,"}) {
+    auto r = parse_seed_list(bad);
+    ASSERT_FALSE(r.ok()) << bad;
+    EXPECT_NE(r.error().find(std::string("--seeds \"") + bad + "\""), std::string::npos) << r.error();
+  }
+  EXPECT_NE(parse_seed_list("1,2,1").error().find("seed 1 twice"), std::string::npos);
+  EXPECT_NE(parse_seed_list("1-20000").error().find("more than 10,000"), std::string::npos);
+}
+
 TEST_F(Runs, DatabaseIsTheSameForOneOrTwoWorkers) {
   std::string one = make("one"), two = make("two");
   ASSERT_TRUE(drive_run(one, {1, true, 0}).ok());
