@@ -216,6 +216,53 @@ TEST_F(MpiRun, TheSlurmScriptStartsARunAndTheSameLineResumesIt) {
   EXPECT_EQ(dump(out), dump(whole));
 }
 
+TEST_F(MpiRun, ALostRankEndsTheJobAndResumeContinuesItToTheSameEnd) {
+  const fs::path cfg = write("k.toml", R"(
+[genome]
+dialect = "sims1994"
+[evolution]
+algorithm = "generational"
+population = 8
+generations = 6
+[task]
+seconds = 4
+)");
+  const fs::path whole = dir / "whole", hit = dir / "hit";
+  ASSERT_EQ(bestiary("run " + cfg.string() + " --quiet --workers 2 --out " + whole.string()).code, 0);
+  std::thread killer([&] {
+    // an evaluating rank: the parent of an evaluation child (rank 0 has none);
+    // killed once the run has stored a generation
+    const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+    while (std::chrono::steady_clock::now() < until) {
+      if (bxtest::query(hit / "run.sqlite", "SELECT count(*) FROM generation") == "0|\n" ||
+          bxtest::query(hit / "run.sqlite", "SELECT count(*) FROM generation").empty()) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        continue;
+      }
+      for (const auto& e : fs::directory_iterator("/proc")) {
+        const std::string pid = e.path().filename().string();
+        if (pid.find_first_not_of("0123456789") != std::string::npos) continue;
+        auto of_run = [&](const std::string& p) {
+          const std::string c = cmdline(p);
+          return c.find(hit.string()) != std::string::npos && c.find("mpirun") == std::string::npos;
+        };
+        if (!of_run(pid) || !of_run(parent_of(pid))) continue;
+        if (::kill(std::stoi(parent_of(pid)), SIGKILL) == 0) return;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    ADD_FAILURE() << "no evaluating rank of the run was seen after its first generation";
+  });
+  Outcome r = bxtest::run_command(mpirun(3) + "run " + cfg.string() + " --quiet --evaluator mpi --out " + hit.string());
+  killer.join();
+  EXPECT_NE(r.code, 0) << "the job went on without a rank";
+  const std::string cut = dump(hit);
+  EXPECT_NE(cut, dump(whole));
+  r = bxtest::run_command(mpirun(2) + "resume " + hit.string() + " --quiet --evaluator mpi");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(dump(hit), dump(whole));
+}
+
 TEST_F(MpiRun, SeveralSeedsSideBySideAreEachTheSameAsTheirOwnRun) {
   // 5 ranks for 2 seeds: groups of 2 and 3 ranks, each its own rank 0
   const fs::path cfg = write("g.toml", kGenerational), side = dir / "side", alone = dir / "alone";
