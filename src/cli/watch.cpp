@@ -55,6 +55,8 @@ struct WatchArgs {
   std::optional<int> fps;  ///< render: default 30 for mp4, 15 for gif
   bool quiet = false;      ///< render: no progress output
   std::vector<std::string> metrics;  ///< plot: the task's metrics whose names contain these, not fitness
+  std::vector<std::string> more_runs;  ///< plot: runs compared with the first (genome)
+  std::string group_by;                ///< plot: "preset" or a config key: runs of one value are one condition
 };
 
 /// What simulating gave: the page's entry and the result.
@@ -451,6 +453,65 @@ int cmd_render(const WatchArgs& a) {
 // ---- plot ----
 
 // fitness over generations: SVG written directly, PNG rendered from it by Chromium
+// The value of `key` ("section.key") in a run's resolved config text (every
+// key, as config_to_toml writes it: "[section]" lines, then "key = value").
+Result<std::string> config_value(const std::string& text, const std::string& key) {
+  const std::size_t dot = key.find('.');
+  if (dot == std::string::npos) return Error{"--group-by: expected preset or section.key, got \"" + key + "\""};
+  const std::string section = "[" + key.substr(0, dot) + "]", name = key.substr(dot + 1);
+  bool in = false;
+  std::istringstream lines(text);
+  for (std::string line; std::getline(lines, line);) {
+    if (!line.empty() && line[0] == '[') {
+      in = line == section;
+      continue;
+    }
+    if (in && line.rfind(name + " = ", 0) == 0) return line.substr(name.size() + 3);
+  }
+  return Error{"--group-by: no config key \"" + key + "\" (see `bestiary config --reference`)"};
+}
+
+int write_plot(const WatchArgs& a, const std::string& ext, const std::string& svg, const std::string& what);
+
+// several runs on one chart, each condition its median and interquartile band
+int cmd_plot_runs(const WatchArgs& a, const std::string& ext, std::string& svg, std::string& what) {
+  if (!a.metrics.empty()) return fail("--metric: one run at a time (several runs compare their fitness)");
+  std::vector<std::string> dirs{a.genome};
+  dirs.insert(dirs.end(), a.more_runs.begin(), a.more_runs.end());
+  std::vector<PlottedRun> runs;
+  bool steady = false, generational = false;
+  for (const std::string& dir : dirs) {
+    auto store = RunStore::open(run_db_path(dir));
+    if (!store) return fail(store.error());
+    PlottedRun r;
+    r.gens = (*store)->generations();
+    if (r.gens.empty()) return fail(dir + ": no generation finished yet");
+    auto text = (*store)->config_text();
+    if (!text) return fail(text.error());
+    auto syl = read_syllabus(*text, run_db_path(dir) + " (its config)");
+    if (!syl) return fail(syl.error());
+    (syl->stages.front().cfg.evolution.algorithm == Algorithm::SteadyState ? steady : generational) = true;
+    if (a.group_by.empty()) {
+      r.condition = dir;
+    } else if (a.group_by == "preset") {
+      r.condition = (*store)->meta("name");
+    } else {
+      auto v = config_value(*text, a.group_by);
+      if (!v) return fail(dir + ": " + v.error());
+      r.condition = a.group_by + " = " + *v;
+    }
+    runs.push_back(std::move(r));
+  }
+  if (steady && generational)
+    return fail("plot: generational and steady-state runs have no common x axis (generations against evaluations)");
+  const std::string title = a.group_by.empty() ? std::to_string(runs.size()) + " runs"
+                                               : std::to_string(runs.size()) + " runs by " + a.group_by;
+  svg = compare_svg(runs, steady, title, a.width, a.height);
+  what = std::to_string(runs.size()) + " runs";
+  (void)ext;
+  return 0;
+}
+
 int cmd_plot(const WatchArgs& a) {
   const std::string& dir = a.genome;
   std::string ext = lower(fs::path(a.out).extension().string());
@@ -459,12 +520,16 @@ int cmd_plot(const WatchArgs& a) {
   if (a.width < 100 || a.height < 100 || a.width > 8000 || a.height > 8000)
     return fail("--width/--height: expected 100 to 8000 pixels, got " + std::to_string(a.width) + "x" +
                 std::to_string(a.height));
+  std::string svg, what;
+  if (!a.more_runs.empty() || !a.group_by.empty()) {
+    if (int code = cmd_plot_runs(a, ext, svg, what); code != 0) return code;
+    return write_plot(a, ext, svg, what);
+  }
   auto store = RunStore::open(run_db_path(dir));
   if (!store) return fail(store.error());
   auto gens = (*store)->generations();
   if (gens.empty()) return fail(dir + ": no generation finished yet");
   std::string title = (*store)->meta("name") + " (seed " + (*store)->meta("seed") + ")";
-  std::string svg;
   if (a.metrics.empty()) {
     svg = fitness_svg(gens, title, a.width, a.height);
   } else {
@@ -495,6 +560,13 @@ int cmd_plot(const WatchArgs& a) {
     const double per = steady ? static_cast<double>(e.report_every > 0 ? e.report_every : e.population) : 1.0;
     svg = metric_svg(gens, names, per, steady ? "tournaments" : "generation", title, a.width, a.height);
   }
+  char best[64];
+  std::snprintf(best, sizeof best, "%.6g", gens.back().best);
+  return write_plot(a, ext, svg, dir + ": " + std::to_string(gens.size()) + " generations, best " + best);
+}
+
+// the chart to --out: SVG as it is, PNG through headless Chromium
+int write_plot(const WatchArgs& a, const std::string& ext, const std::string& svg, const std::string& what) {
   if (Status s = make_parent_dir("--out", a.out); !s) return fail(s.error());
   if (ext == ".svg") {
     if (Status s = write_file_atomic(a.out, svg); !s) return fail(s.error());
@@ -519,8 +591,7 @@ int cmd_plot(const WatchArgs& a) {
     }
     fs::rename(png, a.out);
   }
-  std::printf("%s: %zu generations, best %.6g -> %s\n", dir.c_str(), gens.size(), gens.back().best,
-              a.out.c_str());
+  std::printf("%s -> %s\n", what.c_str(), a.out.c_str());
   return 0;
 }
 
@@ -546,8 +617,14 @@ void add_watch_commands(CLI::App& app) {
   r->callback([] { std::exit(cmd_render(render)); });
 
   static WatchArgs plot;
-  auto* p = app.add_subcommand("plot", "Plot a run's best, mean and median fitness (or its task's metrics) per generation");
+  auto* p = app.add_subcommand("plot", "Plot a run's best, mean and median fitness (or its task's metrics) per "
+                                       "generation, or compare several runs");
   p->add_option("run_dir", plot.genome, "Run directory")->required();
+  p->add_option("more_runs", plot.more_runs,
+                "More run directories: each run's (or each condition's median) best and mean on one chart");
+  p->add_option("--group-by", plot.group_by,
+                "Compare conditions: runs with the same preset (\"preset\") or the same value of a config key "
+                "(section.key) are one, drawn as the median over its runs with the interquartile band of the best");
   p->add_option("--out", plot.out, "Image to write: .svg or .png")->required();
   p->add_option("--width", plot.width, "Width in pixels")->default_val(800);
   p->add_option("--height", plot.height, "Height in pixels")->default_val(500);

@@ -21,6 +21,64 @@ std::string fitness_svg(const std::vector<GenerationStats>& gens, const std::str
   return line_chart_svg(c, width, height);
 }
 
+namespace {
+
+// the q-quantile of v (linear between order statistics), NaN for none
+double quantile(std::vector<double> v, double q) {
+  if (v.empty()) return std::nan("");
+  std::sort(v.begin(), v.end());
+  const double at = q * static_cast<double>(v.size() - 1);
+  const std::size_t i = static_cast<std::size_t>(at);
+  return i + 1 < v.size() ? v[i] + (at - static_cast<double>(i)) * (v[i + 1] - v[i]) : v[i];
+}
+
+}  // namespace
+
+std::string compare_svg(const std::vector<PlottedRun>& runs, bool per_evaluation, const std::string& title,
+                        int width, int height) {
+  std::vector<std::string> conditions;
+  std::size_t longest = 0;
+  for (const PlottedRun& r : runs) {
+    if (std::find(conditions.begin(), conditions.end(), r.condition) == conditions.end())
+      conditions.push_back(r.condition);
+    longest = std::max(longest, r.gens.size());
+  }
+  LineChart c{title, per_evaluation ? "evaluations" : "generation", "fitness", {}, {}};
+  // x per generation index: the median over every run that has it
+  for (std::size_t i = 0; i < longest; ++i) {
+    std::vector<double> x;
+    for (const PlottedRun& r : runs)
+      if (i < r.gens.size())
+        x.push_back(per_evaluation ? static_cast<double>(r.gens[i].evaluations) : r.gens[i].generation);
+    c.xs.push_back(quantile(x, 0.5));
+  }
+  int k = 0;
+  for (const std::string& cond : conditions) {
+    int members = 0;
+    for (const PlottedRun& r : runs) members += r.condition == cond;
+    const std::string color = chart_color(k++);
+    const std::string n = members > 1 ? " (median of " + std::to_string(members) + ")" : "";
+    ChartSeries best{cond + " best" + n, color, "", {}}, mean{cond + " mean" + n, color, "6 4", {}};
+    for (std::size_t i = 0; i < longest; ++i) {
+      std::vector<double> b, m;
+      for (const PlottedRun& r : runs)
+        if (r.condition == cond && i < r.gens.size()) {
+          b.push_back(r.gens[i].best);
+          m.push_back(r.gens[i].mean);
+        }
+      best.ys.push_back(quantile(b, 0.5));
+      mean.ys.push_back(quantile(m, 0.5));
+      if (members > 1) {
+        best.lo.push_back(b.size() > 1 ? quantile(b, 0.25) : std::nan(""));
+        best.hi.push_back(b.size() > 1 ? quantile(b, 0.75) : std::nan(""));
+      }
+    }
+    c.series.push_back(std::move(best));
+    c.series.push_back(std::move(mean));
+  }
+  return line_chart_svg(c, width, height);
+}
+
 std::string metric_svg(const std::vector<GenerationStats>& gens, const std::vector<std::string>& names,
                        double per_generation, const std::string& x_label, const std::string& title, int width,
                        int height) {

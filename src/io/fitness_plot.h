@@ -14,6 +14,22 @@ namespace bx {
 std::string fitness_svg(const std::vector<GenerationStats>& gens, const std::string& title,
                         int width = 800, int height = 500);
 
+/// One run of a comparison: the condition it belongs to (its label in the
+/// legend) and its generations.
+struct PlottedRun {
+  std::string condition;
+  std::vector<GenerationStats> gens;
+};
+
+/// An SVG comparing runs: for each condition (runs with the same label, in
+/// order of first appearance) the median over its runs of the best fitness
+/// (solid) and of the mean (dashed) per generation, and, with more than one
+/// run, the interquartile range of the best as a shaded band. x is the
+/// generation, or with `per_evaluation` the evaluations done by its end (a
+/// steady state's x: the median over the runs).
+std::string compare_svg(const std::vector<PlottedRun>& runs, bool per_evaluation, const std::string& title,
+                        int width = 800, int height = 500);
+
 /// An SVG of the share (%) of each generation's evaluations in which each
 /// named metric was not 0 (GenerationStats::metrics), e.g. the river
 /// crossing's "level k completed" (Stanton & Channon 2015, Fig. 5), when

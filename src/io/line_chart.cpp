@@ -47,10 +47,19 @@ const char* chart_color(int k) {
 }
 
 std::string line_chart_svg(const LineChart& chart, int width, int height) {
-  // plot area inside margins for title, axes and legend
-  const int rows = static_cast<int>((chart.series.size() + 3) / 4);  // legend rows of four
-  const double left = 70, right = 20, top = 40 + 18.0 * std::max(0, rows - 1), bottom = 60;
-  const double pw = width - left - right, ph = height - top - bottom;
+  // plot area inside margins for title, axes and legend; the legend in rows
+  // of up to four entries, each as wide as the longest name needs
+  std::size_t longest = 0;
+  for (const ChartSeries& c : chart.series) longest = std::max(longest, c.name.size());
+  const double left = 70, right = 20, bottom = 60;
+  const double pw = width - left - right;
+  const double slot = std::max(chart.series.size() > 3 ? 150.0 : 80.0, 34 + 7.2 * static_cast<double>(longest));
+  const int per_row = std::clamp(static_cast<int>(pw / slot), 1, 4);
+  const int n_series = static_cast<int>(chart.series.size());
+  const int rows = (n_series + per_row - 1) / per_row;
+  // a legend wider than the space beside the title goes below it
+  const bool below = per_row < 4 && rows > 0 && slot * std::min(per_row, n_series) > pw - 220;
+  const double top = 40 + 18.0 * std::max(0, rows - 1) + (below ? 18.0 : 0), ph = height - top - bottom;
   const std::vector<double>& xs = chart.xs;
   double x0 = xs.empty() ? 0 : xs.front(), x1 = xs.empty() ? 1 : xs.back();
   if (x1 <= x0) x1 = x0 + 1;
@@ -60,11 +69,12 @@ std::string line_chart_svg(const LineChart& chart, int width, int height) {
     hi = chart.y_max;
   } else {
     for (const ChartSeries& c : chart.series)
-      for (double v : c.ys)
-        if (std::isfinite(v)) {
-          lo = std::min(lo, v);
-          hi = std::max(hi, v);
-        }
+      for (const std::vector<double>* vs : {&c.ys, &c.lo, &c.hi})
+        for (double v : *vs)
+          if (std::isfinite(v)) {
+            lo = std::min(lo, v);
+            hi = std::max(hi, v);
+          }
   }
   if (hi <= lo) hi = lo + 1;
   auto X = [&](double x) { return left + (x - x0) / (x1 - x0) * pw; };
@@ -93,6 +103,22 @@ std::string line_chart_svg(const LineChart& chart, int width, int height) {
        "\" text-anchor=\"middle\">" + escape(chart.x_label) + "</text>\n";
   s += "<text transform=\"translate(16," + fmt("%.1f", top + ph / 2) + ") rotate(-90)\" text-anchor=\"middle\">" +
        escape(chart.y_label) + "</text>\n";
+  // the bands under every curve: hi left to right, then lo back, over each
+  // stretch where both are known
+  for (const ChartSeries& c : chart.series) {
+    const std::size_t n = std::min({c.lo.size(), c.hi.size(), xs.size()});
+    for (std::size_t i = 0; i < n;) {
+      std::size_t j = i;
+      while (j < n && std::isfinite(c.lo[j]) && std::isfinite(c.hi[j])) ++j;
+      if (j > i) {
+        std::string pts;
+        for (std::size_t t = i; t < j; ++t) pts += fmt("%.1f,", X(xs[t])) + fmt("%.1f ", Y(c.hi[t]));
+        for (std::size_t t = j; t-- > i;) pts += fmt("%.1f,", X(xs[t])) + fmt("%.1f ", Y(c.lo[t]));
+        s += "<polygon fill=\"" + c.color + "\" fill-opacity=\"0.18\" stroke=\"none\" points=\"" + pts + "\"/>\n";
+      }
+      i = j + 1;
+    }
+  }
   // the curves, and their legend in rows of four at the top right
   int k = 0;
   for (const ChartSeries& c : chart.series) {
@@ -101,10 +127,9 @@ std::string line_chart_svg(const LineChart& chart, int width, int height) {
       if (std::isfinite(c.ys[i])) pts += fmt("%.1f,", X(xs[i])) + fmt("%.1f ", Y(c.ys[i]));
     s += "<polyline fill=\"none\" stroke=\"" + c.color + "\" stroke-width=\"2\"" +
          (c.dash.empty() ? std::string() : " stroke-dasharray=\"" + c.dash + "\"") + " points=\"" + pts + "\"/>\n";
-    const int row = k / 4, col = k % 4;
-    const int in_row = static_cast<int>(std::min<std::size_t>(4, chart.series.size() - 4 * row));
-    const double slot = chart.series.size() > 3 ? 150 : 80;
-    const double lx = left + pw - slot * in_row + slot * col, ly = 24 + 18.0 * row;
+    const int row = k / per_row, col = k % per_row;
+    const int in_row = std::min(per_row, n_series - per_row * row);
+    const double lx = left + pw - slot * in_row + slot * col, ly = 24 + 18.0 * (row + (below ? 1 : 0));
     s += "<line x1=\"" + fmt("%.1f", lx) + "\" x2=\"" + fmt("%.1f", lx + 20) + "\" y1=\"" + fmt("%.1f", ly) +
          "\" y2=\"" + fmt("%.1f", ly) + "\" stroke=\"" + c.color + "\" stroke-width=\"2\"" +
          (c.dash.empty() ? std::string() : " stroke-dasharray=\"" + c.dash + "\"") + "/><text x=\"" +

@@ -13,6 +13,10 @@ struct ChartSeries {
   std::string color;  ///< any SVG colour
   std::string dash;   ///< stroke-dasharray, or empty: solid
   std::vector<double> ys;
+  /// A band around the curve (an interquartile range, say), drawn shaded in
+  /// its colour under the curves: lo[i] to hi[i] at xs[i] (NaN: none there);
+  /// both empty: no band.
+  std::vector<double> lo, hi;
 };
 
 /// Curves and their labels; y spans 0 and every value, or [y_min, y_max] when given.
