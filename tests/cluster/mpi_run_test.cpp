@@ -157,36 +157,38 @@ std::string parent_of(const std::string& pid) {
   return ppid;
 }
 
+// An evaluation child of the MPI run writing to `out` (a process of the run
+// whose parent is one of its ranks: a rank's parent is mpirun), or "".
+std::string evaluation_child(const fs::path& out) {
+  auto of_run = [&](const std::string& p) {
+    const std::string c = cmdline(p);
+    return c.find(out.string()) != std::string::npos && c.find("mpirun") == std::string::npos;
+  };
+  for (const auto& e : fs::directory_iterator("/proc")) {
+    const std::string pid = e.path().filename().string();
+    if (pid.find_first_not_of("0123456789") != std::string::npos) continue;
+    if (of_run(pid) && of_run(parent_of(pid))) return pid;
+  }
+  return "";
+}
+
+// A generational config of 8 individuals of 4-second evaluations for `generations`
+std::string slow_config(int generations) {
+  return "[genome]\ndialect = \"sims1994\"\n[evolution]\nalgorithm = \"generational\"\npopulation = 8\n"
+         "generations = " + std::to_string(generations) + "\n[task]\nseconds = 4\n";
+}
+
 TEST_F(MpiRun, AnEvaluationChildKilledFromOutsideCostsNothing) {
   // the child lives as long as its rank: killed inside an evaluation or
   // between two, its job (or its next) is given again to a fresh child
-  const fs::path cfg = write("k.toml", R"(
-[genome]
-dialect = "sims1994"
-[evolution]
-algorithm = "generational"
-population = 8
-generations = 4
-[task]
-seconds = 4
-)");
+  const fs::path cfg = write("k.toml", slow_config(4));
   const fs::path whole = dir / "whole", hit = dir / "hit";
   ASSERT_EQ(bestiary("run " + cfg.string() + " --quiet --workers 2 --out " + whole.string()).code, 0);
   std::thread killer([&] {
-    // an evaluation child: a process of this run whose parent is one of its ranks
     const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(60);
     while (std::chrono::steady_clock::now() < until) {
-      for (const auto& e : fs::directory_iterator("/proc")) {
-        const std::string pid = e.path().filename().string();
-        if (pid.find_first_not_of("0123456789") != std::string::npos) continue;
-        // a rank's parent is mpirun; an evaluation child's is a rank
-        auto of_run = [&](const std::string& p) {
-          const std::string c = cmdline(p);
-          return c.find(hit.string()) != std::string::npos && c.find("mpirun") == std::string::npos;
-        };
-        if (!of_run(pid) || !of_run(parent_of(pid))) continue;
-        if (::kill(std::stoi(pid), SIGKILL) == 0) return;
-      }
+      const std::string pid = evaluation_child(hit);
+      if (!pid.empty() && ::kill(std::stoi(pid), SIGKILL) == 0) return;
       std::this_thread::sleep_for(std::chrono::milliseconds(50));
     }
     ADD_FAILURE() << "no evaluation child of the run's ranks was seen";
@@ -217,38 +219,17 @@ TEST_F(MpiRun, TheSlurmScriptStartsARunAndTheSameLineResumesIt) {
 }
 
 TEST_F(MpiRun, ALostRankEndsTheJobAndResumeContinuesItToTheSameEnd) {
-  const fs::path cfg = write("k.toml", R"(
-[genome]
-dialect = "sims1994"
-[evolution]
-algorithm = "generational"
-population = 8
-generations = 6
-[task]
-seconds = 4
-)");
+  const fs::path cfg = write("k.toml", slow_config(6));
   const fs::path whole = dir / "whole", hit = dir / "hit";
   ASSERT_EQ(bestiary("run " + cfg.string() + " --quiet --workers 2 --out " + whole.string()).code, 0);
   std::thread killer([&] {
-    // an evaluating rank: the parent of an evaluation child (rank 0 has none);
-    // killed once the run has stored a generation
+    // an evaluating rank (the parent of an evaluation child: rank 0 has none),
+    // once the run has stored a generation
     const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(60);
     while (std::chrono::steady_clock::now() < until) {
-      if (bxtest::query(hit / "run.sqlite", "SELECT count(*) FROM generation") == "0|\n" ||
-          bxtest::query(hit / "run.sqlite", "SELECT count(*) FROM generation").empty()) {
-        std::this_thread::sleep_for(std::chrono::milliseconds(20));
-        continue;
-      }
-      for (const auto& e : fs::directory_iterator("/proc")) {
-        const std::string pid = e.path().filename().string();
-        if (pid.find_first_not_of("0123456789") != std::string::npos) continue;
-        auto of_run = [&](const std::string& p) {
-          const std::string c = cmdline(p);
-          return c.find(hit.string()) != std::string::npos && c.find("mpirun") == std::string::npos;
-        };
-        if (!of_run(pid) || !of_run(parent_of(pid))) continue;
-        if (::kill(std::stoi(parent_of(pid)), SIGKILL) == 0) return;
-      }
+      const std::string gens = bxtest::query(hit / "run.sqlite", "SELECT count(*) FROM generation");
+      const std::string pid = gens.empty() || gens == "0|\n" ? "" : evaluation_child(hit);
+      if (!pid.empty() && ::kill(std::stoi(parent_of(pid)), SIGKILL) == 0) return;
       std::this_thread::sleep_for(std::chrono::milliseconds(20));
     }
     ADD_FAILURE() << "no evaluating rank of the run was seen after its first generation";
