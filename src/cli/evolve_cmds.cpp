@@ -23,6 +23,7 @@
 #include "genome/genotype_file.h"
 #include "io/config.h"
 #include "io/presets.h"
+#include "io/run_csv.h"
 #include "io/run_store.h"
 #include "io/syllabus.h"
 
@@ -247,6 +248,16 @@ int cmd_resume(const std::string& dir, const EvaluatorArgs& evaluator, int worke
   return finish(dir, drive_run(dir, run_options(evaluator, workers, quiet, 0)));
 }
 
+int cmd_export(const std::string& dir, const std::string& csv) {
+  if (!fs::is_directory(dir)) return fail(dir + ": no such run directory");
+  if (csv.empty()) return fail("export: say what to write: --csv DIR");
+  auto e = export_run_csv(run_db_path(dir), csv);
+  if (!e) return fail(e.error());
+  std::printf("%s -> %s: generations.csv (%ld rows), individuals.csv (%ld), metrics.csv (%ld), run.csv (%ld)\n",
+              dir.c_str(), csv.c_str(), e->generations, e->individuals, e->metrics, e->run);
+  return 0;
+}
+
 int cmd_verify(const std::string& dir) {
   if (!fs::is_directory(dir)) return fail(dir + ": no such run directory");
   auto v = verify_run(dir);
@@ -392,6 +403,12 @@ void add_evolve_commands(CLI::App& app) {
     resume_evaluator.workers_given = sw->count() > 0;
     std::exit(cmd_resume(resume_dir, resume_evaluator, resume_workers, resume_quiet, resume_set));
   });
+
+  static std::string export_dir, export_csv;
+  auto* x = app.add_subcommand("export", "Write a run's database as CSV files (generations, individuals, metrics, run)");
+  x->add_option("run_dir", export_dir, "Run directory")->required();
+  x->add_option("--csv", export_csv, "Directory to write the CSV files into (created if need be)");
+  x->callback([] { std::exit(cmd_export(export_dir, export_csv)); });
 
   static std::string verify_dir;
   auto* v = app.add_subcommand("verify", "Check a run's database whole: every stored row against its checksum, none missing");
