@@ -23,6 +23,7 @@
 #include "genome/genotype_file.h"
 #include "io/config.h"
 #include "io/presets.h"
+#include "io/mjcf.h"
 #include "io/run_csv.h"
 #include "io/run_store.h"
 #include "io/syllabus.h"
@@ -248,9 +249,37 @@ int cmd_resume(const std::string& dir, const EvaluatorArgs& evaluator, int worke
   return finish(dir, drive_run(dir, run_options(evaluator, workers, quiet, 0)));
 }
 
-int cmd_export(const std::string& dir, const std::string& csv) {
+struct ExportArgs {
+  std::string target, csv, mjcf;
+  CreatureFlags flags;
+};
+
+// a creature as MJCF: its body, joints, actuators and the physics that matter
+int export_mjcf(const ExportArgs& a) {
+  const std::string ext = fs::path(a.mjcf).extension().string();
+  if (ext != ".xml") return fail("--mjcf: expected an .xml file, got \"" + a.mjcf + "\"");
+  auto subject = resolve_creature(a.target, a.flags);
+  if (!subject) return fail(subject.error());
+  auto creature = subject->develop();
+  if (!creature) return fail(a.target + ": not viable: " + creature.error());
+  if (!creature->body) return fail(a.target + ": a " + subject->kind_name() + " has no body to export");
+  MjcfNotes notes;
+  const std::string xml = creature_mjcf(*creature->body, subject->cfg.sim, subject->label, &notes);
+  if (Status s = make_parent_dir("--mjcf", a.mjcf); !s) return fail(s.error());
+  if (Status s = write_file_atomic(a.mjcf, xml); !s) return fail(s.error());
+  const CreatureModel& m = *creature->body;
+  std::printf("%s -> %s: %d bodies, %zu joints, %zu effectors, %.6g kg\n", subject->label.c_str(), a.mjcf.c_str(),
+              m.n_parts(), m.joints.size(), m.effectors.size(), m.total_mass());
+  for (const std::string& line : notes.lines) std::printf("note: %s\n", line.c_str());
+  return 0;
+}
+
+int cmd_export(const ExportArgs& a) {
+  if (a.csv.empty() == a.mjcf.empty()) return fail("export: say what to write: --csv DIR (a run) or --mjcf OUT.xml (a creature)");
+  if (!a.mjcf.empty()) return export_mjcf(a);
+  const std::string& dir = a.target;
   if (!fs::is_directory(dir)) return fail(dir + ": no such run directory");
-  if (csv.empty()) return fail("export: say what to write: --csv DIR");
+  const std::string& csv = a.csv;
   auto e = export_run_csv(run_db_path(dir), csv);
   if (!e) return fail(e.error());
   std::printf("%s -> %s: generations.csv (%ld rows), individuals.csv (%ld), metrics.csv (%ld), run.csv (%ld)\n",
@@ -404,11 +433,12 @@ void add_evolve_commands(CLI::App& app) {
     std::exit(cmd_resume(resume_dir, resume_evaluator, resume_workers, resume_quiet, resume_set));
   });
 
-  static std::string export_dir, export_csv;
-  auto* x = app.add_subcommand("export", "Write a run's database as CSV files (generations, individuals, metrics, run)");
-  x->add_option("run_dir", export_dir, "Run directory")->required();
-  x->add_option("--csv", export_csv, "Directory to write the CSV files into (created if need be)");
-  x->callback([] { std::exit(cmd_export(export_dir, export_csv)); });
+  static ExportArgs exp;
+  auto* x = app.add_subcommand("export", "Write a run's database as CSV files, or a creature as MuJoCo's MJCF");
+  add_creature_options(x, exp.target, exp.flags);
+  x->add_option("--csv", exp.csv, "A run: the directory to write its CSV files into (created if need be)");
+  x->add_option("--mjcf", exp.mjcf, "A creature: the MJCF file (.xml) to write (docs/export.md)");
+  x->callback([] { std::exit(cmd_export(exp)); });
 
   static std::string verify_dir;
   auto* v = app.add_subcommand("verify", "Check a run's database whole: every stored row against its checksum, none missing");

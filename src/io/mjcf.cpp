@@ -1,0 +1,207 @@
+#include "io/mjcf.h"
+
+#include <charconv>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "eval/task_table.h"
+
+namespace bx {
+
+namespace {
+
+// the shortest text that reads back to the same double
+std::string num(double v) {
+  if (std::abs(v) < 1e-300) v = 0;  // no "-0"
+  char buf[32];
+  auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
+}
+
+std::string vec(Vec3 v) { return num(v.x) + " " + num(v.y) + " " + num(v.z); }
+
+std::string quat(const Mat3& R) {
+  const Quat q = to_quat(R);
+  return num(q.w) + " " + num(q.x) + " " + num(q.y) + " " + num(q.z);
+}
+
+std::string xml_text(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+// a part's geom in its own body's frame (the part's centre and axes)
+std::string geom(const PartModel& p, int i) {
+  const Vec3 s = p.size;
+  std::string g = "<geom name=\"g" + std::to_string(i) + "\" mass=\"" + num(p.mass) + "\" ";
+  switch (p.shape) {
+    case Shape::Box: g += "type=\"box\" size=\"" + vec(0.5 * s) + "\""; break;
+    case Shape::Sphere: g += "type=\"sphere\" size=\"" + num(s.x / 2) + "\""; break;
+    case Shape::Capsule: {  // along x: length x overall, diameter y
+      const double half = std::max(s.x - s.y, 0.0) / 2;
+      g += "type=\"capsule\" size=\"" + num(s.y / 2) + "\" fromto=\"" + num(-half) + " 0 0 " + num(half) + " 0 0\"";
+      break;
+    }
+    case Shape::Cylinder:
+      g += "type=\"cylinder\" size=\"" + num(s.y / 2) + "\" fromto=\"" + num(-s.x / 2) + " 0 0 " + num(s.x / 2) +
+           " 0 0\"";
+      break;
+  }
+  return g + "/>";
+}
+
+// the joint's degrees of freedom as MJCF joints: (type, axis in the creature
+// frame, limit) each, in its dof order
+struct Dof {
+  const char* type;
+  Vec3 axis;
+  const Limit* limit;
+};
+std::vector<Dof> dofs(const JointModel& j) {
+  auto lim = [&](int k) { return k < static_cast<int>(j.limits.size()) ? &j.limits[k] : nullptr; };
+  switch (j.type) {
+    case JointType::Fixed: return {};
+    case JointType::Hinge: return {{"hinge", j.axis1, lim(0)}};
+    case JointType::Universal: return {{"hinge", j.axis1, lim(0)}, {"hinge", j.axis2, lim(1)}};
+    case JointType::Spherical:  // Euler angles: axis1, the third axis, axis2 (genome.h)
+      return {{"hinge", j.axis1, lim(0)}, {"hinge", normalized(cross(j.axis2, j.axis1)), lim(1)},
+              {"hinge", j.axis2, lim(2)}};
+    case JointType::Slider: return {{"slide", j.axis1, lim(0)}};
+    case JointType::Cylindrical: return {{"slide", j.axis1, lim(0)}, {"hinge", j.axis1, lim(1)}};
+  }
+  return {};
+}
+
+}  // namespace
+
+std::string creature_mjcf(const CreatureModel& m, const SimConfig& cfg, const std::string& name, MjcfNotes* notes) {
+  MjcfNotes local;
+  MjcfNotes& n = notes ? *notes : local;
+  const PhysicsDef& ph = cfg.physics;
+  const MotorDef& motor = cfg.motor;
+  // each part's joint to its parent
+  std::vector<int> joint_of(m.parts.size(), -1);
+  for (int j = 0; j < static_cast<int>(m.joints.size()); ++j) joint_of[m.joints[j].child] = j;
+  std::vector<std::vector<int>> children(m.parts.size());
+  for (int i = 1; i < m.n_parts(); ++i) children[m.parts[i].parent].push_back(i);
+  bool joined_collide = false;
+  for (const JointModel& j : m.joints) joined_collide = joined_collide || j.parts_collide;
+
+  // contacts: every part with the floor; parts with each other as the
+  // config says (MuJoCo never lets a body touch its parent unless told)
+  const std::string self = ph.self_collision ? "contype=\"1\" conaffinity=\"1\"" : "contype=\"2\" conaffinity=\"1\"";
+  std::string x = "<mujoco model=\"" + xml_text(name) + "\">\n";
+  x += "  <!-- exported by Bestiary (docs/export.md): lengths m, angles rad, masses kg -->\n";
+  x += "  <compiler angle=\"radian\" inertiafromgeom=\"true\"/>\n";
+  x += "  <option timestep=\"" + num(ph.dt) + "\" gravity=\"0 0 " + num(ph.gravity) + "\">\n";
+  x += std::string("    <flag filterparent=\"") + (joined_collide ? "disable" : "enable") + "\"/>\n  </option>\n";
+  x += "  <default>\n    <geom friction=\"" + num(ph.friction) + " 0.005 0.0001\" " + self + "/>\n  </default>\n";
+  x += "  <worldbody>\n";
+  x += "    <geom name=\"floor\" type=\"plane\" size=\"0 0 1\" contype=\"1\" conaffinity=\"3\"/>\n";
+  const double drop = task_row(cfg.task_kind).drop_height(cfg);
+  const Vec3 lift{0, 0, drop - m.min_z()};
+
+  // the tree, depth first: each body's frame its part's, given in its parent's
+  std::vector<std::string> joint_names(m.joints.size() * 3);
+  auto body = [&](auto&& self_fn, int i, const std::string& indent) -> void {
+    const PartModel& p = m.parts[i];
+    Vec3 pos;
+    Mat3 R;
+    if (p.parent < 0) {
+      pos = p.pose.p + lift;
+      R = p.pose.R;
+    } else {
+      const Pose& q = m.parts[p.parent].pose;
+      pos = q.R.transposed() * (p.pose.p - q.p);
+      R = q.R.transposed() * p.pose.R;
+    }
+    x += indent + "<body name=\"p" + std::to_string(i) + "\" pos=\"" + vec(pos) + "\" quat=\"" + quat(R) + "\">\n";
+    const std::string in = indent + "  ";
+    if (p.parent < 0) x += in + "<freejoint name=\"root\"/>\n";
+    if (int j = joint_of[i]; j >= 0) {
+      const JointModel& jm = m.joints[j];
+      const Mat3 Rt = p.pose.R.transposed();
+      const Vec3 anchor = Rt * (jm.anchor - p.pose.p);
+      int k = 0;
+      for (const Dof& d : dofs(jm)) {
+        std::string jn = "j";
+        jn += std::to_string(j);
+        jn += '_';
+        jn += std::to_string(k);
+        joint_names[static_cast<std::size_t>(j) * 3 + k] = jn;
+        // ODE's angle is the parent's turn relative to the child: about the negated axis here
+        x += in + "<joint name=\"" + jn + "\" type=\"" + d.type + "\" pos=\"" + vec(anchor) + "\" axis=\"" +
+             vec(-1.0 * (Rt * d.axis)) + "\"";
+        if (d.limit && d.limit->hi > d.limit->lo)
+          x += " limited=\"true\" range=\"" + num(d.limit->lo) + " " + num(d.limit->hi) + "\"";
+        if (motor.model == MotorModel::PD) x += " damping=\"" + num(motor.kd) + "\"";
+        x += "/>\n";
+        ++k;
+      }
+    }
+    x += in + geom(p, i) + "\n";
+    for (int c : children[i]) self_fn(self_fn, c, in);
+    x += indent + "</body>\n";
+  };
+  body(body, 0, "    ");
+  x += "  </worldbody>\n";
+
+  // the actuators: one per effector on its joint's degree of freedom
+  std::string acts;
+  int muscles = 0;
+  for (int e = 0; e < static_cast<int>(m.effectors.size()); ++e) {
+    const EffectorModel& em = m.effectors[e];
+    if (motor.model == MotorModel::Muscle || em.muscle >= 0) {
+      ++muscles;
+      continue;
+    }
+    const std::string& jn = joint_names[static_cast<std::size_t>(em.joint) * 3 + em.dof];
+    if (jn.empty()) continue;
+    const std::string head = "    <", tail = " name=\"e" + std::to_string(e) + "\" joint=\"" + jn + "\"";
+    const double torque = motor.strength * em.cross_section;
+    switch (motor.model) {
+      case MotorModel::Torque:
+      case MotorModel::Saturation:
+        acts += head + "motor" + tail + " gear=\"" + num(torque) + "\" ctrllimited=\"true\" ctrlrange=\"-1 1\"/>\n";
+        break;
+      case MotorModel::Servo:
+        acts += head + "velocity" + tail + " kv=\"" + num(motor.max_force) + "\" forcelimited=\"true\" forcerange=\"" +
+                num(-motor.max_force) + " " + num(motor.max_force) + "\" ctrllimited=\"true\" ctrlrange=\"" +
+                num(-motor.max_speed) + " " + num(motor.max_speed) + "\"/>\n";
+        break;
+      case MotorModel::PD: {
+        const JointModel& jm = m.joints[em.joint];
+        const Limit l = em.dof < static_cast<int>(jm.limits.size()) ? jm.limits[em.dof] : Limit{-kPi, kPi};
+        acts += head + "position" + tail + " kp=\"" + num(motor.kp) + "\" ctrllimited=\"true\" ctrlrange=\"" +
+                num(l.lo) + " " + num(l.hi) + "\"/>\n";
+        break;
+      }
+      case MotorModel::Muscle: break;
+    }
+  }
+  if (!acts.empty()) x += "  <actuator>\n" + acts + "  </actuator>\n";
+  x += "</mujoco>\n";
+
+  if (muscles > 0)
+    n.lines.push_back(std::to_string(muscles) + " muscle effectors not exported (MJCF muscles act along tendons: "
+                      "not written yet); the body and joints are");
+  if (motor.model == MotorModel::Servo)
+    n.lines.push_back("servo motors as velocity actuators: control = target speed (rad/s), kv = the force cap");
+  if (motor.model == MotorModel::Saturation)
+    n.lines.push_back("saturation motors as torque motors of their force at signal 1 (MuJoCo has no capped velocity motor)");
+  if (motor.response_time > 0)
+    n.lines.push_back("the motors' response time (" + num(motor.response_time) + " s) is not in MJCF: filter the controls");
+  return x;
+}
+
+}  // namespace bx

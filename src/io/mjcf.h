@@ -1,0 +1,34 @@
+// A developed creature as MuJoCo's MJCF (`bestiary export CREATURE --mjcf
+// OUT.xml`; docs/export.md): its parts as bodies of a kinematic tree with
+// their shapes and masses, its joints with their axes and limits, an
+// actuator per effector, and the physics that matter (step, gravity,
+// friction, which parts collide), so that another simulator can run the same
+// body. Lengths in metres, angles in radians, masses in kilograms.
+#pragma once
+
+#include <string>
+
+#include "develop/creature_model.h"
+#include "eval/sim_config.h"
+
+namespace bx {
+
+/// What creature_mjcf left out or approximated, for the user (one line
+/// each; empty when it is exact as far as MJCF goes).
+struct MjcfNotes {
+  std::vector<std::string> lines;
+};
+
+/// The MJCF of `m` standing as `cfg` starts it (the root `drop_height` above
+/// the floor at the pose built), named `name`. Each joint degree of freedom
+/// is a MuJoCo joint named "j<joint>_<dof>" whose angle has ODE's sign (the
+/// parent's turn relative to the child about the joint's axis: the MJCF axis
+/// is the negated one), its range the joint's limits; each effector an
+/// actuator "e<index>" on its joint (cfg.motor.model: torque and saturation
+/// a motor of the torque at signal 1, servo a velocity actuator, pd a
+/// position actuator with the joint's damping kd; muscles are not exported,
+/// which `notes` says).
+std::string creature_mjcf(const CreatureModel& m, const SimConfig& cfg, const std::string& name,
+                          MjcfNotes* notes = nullptr);
+
+}  // namespace bx

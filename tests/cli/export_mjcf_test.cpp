@@ -1,0 +1,53 @@
+// `bestiary export CREATURE --mjcf OUT.xml` from the command line: a genome
+// file and a run's creature are written and say what they hold; what cannot
+// be exported is refused in one line and writes nothing.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <string>
+
+#include "support/run_command.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using bxtest::bestiary;
+using bxtest::Outcome;
+
+class ExportMjcf : public bxtest::InTempDir {};
+
+TEST_F(ExportMjcf, AGenomeFileAndARunsCreatureAreWritten) {
+  Outcome r = bestiary("export " + bxtest::creature("centipede.json") + " --mjcf " + (dir / "c.xml").string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("12 bodies, 11 joints, 11 effectors"), std::string::npos) << r.out;
+  const std::string xml = bxtest::slurp(dir / "c.xml");
+  EXPECT_NE(xml.find("<freejoint name=\"root\"/>"), std::string::npos);
+  EXPECT_EQ(std::count(xml.begin(), xml.end(), '\n') > 20, true);
+  // muscles are named as left out
+  r = bestiary("export " + bxtest::creature("lessin_crawler.json") + " --mjcf " + (dir / "l.xml").string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("note: 24 muscle effectors not exported"), std::string::npos) << r.out;
+  // a run's best
+  const fs::path run = dir / "r";
+  ASSERT_EQ(bxtest::small_run(run).code, 0);
+  r = bestiary("export " + run.string() + " --mjcf " + (dir / "best.xml").string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(dir / "best.xml"));
+}
+
+TEST_F(ExportMjcf, WhatCannotBeExportedIsRefusedInOneLine) {
+  const std::string c = bxtest::creature("centipede.json");
+  for (const std::string& bad : {c + " --mjcf " + (dir / "x.json").string(),   // not .xml
+                                 c,                                             // nothing to write
+                                 c + " --mjcf " + (dir / "x.xml").string() + " --csv " + dir.string(),  // both
+                                 (dir / "none.json").string() + " --mjcf " + (dir / "x.xml").string()}) {
+    Outcome r = bestiary("export " + bad);
+    EXPECT_EQ(r.code, 2) << bad;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  }
+  EXPECT_FALSE(fs::exists(dir / "x.xml"));
+  EXPECT_FALSE(fs::exists(dir / "x.json"));
+}
+
+}  // namespace

@@ -1,0 +1,130 @@
+// A creature exported as MJCF (io/mjcf.h, docs/export.md) loads in MuJoCo
+// (Debian's libmujoco) with the body's parts, masses, joints and actuators;
+// dropped with its controls at 0 it comes to rest; and a joint's angle has
+// ODE's sign (the river quadruped's positive knee angle lowers its foot, as
+// in our world).
+#include "io/mjcf.h"
+
+#include <gtest/gtest.h>
+#include <mujoco/mujoco.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "develop/develop.h"
+#include "genome/genome_json.h"
+#include "io/config.h"
+#include "physics/world.h"
+#include "task/river/quadruped.h"
+
+namespace bx {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Loaded {
+  mjModel* m = nullptr;
+  std::string error;
+  ~Loaded() {
+    if (m) mj_deleteModel(m);
+  }
+};
+
+void load(const std::string& xml, Loaded& out) {
+  const fs::path f = fs::temp_directory_path() / ("bx_mjcf_" + std::to_string(::getpid()) + ".xml");
+  std::ofstream(f) << xml;
+  char err[1000] = "";
+  out.m = mj_loadXML(f.c_str(), nullptr, err, sizeof err);
+  out.error = err;
+  fs::remove(f);
+}
+
+// the degrees of freedom of a model's joints, as MJCF joints count them
+int dof_joints(const CreatureModel& m) {
+  int n = 0;
+  for (const JointModel& j : m.joints) n += joint_dofs(j.type);
+  return n;
+}
+
+class MjcfCreature : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(MjcfCreature, LoadsWithItsPartsMassJointsAndActuatorsAndComesToRest) {
+  const std::string name = GetParam();
+  auto g = load_genome(std::string(BESTIARY_SOURCE_DIR) + "/creatures/" + name + ".json");
+  ASSERT_TRUE(g.ok()) << g.error();
+  auto cfg = read_run_config("[genome]\ndialect = \"" + std::string(to_string(g->dialect)) + "\"\n", "test");
+  ASSERT_TRUE(cfg.ok()) << cfg.error();
+  Development dev = develop(*g, cfg->sim.develop);
+  ASSERT_TRUE(dev.viable()) << dev.reason;
+  const CreatureModel& cm = *dev.model;
+  MjcfNotes notes;
+  Loaded l;
+  load(creature_mjcf(cm, cfg->sim, name, &notes), l);
+  ASSERT_NE(l.m, nullptr) << l.error;
+  EXPECT_EQ(l.m->nbody, cm.n_parts() + 1);  // and the world
+  double mass = 0;
+  for (int b = 1; b < l.m->nbody; ++b) mass += l.m->body_mass[b];
+  EXPECT_NEAR(mass, cm.total_mass(), 1e-9 * cm.total_mass());
+  EXPECT_EQ(l.m->njnt, 1 + dof_joints(cm));  // the free root and every degree of freedom
+  int drivable = 0;
+  for (const EffectorModel& e : cm.effectors) drivable += e.muscle < 0 && cfg->sim.motor.model != MotorModel::Muscle;
+  EXPECT_EQ(l.m->nu, drivable);
+  EXPECT_EQ(notes.lines.empty(), drivable == static_cast<int>(cm.effectors.size()) &&
+                                     cfg->sim.motor.model != MotorModel::Servo &&
+                                     cfg->sim.motor.model != MotorModel::Saturation && !(cfg->sim.motor.response_time > 0));
+  // dropped with every control at 0: after 10 s it rests (the root's speed
+  // below 1 cm/s and 0.05 rad/s), without a warning from MuJoCo
+  mjData* d = mj_makeData(l.m);
+  const int steps = static_cast<int>(std::lround(10 / l.m->opt.timestep));
+  for (int i = 0; i < steps; ++i) mj_step(l.m, d);
+  for (int k = 0; k < l.m->nv; ++k) ASSERT_TRUE(std::isfinite(d->qvel[k])) << k;
+  EXPECT_LT(std::hypot(d->qvel[0], d->qvel[1], d->qvel[2]), 0.01);
+  EXPECT_LT(std::hypot(d->qvel[3], d->qvel[4], d->qvel[5]), 0.05);
+  for (int w = 0; w < mjNWARNING; ++w) EXPECT_EQ(d->warning[w].number, 0) << "MuJoCo warning " << w;
+  mj_deleteData(d);
+}
+
+INSTANTIATE_TEST_SUITE_P(Canonical, MjcfCreature,
+                         ::testing::Values("hinged_pair", "snake", "walker", "centipede", "rocker", "lessin_crawler"));
+
+TEST(Mjcf, AJointsAngleHasOdesSign) {
+  // the river quadruped: a positive knee angle lowers the lower limb (docs/rivercrossing.md,
+  // "Joints"), in our world by the PD motor and in MuJoCo by setting the angle
+  const QuadrupedDef def;
+  const CreatureModel cm = make_quadruped(def);
+  auto cfg = read_run_config("[genotype]\nkind = \"river\"\n", "test");
+  ASSERT_TRUE(cfg.ok()) << cfg.error();
+  Loaded l;
+  load(creature_mjcf(cm, cfg->sim, "quadruped"), l);
+  ASSERT_NE(l.m, nullptr) << l.error;
+  mjData* d = mj_makeData(l.m);
+  mj_forward(l.m, d);
+  const int lower = mj_name2id(l.m, mjOBJ_BODY, "p2");  // leg 0's lower limb
+  const int knee = mj_name2id(l.m, mjOBJ_JOINT, "j1_0");
+  ASSERT_GE(lower, 0);
+  ASSERT_GE(knee, 0);
+  const double z0 = d->xpos[3 * lower + 2];
+  d->qpos[l.m->jnt_qposadr[knee]] = 0.3;
+  mj_forward(l.m, d);
+  const double z1 = d->xpos[3 * lower + 2];
+  EXPECT_LT(z1, z0 - 1e-3) << "a positive knee angle must lower the limb";
+  mj_deleteData(d);
+  // and in our world: the knee's angle read back after a positive target is positive
+  PhysicsDef physics = river_physics(def);
+  physics.gravity = 0;
+  World w(physics);
+  w.add_creature(cm, {{0, 0, 1}, Mat3::identity()});
+  std::vector<double> s(kQuadrupedEffectors, 0.0);
+  s[2] = 0.5;  // leg 0's knee
+  for (int i = 0; i < 300; ++i) {
+    w.apply_effectors(cm, river_motor(), s);
+    w.step();
+  }
+  EXPECT_GT(w.joint_position(1, 0), 0.05);
+}
+
+}  // namespace
+}  // namespace bx
