@@ -125,4 +125,20 @@ inline std::string utf8_text(std::string_view bytes) {
   return out;
 }
 
+/// `bytes` as text inside an XML (or SVG, MJCF) attribute or element:
+/// UTF-8 as utf8_text makes it, with & < > " escaped.
+inline std::string xml_text(std::string_view bytes) {
+  std::string out;
+  for (char c : utf8_text(bytes)) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
 }  // namespace bx

@@ -17,19 +17,7 @@ std::string fmt(const char* f, double v) {
 }
 
 // XML-safe text (UTF-8, as XML must be: a run's name may be a path of any bytes)
-std::string escape(const std::string& s) {
-  std::string out;
-  for (char c : utf8_text(s)) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
+std::string escape(const std::string& s) { return xml_text(s); }
 
 // a "nice" tick step giving about n ticks over span
 double tick_step(double span, int n) {

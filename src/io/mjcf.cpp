@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "core/text.h"
 #include "eval/task_table.h"
 
 namespace bx {
@@ -26,19 +27,6 @@ std::string quat(const Mat3& R) {
   return num(q.w) + " " + num(q.x) + " " + num(q.y) + " " + num(q.z);
 }
 
-std::string xml_text(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
 
 // a part's geom in its own body's frame (the part's centre and axes)
 std::string geom(const PartModel& p, int i) {

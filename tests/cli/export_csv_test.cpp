@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "support/run_command.h"
+#include "support/tiny_runs.h"
 
 namespace {
 
@@ -19,22 +20,7 @@ using bxtest::bestiary;
 using bxtest::Outcome;
 
 // a tiny river crossing run: named metrics per report interval
-const char* kRiver = R"(
-[genotype]
-kind = "river"
-[river]
-seconds = 1
-[evolution]
-algorithm = "steady_state"
-tournament_evaluates = "all"
-population = 9
-evaluations = 9
-batch = 3
-report_every = 3
-p_asexual = 0
-p_crossover = 1
-p_graft = 0
-)";
+const char* kRiver = bxtest::kTinyRiverRun;
 
 std::vector<std::string> lines_of(const fs::path& p) {
   std::istringstream in(bxtest::slurp(p));

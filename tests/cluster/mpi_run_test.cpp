@@ -20,6 +20,7 @@
 
 #include "support/general_esp.h"
 #include "support/run_command.h"
+#include "support/tiny_runs.h"
 
 namespace {
 
@@ -57,22 +58,7 @@ report_every = 8
 seconds = 1
 )";
 
-const char* kRiver = R"(
-[genotype]
-kind = "river"
-[river]
-seconds = 1
-[evolution]
-algorithm = "steady_state"
-tournament_evaluates = "all"
-population = 9
-evaluations = 9
-batch = 3
-report_every = 3
-p_asexual = 0
-p_crossover = 1
-p_graft = 0
-)";
+const char* kRiver = bxtest::kTinyRiverRun;
 
 // every stored row that evolution writes, as text
 std::string dump(const fs::path& dir) {
