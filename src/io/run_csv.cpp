@@ -98,7 +98,7 @@ Result<CsvExport> export_run_csv(const std::string& db_path, const std::string& 
     const bool ok = sqlite3_prepare_v2(db, "SELECT 1 FROM stage", -1, &s, nullptr) == SQLITE_OK;
     sqlite3_finalize(s);
     return ok;
-  }();
+  }();  // (a database stored before runs had stages: none)
   CsvExport out;
   auto gens = write_query(db, db_path,
                           "SELECT g.gen, " + (staged ? stage_of : std::string("''")) +
@@ -108,14 +108,43 @@ Result<CsvExport> export_run_csv(const std::string& db_path, const std::string& 
                           (d / "generations.csv").string());
   if (!gens) return Error{gens.error()};
   out.generations = *gens;
+  // a database stored before a column was added reads as its default then
+  // (resume and verify add it; this reads without writing)
+  auto column = [&](const char* name, const char* otherwise) {
+    sqlite3_stmt* q = nullptr;
+    bool has = false;
+    if (sqlite3_prepare_v2(db, "SELECT 1 FROM pragma_table_info('individual') WHERE name = ?", -1, &q, nullptr) ==
+        SQLITE_OK) {
+      sqlite3_bind_text(q, 1, name, -1, SQLITE_STATIC);
+      has = sqlite3_step(q) == SQLITE_ROW;
+    }
+    sqlite3_finalize(q);
+    return has ? std::string(name) : std::string(otherwise) + " AS " + name;
+  };
   auto inds = write_query(db, db_path,
-                          "SELECT id, gen, fitness, distance, evaluations, parent1, parent2, operator, failure, seed, "
-                          "kind FROM individual ORDER BY id",
+                          "SELECT id, gen, fitness, distance, " + column("evaluations", "1") +
+                              ", parent1, parent2, operator, failure, " + column("seed", "NULL") + ", " +
+                              column("kind", "'graph'") + " FROM individual ORDER BY id",
                           "id,generation,fitness,distance,evaluations,parent1,parent2,operator,failure,seed,kind",
                           (d / "individuals.csv").string());
   if (!inds) return Error{inds.error()};
   out.individuals = *inds;
-  auto mets = write_query(db, db_path, "SELECT gen, name, mean, nonzero FROM generation_metric ORDER BY gen, name",
+  // (a database stored before runs had metrics: none)
+  auto has_table = [&](const char* name) {
+    sqlite3_stmt* q = nullptr;
+    bool has = false;
+    if (sqlite3_prepare_v2(db, "SELECT 1 FROM sqlite_schema WHERE type = 'table' AND name = ?", -1, &q, nullptr) ==
+        SQLITE_OK) {
+      sqlite3_bind_text(q, 1, name, -1, SQLITE_STATIC);
+      has = sqlite3_step(q) == SQLITE_ROW;
+    }
+    sqlite3_finalize(q);
+    return has;
+  };
+  auto mets = write_query(db, db_path,
+                          has_table("generation_metric")
+                              ? "SELECT gen, name, mean, nonzero FROM generation_metric ORDER BY gen, name"
+                              : "SELECT 1 WHERE 0",
                           "generation,metric,mean,nonzero_share", (d / "metrics.csv").string());
   if (!mets) return Error{mets.error()};
   out.metrics = *mets;

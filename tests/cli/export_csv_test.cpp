@@ -2,6 +2,7 @@
 // value as stored (reals read back to the same double), fields quoted per RFC
 // 4180; refusals in one line.
 #include <gtest/gtest.h>
+#include <sqlite3.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -64,6 +65,26 @@ TEST_F(ExportCsv, EveryTableRowIsWrittenWithItsValuesExactly) {
   EXPECT_NE(all.find("\nname,\""), std::string::npos) << all;
   EXPECT_NE(all.find("a,b\"\"c.toml\"\n"), std::string::npos) << all;
   EXPECT_EQ(all.find("\nconfig,"), std::string::npos);
+}
+
+TEST_F(ExportCsv, ADatabaseStoredBeforeLaterColumnsAndTablesReadsWithTheirDefaults) {
+  const fs::path cfg = write("r.toml", kRiver), run = dir / "r", csv = dir / "csv";
+  ASSERT_EQ(bestiary("run " + cfg.string() + " --workers 0 --quiet --out " + run.string()).code, 0);
+  sqlite3* db = nullptr;
+  ASSERT_EQ(sqlite3_open((run / "run.sqlite").c_str(), &db), SQLITE_OK);
+  EXPECT_EQ(sqlite3_exec(db,
+                         "ALTER TABLE individual DROP COLUMN evaluations; ALTER TABLE individual DROP COLUMN kind; "
+                         "ALTER TABLE individual DROP COLUMN seed; DROP TABLE generation_metric; DROP TABLE stage;",
+                         nullptr, nullptr, nullptr),
+            SQLITE_OK);
+  sqlite3_close(db);
+  Outcome r = bestiary("export " + run.string() + " --csv " + csv.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto inds = lines_of(csv / "individuals.csv");
+  ASSERT_GT(inds.size(), 1u);
+  EXPECT_EQ(inds[1].substr(inds[1].size() - std::string(",1,,,random,,,graph").size()), ",1,,,random,,,graph")
+      << inds[1];
+  EXPECT_EQ(lines_of(csv / "metrics.csv").size(), 1u);  // the header alone
 }
 
 TEST_F(ExportCsv, RefusesInOneLine) {
