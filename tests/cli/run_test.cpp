@@ -328,7 +328,7 @@ TEST_F(RunCli, BadInputGivesOneErrorLineAndWritesNothing) {
        "--stop-after: expected a whole number from 1 to 2147483647, got \"0\" (see " BESTIARY_BINARY " run --help)"},
       {"run " + cfg + " --out " + out.string() + " --frob",
        "The following argument was not expected: --frob (see " BESTIARY_BINARY " run --help)"},
-      {"runn " + cfg, "runn: no such command (did you mean \"run\"?); the commands: simulate, config, run, resume, verify, "
+      {"runn " + cfg, "runn: no such command (did you mean \"run\"?); the commands: simulate, config, run, resume, export, verify, "
                       "best, presets, show, render, plot, check"},
       {"run quikc --out " + out.string(), "quikc: no such config file, and no preset of that name (did you mean "
                                           "\"quick\"?) (`" BESTIARY_BINARY " presets` lists them)"},
