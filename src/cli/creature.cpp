@@ -293,11 +293,7 @@ Result<Subject> from_genome(const std::string& path, const CreatureFlags& f) {
 
 }  // namespace
 
-std::string exact_number(double v) {
-  char buf[32];
-  auto r = std::to_chars(buf, buf + sizeof buf, v);
-  return std::string(buf, r.ptr);
-}
+std::string exact_number(double v) { return shortest_number(v); }
 
 Status set_seconds(SimConfig& sim, const std::optional<double>& seconds) {
   if (!seconds) return Ok{};

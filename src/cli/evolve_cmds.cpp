@@ -155,6 +155,13 @@ struct RunArgs {
 
 int cmd_run(const RunArgs& a);
 
+// runs/NAME-TIME, or with -2, -3, ... when that exists
+std::string default_run_dir(const std::string& name) {
+  std::string dir = "runs/" + name + "-" + timestamp();
+  for (int k = 2; fs::exists(dir); ++k) dir = "runs/" + name + "-" + timestamp() + "-" + std::to_string(k);
+  return dir;
+}
+
 // `run --seeds`: one run per seed, each in OUT/seed-S; under MPI each group of
 // ranks runs its own seed side by side (mpi_group), otherwise one after another
 int cmd_run_seeds(const RunArgs& a) {
@@ -179,8 +186,7 @@ int cmd_run_seeds(const RunArgs& a) {
   if (one.out.empty()) {
     auto src = config_source(a.config);
     if (!src) return fail(src.error());
-    one.out = "runs/" + src->first + "-" + timestamp();
-    for (int k = 2; fs::exists(one.out); ++k) one.out = "runs/" + src->first + "-" + timestamp() + "-" + std::to_string(k);
+    one.out = default_run_dir(src->first);
   }
   const std::string base = one.out;
   for (std::uint64_t s : *seeds) {
@@ -206,8 +212,7 @@ int cmd_run(const RunArgs& a) {
     if (Status s = mpi_ready(); !s) return fail(s.error());  // before a folder exists
   std::string dir = a.out;
   if (dir.empty()) {
-    dir = "runs/" + src->first + "-" + timestamp();
-    for (int k = 2; fs::exists(dir); ++k) dir = "runs/" + src->first + "-" + timestamp() + "-" + std::to_string(k);
+    dir = default_run_dir(src->first);
   }
   if (Status s = create_run(dir, *syl, src->second, a.config, a.seed); !s) return fail(s.error());
   // what it evolves: a graph genome's dialect, or another creature kind's name

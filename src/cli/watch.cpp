@@ -474,7 +474,7 @@ Result<std::string> config_value(const std::string& text, const std::string& key
 int write_plot(const WatchArgs& a, const std::string& ext, const std::string& svg, const std::string& what);
 
 // several runs on one chart, each condition its median and interquartile band
-int cmd_plot_runs(const WatchArgs& a, const std::string& ext, std::string& svg, std::string& what) {
+int cmd_plot_runs(const WatchArgs& a, std::string& svg, std::string& what) {
   if (!a.metrics.empty()) return fail("--metric: one run at a time (several runs compare their fitness)");
   std::vector<std::string> dirs{a.genome};
   dirs.insert(dirs.end(), a.more_runs.begin(), a.more_runs.end());
@@ -508,7 +508,6 @@ int cmd_plot_runs(const WatchArgs& a, const std::string& ext, std::string& svg, 
                                                : std::to_string(runs.size()) + " runs by " + a.group_by;
   svg = compare_svg(runs, steady, title, a.width, a.height);
   what = std::to_string(runs.size()) + " runs";
-  (void)ext;
   return 0;
 }
 
@@ -522,7 +521,7 @@ int cmd_plot(const WatchArgs& a) {
                 std::to_string(a.height));
   std::string svg, what;
   if (!a.more_runs.empty() || !a.group_by.empty()) {
-    if (int code = cmd_plot_runs(a, ext, svg, what); code != 0) return code;
+    if (int code = cmd_plot_runs(a, svg, what); code != 0) return code;
     return write_plot(a, ext, svg, what);
   }
   auto store = RunStore::open(run_db_path(dir));

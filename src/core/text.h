@@ -2,6 +2,8 @@
 // quoted on one line, any bytes (a path) as UTF-8 text.
 #pragma once
 
+#include <charconv>
+
 #include <algorithm>
 #include <cstdio>
 #include <string>
@@ -11,6 +13,13 @@
 namespace bx {
 
 /// A number as printf's %g prints it, for messages.
+/// The shortest text that reads back as the same double (std::to_chars).
+inline std::string shortest_number(double v) {
+  char buf[32];
+  auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
+}
+
 inline std::string g_number(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%g", v);

@@ -16,8 +16,6 @@ std::string fmt(const char* f, double v) {
   return buf;
 }
 
-// XML-safe text (UTF-8, as XML must be: a run's name may be a path of any bytes)
-std::string escape(const std::string& s) { return xml_text(s); }
 
 // a "nice" tick step giving about n ticks over span
 double tick_step(double span, int n) {
@@ -72,7 +70,7 @@ std::string line_chart_svg(const LineChart& chart, int width, int height) {
                   "\" height=\"" + std::to_string(height) + "\" viewBox=\"0 0 " + std::to_string(width) +
                   " " + std::to_string(height) + "\" font-family=\"sans-serif\" font-size=\"13\">\n";
   s += "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-  s += "<text x=\"" + fmt("%.1f", left) + "\" y=\"24\" font-size=\"16\">" + escape(chart.title) + "</text>\n";
+  s += "<text x=\"" + fmt("%.1f", left) + "\" y=\"24\" font-size=\"16\">" + xml_text(chart.title) + "</text>\n";
   // grid and ticks
   double ys = tick_step(hi - lo, 5);
   for (double v = std::ceil(lo / ys) * ys; v <= hi + 1e-12; v += ys) {
@@ -88,9 +86,9 @@ std::string line_chart_svg(const LineChart& chart, int width, int height) {
   s += "<rect x=\"" + fmt("%.1f", left) + "\" y=\"" + fmt("%.1f", top) + "\" width=\"" + fmt("%.1f", pw) +
        "\" height=\"" + fmt("%.1f", ph) + "\" fill=\"none\" stroke=\"#888\"/>\n";
   s += "<text x=\"" + fmt("%.1f", left + pw / 2) + "\" y=\"" + fmt("%.1f", height - 12.0) +
-       "\" text-anchor=\"middle\">" + escape(chart.x_label) + "</text>\n";
+       "\" text-anchor=\"middle\">" + xml_text(chart.x_label) + "</text>\n";
   s += "<text transform=\"translate(16," + fmt("%.1f", top + ph / 2) + ") rotate(-90)\" text-anchor=\"middle\">" +
-       escape(chart.y_label) + "</text>\n";
+       xml_text(chart.y_label) + "</text>\n";
   // the bands under every curve: hi left to right, then lo back, over each
   // stretch where both are known
   for (const ChartSeries& c : chart.series) {
@@ -121,7 +119,7 @@ std::string line_chart_svg(const LineChart& chart, int width, int height) {
     s += "<line x1=\"" + fmt("%.1f", lx) + "\" x2=\"" + fmt("%.1f", lx + 20) + "\" y1=\"" + fmt("%.1f", ly) +
          "\" y2=\"" + fmt("%.1f", ly) + "\" stroke=\"" + c.color + "\" stroke-width=\"2\"" +
          (c.dash.empty() ? std::string() : " stroke-dasharray=\"" + c.dash + "\"") + "/><text x=\"" +
-         fmt("%.1f", lx + 24) + "\" y=\"" + fmt("%.1f", ly + 4) + "\">" + escape(c.name) + "</text>\n";
+         fmt("%.1f", lx + 24) + "\" y=\"" + fmt("%.1f", ly + 4) + "\">" + xml_text(c.name) + "</text>\n";
     ++k;
   }
   s += "</svg>\n";

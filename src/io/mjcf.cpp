@@ -1,6 +1,5 @@
 #include "io/mjcf.h"
 
-#include <charconv>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -13,12 +12,7 @@ namespace bx {
 namespace {
 
 // the shortest text that reads back to the same double
-std::string num(double v) {
-  if (std::abs(v) < 1e-300) v = 0;  // no "-0"
-  char buf[32];
-  auto r = std::to_chars(buf, buf + sizeof buf, v);
-  return std::string(buf, r.ptr);
-}
+std::string num(double v) { return shortest_number(std::abs(v) < 1e-300 ? 0.0 : v); }  // no "-0"
 
 std::string vec(Vec3 v) { return num(v.x) + " " + num(v.y) + " " + num(v.z); }
 

@@ -2,7 +2,6 @@
 
 #include <sqlite3.h>
 
-#include <charconv>
 #include <cmath>
 #include <filesystem>
 #include <functional>
@@ -10,6 +9,7 @@
 #include <vector>
 
 #include "core/files.h"
+#include "core/text.h"
 
 namespace bx {
 
@@ -36,9 +36,7 @@ std::string cell(sqlite3_stmt* s, int c) {
       const double v = sqlite3_column_double(s, c);
       if (std::isnan(v)) return "nan";
       if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
-      char buf[32];
-      auto r = std::to_chars(buf, buf + sizeof buf, v);
-      return std::string(buf, r.ptr);
+      return shortest_number(v);
     }
     default: {
       const auto* t = reinterpret_cast<const char*>(sqlite3_column_text(s, c));
@@ -73,6 +71,22 @@ Result<long> write_query(sqlite3* db, const std::string& db_path, const std::str
   return rows;
 }
 
+// whether `sql` (one ? bound to `name`) finds a row: a question about the schema
+bool finds(sqlite3* db, const char* sql, const char* name) {
+  sqlite3_stmt* q = nullptr;
+  bool found = false;
+  if (sqlite3_prepare_v2(db, sql, -1, &q, nullptr) == SQLITE_OK) {
+    sqlite3_bind_text(q, 1, name, -1, SQLITE_STATIC);
+    found = sqlite3_step(q) == SQLITE_ROW;
+  }
+  sqlite3_finalize(q);
+  return found;
+}
+
+bool has_table(sqlite3* db, const char* name) {
+  return finds(db, "SELECT 1 FROM sqlite_schema WHERE type = 'table' AND name = ?", name);
+}
+
 }  // namespace
 
 Result<CsvExport> export_run_csv(const std::string& db_path, const std::string& dir) {
@@ -93,12 +107,7 @@ Result<CsvExport> export_run_csv(const std::string& db_path, const std::string& 
   // (a run of one stage has none: its stage is "")
   const std::string stage_of =
       "COALESCE((SELECT name FROM stage WHERE first_gen <= g.gen ORDER BY first_gen DESC LIMIT 1), '')";
-  const bool staged = [&] {
-    sqlite3_stmt* s = nullptr;
-    const bool ok = sqlite3_prepare_v2(db, "SELECT 1 FROM stage", -1, &s, nullptr) == SQLITE_OK;
-    sqlite3_finalize(s);
-    return ok;
-  }();  // (a database stored before runs had stages: none)
+  const bool staged = has_table(db, "stage");  // (a database stored before runs had stages: none)
   CsvExport out;
   auto gens = write_query(db, db_path,
                           "SELECT g.gen, " + (staged ? stage_of : std::string("''")) +
@@ -111,15 +120,9 @@ Result<CsvExport> export_run_csv(const std::string& db_path, const std::string& 
   // a database stored before a column was added reads as its default then
   // (resume and verify add it; this reads without writing)
   auto column = [&](const char* name, const char* otherwise) {
-    sqlite3_stmt* q = nullptr;
-    bool has = false;
-    if (sqlite3_prepare_v2(db, "SELECT 1 FROM pragma_table_info('individual') WHERE name = ?", -1, &q, nullptr) ==
-        SQLITE_OK) {
-      sqlite3_bind_text(q, 1, name, -1, SQLITE_STATIC);
-      has = sqlite3_step(q) == SQLITE_ROW;
-    }
-    sqlite3_finalize(q);
-    return has ? std::string(name) : std::string(otherwise) + " AS " + name;
+    return finds(db, "SELECT 1 FROM pragma_table_info('individual') WHERE name = ?", name)
+               ? std::string(name)
+               : std::string(otherwise) + " AS " + name;
   };
   auto inds = write_query(db, db_path,
                           "SELECT id, gen, fitness, distance, " + column("evaluations", "1") +
@@ -130,19 +133,8 @@ Result<CsvExport> export_run_csv(const std::string& db_path, const std::string& 
   if (!inds) return Error{inds.error()};
   out.individuals = *inds;
   // (a database stored before runs had metrics: none)
-  auto has_table = [&](const char* name) {
-    sqlite3_stmt* q = nullptr;
-    bool has = false;
-    if (sqlite3_prepare_v2(db, "SELECT 1 FROM sqlite_schema WHERE type = 'table' AND name = ?", -1, &q, nullptr) ==
-        SQLITE_OK) {
-      sqlite3_bind_text(q, 1, name, -1, SQLITE_STATIC);
-      has = sqlite3_step(q) == SQLITE_ROW;
-    }
-    sqlite3_finalize(q);
-    return has;
-  };
   auto mets = write_query(db, db_path,
-                          has_table("generation_metric")
+                          has_table(db, "generation_metric")
                               ? "SELECT gen, name, mean, nonzero FROM generation_metric ORDER BY gen, name"
                               : "SELECT 1 WHERE 0",
                           "generation,metric,mean,nonzero_share", (d / "metrics.csv").string());

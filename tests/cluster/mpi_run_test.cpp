@@ -12,6 +12,7 @@
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -158,6 +159,20 @@ std::string evaluation_child(const fs::path& out) {
   return "";
 }
 
+// A thread that, within 60 s, kills the process `target` names once it names
+// one (an empty pid: not yet), or adds a failure saying `what` was never seen.
+std::thread kill_when_seen(std::function<std::string()> target, std::string what) {
+  return std::thread([target = std::move(target), what = std::move(what)] {
+    const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+    while (std::chrono::steady_clock::now() < until) {
+      const std::string pid = target();
+      if (!pid.empty() && ::kill(std::stoi(pid), SIGKILL) == 0) return;
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    ADD_FAILURE() << "no " << what << " was seen";
+  });
+}
+
 // A generational config of 8 individuals of 4-second evaluations for `generations`
 std::string slow_config(int generations) {
   return "[genome]\ndialect = \"sims1994\"\n[evolution]\nalgorithm = \"generational\"\npopulation = 8\n"
@@ -170,15 +185,7 @@ TEST_F(MpiRun, AnEvaluationChildKilledFromOutsideCostsNothing) {
   const fs::path cfg = write("k.toml", slow_config(4));
   const fs::path whole = dir / "whole", hit = dir / "hit";
   ASSERT_EQ(bestiary("run " + cfg.string() + " --quiet --workers 2 --out " + whole.string()).code, 0);
-  std::thread killer([&] {
-    const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-    while (std::chrono::steady_clock::now() < until) {
-      const std::string pid = evaluation_child(hit);
-      if (!pid.empty() && ::kill(std::stoi(pid), SIGKILL) == 0) return;
-      std::this_thread::sleep_for(std::chrono::milliseconds(50));
-    }
-    ADD_FAILURE() << "no evaluation child of the run's ranks was seen";
-  });
+  std::thread killer = kill_when_seen([&] { return evaluation_child(hit); }, "evaluation child of the run's ranks");
   Outcome r = bxtest::run_command(mpirun(3) + "run " + cfg.string() + " --quiet --evaluator mpi --out " + hit.string());
   killer.join();
   ASSERT_EQ(r.code, 0) << r.err;
@@ -208,18 +215,15 @@ TEST_F(MpiRun, ALostRankEndsTheJobAndResumeContinuesItToTheSameEnd) {
   const fs::path cfg = write("k.toml", slow_config(6));
   const fs::path whole = dir / "whole", hit = dir / "hit";
   ASSERT_EQ(bestiary("run " + cfg.string() + " --quiet --workers 2 --out " + whole.string()).code, 0);
-  std::thread killer([&] {
-    // an evaluating rank (the parent of an evaluation child: rank 0 has none),
-    // once the run has stored a generation
-    const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-    while (std::chrono::steady_clock::now() < until) {
-      const std::string gens = bxtest::query(hit / "run.sqlite", "SELECT count(*) FROM generation");
-      const std::string pid = gens.empty() || gens == "0|\n" ? "" : evaluation_child(hit);
-      if (!pid.empty() && ::kill(std::stoi(parent_of(pid)), SIGKILL) == 0) return;
-      std::this_thread::sleep_for(std::chrono::milliseconds(20));
-    }
-    ADD_FAILURE() << "no evaluating rank of the run was seen after its first generation";
-  });
+  // an evaluating rank (the parent of an evaluation child: rank 0 has none),
+  // once the run has stored a generation
+  std::thread killer = kill_when_seen(
+      [&] {
+        const std::string gens = bxtest::query(hit / "run.sqlite", "SELECT count(*) FROM generation");
+        const std::string child = gens.empty() || gens == "0|\n" ? "" : evaluation_child(hit);
+        return child.empty() ? child : parent_of(child);
+      },
+      "evaluating rank of the run after its first generation");
   Outcome r = bxtest::run_command(mpirun(3) + "run " + cfg.string() + " --quiet --evaluator mpi --out " + hit.string());
   killer.join();
   EXPECT_NE(r.code, 0) << "the job went on without a rank";

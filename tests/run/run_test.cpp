@@ -10,6 +10,7 @@
 #include "core/version.h"
 #include "io/run_store.h"
 #include "support/run_command.h"
+#include "support/tiny_runs.h"
 
 namespace bx {
 namespace {
@@ -42,24 +43,8 @@ generations = 3
 seconds = 3
 )";
 
-// a tiny river crossing run whose tournaments evaluate all three
-// (evolution.tournament_evaluates = "all", Stanton & Channon 2015)
-const char* kRiverConfig = R"(
-[genotype]
-kind = "river"  # brings the river task, the quadruped's physics and its PD motors
-[river]
-seconds = 1
-[evolution]
-algorithm = "steady_state"
-tournament_evaluates = "all"
-population = 9
-evaluations = 12
-batch = 3
-report_every = 3
-p_asexual = 0
-p_crossover = 1
-p_graft = 0
-)";
+// a tiny river crossing run (tests/support/tiny_runs.h)
+const char* kRiverConfig = bxtest::kTinyRiverRun;
 
 // every row of the generation and individual tables, as text
 std::string dump(const std::string& dir) {

@@ -3,18 +3,19 @@
 
 namespace bxtest {
 
-/// A tiny river crossing run (steady state, tournaments that evaluate all
-/// three, 1-second evaluations): named metrics per report interval.
+/// A tiny river crossing run whose tournaments evaluate all three
+/// (evolution.tournament_evaluates = "all", Stanton & Channon 2015), of
+/// 1-second evaluations: named metrics per report interval.
 inline const char* kTinyRiverRun = R"(
 [genotype]
-kind = "river"
+kind = "river"  # brings the river task, the quadruped's physics and its PD motors
 [river]
 seconds = 1
 [evolution]
 algorithm = "steady_state"
 tournament_evaluates = "all"
 population = 9
-evaluations = 9
+evaluations = 12
 batch = 3
 report_every = 3
 p_asexual = 0
