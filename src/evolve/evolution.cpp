@@ -403,6 +403,32 @@ Result<GenerationResult> Evolution::generational(EvolutionState& s, Evaluator& e
   return res;
 }
 
+std::vector<Individual> migrate(std::vector<Individual>& population, int islands, std::int64_t& next_id,
+                                int generation) {
+  const int isle = static_cast<int>(population.size()) / islands;
+  auto begin = [&](int k) { return population.begin() + k * isle; };
+  std::vector<Individual> migrants;
+  for (int k = 0; k < islands; ++k) {
+    Individual m = *std::min_element(begin(k), begin(k + 1), ranks_before);
+    m.parent1 = m.id;
+    m.parent2 = -1;
+    m.id = next_id++;
+    m.op = "migrant";
+    m.generation = generation;
+    migrants.push_back(std::move(m));
+  }
+  for (int k = 0; k < islands; ++k) {
+    const int to = (k + 1) % islands;
+    // the last in rank among the evaluated (ranks_before puts the unevaluated last)
+    auto worst = std::max_element(begin(to), begin(to + 1), [](const Individual& a, const Individual& b) {
+      if ((a.evaluations == 0) != (b.evaluations == 0)) return a.evaluations == 0;
+      return ranks_before(a, b);
+    });
+    *worst = migrants[k];
+  }
+  return migrants;
+}
+
 // Evaluates the population members `members` (tournament_evaluates = all),
 // each afresh under the seed of its next evaluation: `fresh` gets each one's
 // fitness in this evaluation, its own fitness folds it in, and `evaluated`
@@ -446,14 +472,28 @@ Result<GenerationResult> Evolution::steady_state(EvolutionState& s, Evaluator& e
   GenerationResult res;
   std::vector<Individual> evaluated;  // members the tournaments evaluated, as they stood after each
 
+  // islands: members [k * isle, (k + 1) * isle) are island k's
+  const int islands = std::max(1, evo_.islands);
+  const int isle = pop / islands;
+
   while (s.next_id < until) {
-    // one batch of tournaments over disjoint triples of the current population
-    int n = static_cast<int>(std::min<long>({evo_.batch, until - static_cast<long>(s.next_id), pop / 3}));
-    n = std::max(n, 1);
-    Rng rng(stream_seed({seed_, kTournament, static_cast<std::uint64_t>(s.next_id)}));
-    std::vector<int> idx(pop);
-    std::iota(idx.begin(), idx.end(), 0);
-    for (int i = 0; i < 3 * n; ++i) std::swap(idx[i], idx[i + rng.below(pop - i)]);
+    // one batch of tournaments over disjoint triples of each island's members
+    // (one island: of the population), `batch` an island, fewer at the
+    // interval's end (spread over the islands, the first ones one more)
+    const long before = s.next_id;
+    long total_n = std::min<long>({static_cast<long>(evo_.batch) * islands, until - before,
+                                   static_cast<long>(isle / 3) * islands});
+    total_n = std::max(total_n, 1L);
+    Rng rng(stream_seed({seed_, kTournament, static_cast<std::uint64_t>(before)}));
+    std::vector<int> idx;  // the triples, island after island
+    for (int k = 0; k < islands; ++k) {
+      const int nk = static_cast<int>(total_n / islands + (k < total_n % islands ? 1 : 0));
+      std::vector<int> own(isle);
+      std::iota(own.begin(), own.end(), k * isle);
+      for (int i = 0; i < 3 * nk; ++i) std::swap(own[i], own[i + rng.below(isle - i)]);
+      idx.insert(idx.end(), own.begin(), own.begin() + 3 * nk);
+    }
+    const int n = static_cast<int>(total_n);
 
     // tournament_evaluates = all: the three compete on evaluations in fresh worlds
     std::vector<double> fresh;
@@ -499,6 +539,11 @@ Result<GenerationResult> Evolution::steady_state(EvolutionState& s, Evaluator& e
     }
     for (std::size_t k = 0; k < born.size(); ++k) s.population[replaced[k]] = born[k];
     res.born.insert(res.born.end(), born.begin(), born.end());
+    // a migration each time the births on each island pass a multiple of
+    // migration_every, while the budget lasts
+    const long every = evo_.migration_every * islands, after_initial = s.first_id + pop;
+    if (islands > 1 && (s.next_id - after_initial) / every > (before - after_initial) / every && s.next_id < total)
+      for (Individual& m : migrate(s.population, islands, s.next_id, s.generation + 1)) res.born.push_back(std::move(m));
   }
   // members the tournaments evaluated: those born in this interval as they
   // now stand, the earlier ones evaluated again (the last state of each)

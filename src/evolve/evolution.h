@@ -1,5 +1,6 @@
 // The evolutionary loops: a generational GA (chaumont2007) and a steady-state
-// GA with triple tournaments (miconi2006). Both breed genotypes of any kind
+// GA with triple tournaments (miconi2006), on one population or on islands
+// with ring migration (evolution.islands). Both breed genotypes of any kind
 // through its GenotypeOps (genome/genotype.h) in the shares EvolutionDef
 // gives, hand batches to an Evaluator and never touch processes; every random
 // draw comes from a stream seeded by (run seed, generation or batch, child),
@@ -126,6 +127,17 @@ inline constexpr std::string_view kRetestFailure = "retest ";
 /// Whether `ind` scored 0 for falling below a retest (Retest): the elite
 /// is not evaluated again then, so its 0 stands.
 bool failed_retest(const Individual& ind);
+
+/// Ring migration between `islands` equal islands of `population` (members
+/// [k n, (k + 1) n) are island k's; evolution.islands): each island's best,
+/// chosen before any moves, is copied under a new id from `next_id`
+/// (operator "migrant", born in `generation`; its record as it stands:
+/// fitness, evaluations and seed, so a replay shows the evaluation it was
+/// scored on) over the worst evaluated member of the next island (the worst
+/// of all if none is evaluated yet). Copies, not moves: the best stays home
+/// too, as in pagmo's archipelago. Returns the migrants, island by island.
+std::vector<Individual> migrate(std::vector<Individual>& population, int islands, std::int64_t& next_id,
+                                int generation);
 
 /// An evolutionary run's algorithm.
 class Evolution {

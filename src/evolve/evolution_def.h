@@ -52,6 +52,18 @@ struct EvolutionDef {
   /// fitness is the mean of every evaluation it had (Stanton & Channon 2015,
   /// whose population of 150 "are evaluated in groups of three").
   TournamentEvaluates tournament_evaluates = TournamentEvaluates::Child;
+  /// Steady state: islands the population is split into (pagmo's
+  /// archipelago), each population / islands members that hold their own
+  /// tournaments. A batch holds `batch` tournaments on every island, so
+  /// islands x batch evaluations go to the workers at once. 1: one population
+  /// (the papers).
+  int islands = 1;
+  /// Creatures born on each island (its migrant among them) between
+  /// migrations: then every island's best, copied under a new id (operator
+  /// "migrant", its record as it stands), replaces the worst evaluated member
+  /// of the next island in the ring. A migrant is born, so it counts toward
+  /// evolution.evaluations.
+  long migration_every = 100;
   // both
   /// Evaluations an elite's fitness is the mean (task.trial_score = min: the
   /// least) of: after each generation

@@ -160,6 +160,8 @@ const std::vector<Field>& fields() {
       {"evolution", "asexual_mutations", Field::Int, 1, 1000, {}, [](RunConfig& c) -> void* { return &c.evolution.asexual_mutations; }, "steady state: mutations applied to make an asexual child"},
       {"evolution", "batch", Field::Int, 1, 100000, {}, [](RunConfig& c) -> void* { return &c.evolution.batch; }, "steady state: tournaments evaluated together (disjoint triples); 1 = strictly sequential"},
       {"evolution", "tournament_evaluates", Field::Choice, 0, 0, {"child", "all"}, [](RunConfig& c) -> void* { return &c.evolution.tournament_evaluates; }, "steady state: child (miconi2006: each child evaluated once, at birth; the three compete on the fitness they keep) or all (stanton2015: each tournament evaluates its three in fresh worlds and ranks them by these evaluations; fitness is the mean of all a creature had)"},
+      {"evolution", "islands", Field::Int, 1, 100000, {}, [](RunConfig& c) -> void* { return &c.evolution.islands; }, "steady state: islands the population is split into (each population / islands members, its own tournaments); a batch holds `batch` tournaments on every island, so islands x batch evaluations run at once (1: one population, the papers)"},
+      {"evolution", "migration_every", Field::Long, 1, 1e12, {}, [](RunConfig& c) -> void* { return &c.evolution.migration_every; }, "steady state with islands: creatures born on each island between migrations, when each island's best, copied under a new id (operator migrant), replaces the worst evaluated member of the next island in the ring"},
       {"evolution", "elite_evaluations", Field::Int, 1, 1000, {}, [](RunConfig& c) -> void* { return &c.evolution.elite_evaluations; }, "the elite (elite_fraction) is evaluated again under fresh seeds after each generation (steady state: report interval) until each fitness is the mean of this many (task.trial_score = min: the least) (1: once)"},
       {"evolution", "best_evaluations", Field::Int, 0, 1000, {}, [](RunConfig& c) -> void* { return &c.evolution.best_evaluations; }, "the elite's best is evaluated again until its fitness is the mean (task.trial_score = min: the least) of this many, and so is each that takes its place, so the best is not the luckiest of near-equal creatures (0: as elite_evaluations)"},
       {"evolution", "elite_half_step", Field::Bool, 0, 0, {}, [](RunConfig& c) -> void* { return &c.evolution.elite_half_step; }, "the elite's 2nd, 4th, ... evaluations step at half physics.dt, so that (with task.trial_score = min) a gait only the step makes loses its score"},
@@ -534,6 +536,17 @@ Result<RunConfig> read_run_config(std::vector<ConfigLayer> layers, const std::ve
   if (cfg.evolution.tournament_evaluates == TournamentEvaluates::All && cfg.evolution.algorithm != Algorithm::SteadyState)
     return Error{std::string(source) + ": evolution.tournament_evaluates: \"all\" needs evolution.algorithm = "
                  "\"steady_state\", got \"generational\""};
+  // islands hold tournaments: of at least three members each, all alike
+  if (cfg.evolution.islands > 1) {
+    const EvolutionDef& e = cfg.evolution;
+    if (e.algorithm != Algorithm::SteadyState)
+      return Error{std::string(source) + ": evolution.islands: " + std::to_string(e.islands) +
+                   " needs evolution.algorithm = \"steady_state\" (a generational run evaluates its whole population at once)"};
+    if (e.population % e.islands != 0 || e.population / e.islands < 3)
+      return Error{std::string(source) + ": evolution.islands: " + std::to_string(e.islands) +
+                   " must divide evolution.population (" + std::to_string(e.population) +
+                   ") into islands of at least 3 members"};
+  }
   // a drop jittered lower than the ground would start the creature inside it
   if (cfg.sim.start_drop_jitter > task_drop_height(cfg.sim))
     return Error{std::string(source) + ": task.start_drop_jitter: " + num(cfg.sim.start_drop_jitter) +

@@ -59,6 +59,22 @@ report_every = 8
 seconds = 1
 )";
 
+// three islands of six, two tournaments each a batch (width 6), a migration
+// every 12 births
+const char* kIslands = R"(
+[genome]
+dialect = "miconi2006"
+[evolution]
+population = 18
+evaluations = 36
+batch = 2
+islands = 3
+migration_every = 4
+report_every = 12
+[task]
+seconds = 1
+)";
+
 const char* kRiver = bxtest::kTinyRiverRun;
 
 // every stored row that evolution writes, as text
@@ -102,6 +118,18 @@ TEST_F(MpiRun, AGenerationalRunIsTheSameForAnyNumberOfRanksOrWorkers) {
 
 TEST_F(MpiRun, ASteadyStateRunIsTheSameForAnyNumberOfRanksOrWorkers) {
   expect_the_same_for_any_width("steady", kSteadyState);
+}
+
+TEST_F(MpiRun, ASteadyStateRunOnIslandsIsTheSameForAnyWidthAndWhenStoppedAndResumed) {
+  expect_the_same_for_any_width("islands", kIslands);
+  const std::string whole = dump(dir / "islands-w1");
+  EXPECT_NE(whole.find("|migrant|"), std::string::npos);
+  const fs::path cfg = dir / "islands.toml", cut = dir / "islands-cut";
+  ASSERT_EQ(bestiary("run " + cfg.string() + " --quiet --workers 2 --stop-after 2 --out " + cut.string()).code, 0);
+  EXPECT_NE(dump(cut).find("|migrant|"), std::string::npos);  // stopped after a migration
+  Outcome r = bestiary("resume " + cut.string() + " --quiet --workers 1");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(dump(cut), whole);
 }
 
 TEST_F(MpiRun, ARiverCrossingRunIsTheSameForAnyNumberOfRanksOrWorkers) {
