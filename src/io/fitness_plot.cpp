@@ -10,7 +10,7 @@ namespace bx {
 std::string fitness_svg(const std::vector<GenerationStats>& gens, const std::string& title, int width,
                         int height) {
   LineChart c{title, "generation", "fitness", {}, {}};
-  ChartSeries best{"best", "#1f63b4", "", {}}, mean{"mean", "#e07b20", "", {}}, median{"median", "#2a9d4a", "6 4", {}};
+  ChartSeries best{"best", "#1f63b4", "", {}, {}, {}}, mean{"mean", "#e07b20", "", {}, {}, {}}, median{"median", "#2a9d4a", "6 4", {}, {}, {}};
   for (const GenerationStats& g : gens) {
     c.xs.push_back(g.generation);
     best.ys.push_back(g.best);
@@ -58,7 +58,7 @@ std::string compare_svg(const std::vector<PlottedRun>& runs, bool per_evaluation
     for (const PlottedRun& r : runs) members += r.condition == cond;
     const std::string color = chart_color(k++);
     const std::string n = members > 1 ? " (median of " + std::to_string(members) + ")" : "";
-    ChartSeries best{cond + " best" + n, color, "", {}}, mean{cond + " mean" + n, color, "6 4", {}};
+    ChartSeries best{cond + " best" + n, color, "", {}, {}, {}}, mean{cond + " mean" + n, color, "6 4", {}, {}, {}};
     for (std::size_t i = 0; i < longest; ++i) {
       std::vector<double> b, m;
       for (const PlottedRun& r : runs)
@@ -95,7 +95,7 @@ std::string metric_svg(const std::vector<GenerationStats>& gens, const std::vect
   for (const GenerationStats& g : gens) c.xs.push_back(g.generation * per_generation);
   int k = 0;
   for (const std::string& name : names) {
-    ChartSeries s{name, chart_color(k++), "", {}};
+    ChartSeries s{name, chart_color(k++), "", {}, {}, {}};
     for (const GenerationStats& g : gens) {
       double v = 0;  // a generation that lacks it: none of its evaluations had it
       for (const MetricStat& m : g.metrics)
