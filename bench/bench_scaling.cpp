@@ -20,7 +20,11 @@
 //             the parent's serial time per batch. busy(W) = the jobs' total
 //             cost / (W x the run's time); speedup(W) = time(1) / time(W).
 //             The parent is the bottleneck where its serial time per batch
-//             exceeds the batch's makespan.
+//             exceeds the batch's makespan. The run is made once per W,
+//             its evaluator telling it W workers: the elite's rounds fill
+//             idle workers with evaluations ahead, so the batches (and the
+//             busy share: the evaluations made ahead count as work) depend on
+//             W; the run itself does not.
 //
 // Output: a table per preset and, on the last line, `busy_at_64_workers:` of
 // the first preset. Deterministic inputs (seed 1); times vary with the machine.
@@ -33,6 +37,7 @@
 #include <cstring>
 #include <filesystem>
 #include <memory>
+#include <map>
 #include <queue>
 #include <string>
 #include <vector>
@@ -64,9 +69,10 @@ double thread_cpu_seconds() {
 
 int usage(const char* why) {
   std::fprintf(stderr,
-               "bench_scaling: %s\nusage: bench_scaling [--quick] [--samples K] [PRESET...]\n"
+               "bench_scaling: %s\nusage: bench_scaling [--quick] [--samples K] [--set section.key=value]... [PRESET...]\n"
                "  --quick     the -small presets' families: quick and rivercrossing-small, K = 4\n"
-               "  --samples   jobs of the first batch evaluated at the preset's own length (default 12)\n",
+               "  --samples   jobs of the first batch evaluated at the preset's own length (default 12)\n"
+               "  --set       a config value for every preset named (evolution.islands=10: a run on islands)\n",
                why);
   return 2;
 }
@@ -104,7 +110,11 @@ class TimingEvaluator : public Evaluator {
     seen_->sampling += wall_seconds() - t1;
     return out;
   }
-  int workers() const override { return 1; }
+  /// The width the run is told it has: the elite's rounds fill idle
+  /// workers with evaluations ahead (evolution.h), so what the algorithm
+  /// hands out depends on it.
+  int workers() const override { return workers_; }
+  int workers_ = 1;
 
  private:
   SerialEvaluator run_;
@@ -133,19 +143,23 @@ struct Width {
   double busy, speedup, parent_share;
 };
 
-// the model: every recorded batch (a steady state's after its initial
-// population: the run's long run), its jobs' costs drawn in turn from the samples
-std::vector<Width> model(const Seen& seen, bool steady, double parent_per_batch) {
-  Seen s = seen;
-  if (steady && s.batches.size() > 1) s.batches.erase(s.batches.begin());
+constexpr int kWidths[] = {1, 8, 64, 512, 4096};
+
+// the model: every batch the run handed out at each width (a steady state's
+// after its initial population: the run's long run), its jobs' costs drawn
+// in turn from the samples
+std::vector<Width> model(const Seen& seen, const std::map<int, std::vector<int>>& batches_at, bool steady,
+                         double parent_per_batch) {
   std::vector<Width> out;
   double time_1 = 0;
-  for (int w : {1, 8, 64, 512, 4096}) {
+  for (int w : kWidths) {
+    std::vector<int> batches = batches_at.at(w);
+    if (steady && batches.size() > 1) batches.erase(batches.begin());
     std::size_t draw = 0;
     double total = 0, work = 0, parent = 0;
-    for (int b : s.batches) {
+    for (int b : batches) {
       std::vector<double> costs;
-      for (int k = 0; k < b; ++k) costs.push_back(s.job_cpu[draw++ % s.job_cpu.size()]);
+      for (int k = 0; k < b; ++k) costs.push_back(seen.job_cpu[draw++ % seen.job_cpu.size()]);
       for (double c : costs) work += c;
       total += makespan(costs, w) + parent_per_batch;
       parent += parent_per_batch;
@@ -156,15 +170,16 @@ std::vector<Width> model(const Seen& seen, bool steady, double parent_per_batch)
   return out;
 }
 
-int bench(const std::string& preset, int samples, double& busy_64) {
+int bench(const std::string& preset, int samples, const std::vector<std::string>& sets, double& busy_64) {
   const Preset* p = find_preset(preset);
   if (!p) return usage((preset + ": no such preset").c_str());
-  auto full = read_syllabus(p->text, preset);
+  auto full = read_syllabus(p->text, preset, sets);
   if (!full) return usage(full.error().c_str());
   const RunConfig& first = full->stages.front().cfg;
   const TaskRow& row = task_row(first.sim.task_kind);
   const bool generational = first.evolution.algorithm == Algorithm::Generational;
-  std::vector<std::string> shorter{std::string(row.seconds_key) + "=1"};
+  std::vector<std::string> shorter = sets;
+  shorter.push_back(std::string(row.seconds_key) + "=1");
   if (generational) {
     shorter.push_back("evolution.generations=2");
   } else {
@@ -174,21 +189,31 @@ int bench(const std::string& preset, int samples, double& busy_64) {
   }
   auto run_syl = read_syllabus(p->text, preset, shorter);
   if (!run_syl) return usage(run_syl.error().c_str());
-  const fs::path dir = fs::temp_directory_path() / ("bx_bench_scaling_" + std::to_string(::getpid()) + "_" + preset);
-  fs::remove_all(dir);
-  if (Status s = create_run(dir.string(), *run_syl, p->text, preset, 1); !s) return usage(s.error().c_str());
-  Seen seen;
   const std::vector<SimConfig> full_tasks = task_table(*full);
-  RunOptions opt;
-  opt.quiet = true;
-  opt.evaluator = [&](const std::vector<SimConfig>& tasks, double) -> Result<std::unique_ptr<Evaluator>> {
-    return std::unique_ptr<Evaluator>(std::make_unique<TimingEvaluator>(tasks, full_tasks, samples, &seen));
-  };
-  const double t0 = wall_seconds();
-  const Status s = drive_run(dir.string(), opt);
-  const double wall = wall_seconds() - t0;
-  fs::remove_all(dir);
-  if (!s) return usage(s.error().c_str());
+  // the run at each width (the samples and the parent's time from the first, one worker)
+  Seen seen;
+  std::map<int, std::vector<int>> batches_at;
+  double wall = 0;
+  for (int w : kWidths) {
+    const fs::path dir = fs::temp_directory_path() / ("bx_bench_scaling_" + std::to_string(::getpid()) + "_" + preset);
+    fs::remove_all(dir);
+    if (Status s = create_run(dir.string(), *run_syl, p->text, preset, 1); !s) return usage(s.error().c_str());
+    Seen at;
+    RunOptions opt;
+    opt.quiet = true;
+    opt.evaluator = [&](const std::vector<SimConfig>& tasks, double) -> Result<std::unique_ptr<Evaluator>> {
+      auto e = std::make_unique<TimingEvaluator>(tasks, full_tasks, w == 1 ? samples : 0, &at);
+      e->workers_ = w;
+      return std::unique_ptr<Evaluator>(std::move(e));
+    };
+    const double t0 = wall_seconds();
+    const Status s = drive_run(dir.string(), opt);
+    if (w == 1) wall = wall_seconds() - t0;
+    fs::remove_all(dir);
+    if (!s) return usage(s.error().c_str());
+    if (w == 1) seen = at;
+    batches_at[w] = at.batches;
+  }
   if (seen.job_cpu.empty() || seen.batches.empty()) return usage((preset + ": no evaluation seen").c_str());
   const double parent = std::max(0.0, wall - seen.inside - seen.sampling);
   // the first batch is the initial population; the parent's work per batch is over the rest too
@@ -207,7 +232,10 @@ int bench(const std::string& preset, int samples, double& busy_64) {
   if (!generational)
     std::printf("  the long run (the batches after the initial population of %d):\n", seen.batches.front());
   std::printf("  %8s %8s %8s %14s\n", "workers", "busy", "speedup", "parent share");
-  for (const Width& w : model(seen, !generational, parent_per_batch)) {
+  std::printf("  batches at 64 workers:");
+  for (std::size_t k = 0; k < batches_at[64].size() && k < 24; ++k) std::printf(" %d", batches_at[64][k]);
+  std::printf("%s\n", batches_at[64].size() > 24 ? " ..." : "");
+  for (const Width& w : model(seen, batches_at, !generational, parent_per_batch)) {
     std::printf("  %8d %8.3f %8.1f %14.4f\n", w.workers, w.busy, w.speedup, w.parent_share);
     if (w.workers == 64 && busy_64 < 0) busy_64 = w.busy;
   }
@@ -217,7 +245,7 @@ int bench(const std::string& preset, int samples, double& busy_64) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<std::string> presets;
+  std::vector<std::string> presets, sets;
   int samples = 12;
   bool quick = false;
   for (int i = 1; i < argc; ++i) {
@@ -227,6 +255,9 @@ int main(int argc, char** argv) {
       samples = static_cast<int>(bxbench::number_after(i, argc, argv, "--samples", usage,
                                                        [](double v) { return v >= 1 && v <= 1000 && v == (int)v; },
                                                        "a whole number from 1 to 1000"));
+    } else if (!std::strcmp(argv[i], "--set")) {
+      if (i + 1 >= argc) return usage("--set: expected section.key=value");
+      sets.push_back(argv[++i]);
     } else if (argv[i][0] == '-') {
       return usage((std::string(argv[i]) + ": unknown argument").c_str());
     } else {
@@ -242,7 +273,7 @@ int main(int argc, char** argv) {
                "lessin2015-general-strike", "rivercrossing"};
   double busy_64 = -1;
   for (const std::string& p : presets)
-    if (int code = bench(p, samples, busy_64); code != 0) return code;
+    if (int code = bench(p, samples, sets, busy_64); code != 0) return code;
   std::printf("busy_at_64_workers: %.3f\n", busy_64);
   return 0;
 }

@@ -255,11 +255,21 @@ std::vector<Individual> Evolution::reevaluate_elite(EvolutionState& s, Evaluator
   const int elite = elite_count(n);
   const Repeats repeats = elite_repeats(evo_, best_target);  // which evaluations step finer
   std::set<int> touched;
+  // Evaluations made ahead, by (member, evaluation index): workers a round
+  // leaves idle evaluate what later rounds may need (the elite's remaining
+  // evaluations, then those of the members ranked next, which enter the
+  // elite when one falls). An evaluation is a pure function of its job, so
+  // whether it was made ahead changes nothing but the rounds' count: only
+  // those a round uses count, and the run is the same for any width.
+  std::map<std::pair<int, int>, EvalOutcome> ahead;
+  auto job = [&](int i, int e) {
+    const Individual& ind = s.population[i];
+    return EvalJob{ind.genotype.get(), repeat_seed(ind.seed, e), repeat_step_divisor(repeats, e), task_};
+  };
   for (;;) {
     std::vector<int> order(n);
     std::iota(order.begin(), order.end(), 0);
-    std::partial_sort(order.begin(), order.begin() + elite, order.end(),
-                      [&](int x, int y) { return better(s.population[x], s.population[y]); });
+    std::sort(order.begin(), order.end(), [&](int x, int y) { return better(s.population[x], s.population[y]); });
     // each due individual with how many evaluations it gets in this round
     std::vector<std::pair<int, int>> due;
     // (not one that fell below a retest: its 0 stands)
@@ -270,23 +280,41 @@ std::vector<Individual> Evolution::reevaluate_elite(EvolutionState& s, Evaluator
       due.push_back({order[0], best_target - s.population[order[0]].evaluations});
     if (due.empty()) break;
     std::vector<EvalJob> jobs;
-    for (auto [i, count] : due) {
-      const Individual& ind = s.population[i];
-      for (int e = ind.evaluations; e < ind.evaluations + count; ++e)
-        jobs.push_back({ind.genotype.get(), repeat_seed(ind.seed, e), repeat_step_divisor(repeats, e), task_});
+    std::vector<std::pair<int, int>> keys;  // (member, evaluation) of each job
+    for (auto [i, count] : due)
+      for (int e = s.population[i].evaluations; e < s.population[i].evaluations + count; ++e)
+        if (!ahead.count({i, e})) {
+          jobs.push_back(job(i, e));
+          keys.push_back({i, e});
+        }
+    // idle workers (in a round that needs a call at all): in rank order,
+    // each member's evaluations up to the elite's (the best: up to
+    // best_target) not yet made or asked for
+    const std::size_t width = jobs.empty() ? 0 : static_cast<std::size_t>(std::max(1, eval.workers()));
+    for (int k = 0; k < n && jobs.size() < width; ++k) {
+      const int i = order[k];
+      if (failed_retest(s.population[i])) continue;
+      const int target = k == 0 ? best_target : evo_.elite_evaluations;
+      for (int e = s.population[i].evaluations; e < target && jobs.size() < width; ++e)
+        if (!ahead.count({i, e}) && std::find(keys.begin(), keys.end(), std::pair{i, e}) == keys.end()) {
+          jobs.push_back(job(i, e));
+          keys.push_back({i, e});
+        }
     }
-    std::vector<EvalOutcome> out = eval.evaluate(jobs);
-    std::size_t at = 0;
+    std::vector<EvalOutcome> out = jobs.empty() ? std::vector<EvalOutcome>{} : eval.evaluate(jobs);
+    for (std::size_t k = 0; k < out.size(); ++k) ahead[keys[k]] = std::move(out[k]);
     for (auto [i, count] : due) {
       Individual& ind = s.population[i];
-      for (int c = 0; c < count; ++c, ++at) {
-        const double f = outcome_fitness(out[at], evo_.failed_fitness, failed);
+      for (int c = 0; c < count; ++c) {
+        auto made = ahead.find({i, ind.evaluations});
+        const double f = outcome_fitness(made->second, evo_.failed_fitness, failed);
+        ahead.erase(made);
         ind.fitness = fold_score(fold_, ind.fitness, ind.evaluations, f);
         ++ind.evaluations;
+        ++s.evaluations;
       }
       touched.insert(i);
     }
-    s.evaluations += static_cast<long>(jobs.size());
   }
   std::vector<Individual> earlier;
   for (int i : touched) {

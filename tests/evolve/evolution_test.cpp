@@ -421,6 +421,64 @@ TEST(EliteEvaluations, TheirStepsCycleThroughTheStepHalfAndAQuarterOfIt) {
 // near-equal creatures, the best overstated its true fitness by 0.157
 // (generational) and 0.141 (steady state) on average with 4 evaluations, by
 // 0.057 and 0.055 with 16, for 1.9 and 1.4 times the evaluations)
+// NoisyTarget as if it had `workers` workers, counting its calls
+class WideNoisyTarget : public NoisyTarget {
+ public:
+  explicit WideNoisyTarget(int workers) : NoisyTarget(0.3, 0.3, 0.1, 0.1), workers_(workers) {}
+  std::vector<EvalOutcome> evaluate(const std::vector<EvalJob>& jobs) override {
+    ++calls;
+    return NoisyTarget::evaluate(jobs);
+  }
+  int workers() const override { return workers_; }
+  long calls = 0;
+
+ private:
+  int workers_;
+};
+
+// The elite's rounds depend on each other (one that falls makes room for the
+// next), so idle workers evaluate ahead what later rounds may need: fewer
+// rounds, and the run is the same whatever the width.
+TEST_P(EliteEvaluations, IdleWorkersEvaluateAheadAndTheRunIsTheSameForAnyWidth) {
+  auto ops = std::make_shared<FloatVectorOps>(FloatVectorDef{10, -1, 1, 0.1});
+  struct Outcome {
+    std::string run;
+    long evaluations = 0, calls = 0, made = 0;
+  };
+  auto run = [&](int workers) {
+    EvolutionDef e = float_evolution(GetParam());
+    e.generations = 8;
+    e.evaluations = 240;
+    e.elite_evaluations = 3;
+    e.best_evaluations = 6;
+    e.elite_half_step = e.elite_quarter_step = true;
+    Evolution evo(ops, e, 11, TrialScore::Min);
+    WideNoisyTarget problem(workers);
+    EvolutionState s;
+    Outcome o;
+    while (!evo.finished(s)) {
+      GenerationResult r = *evo.step(s, problem);
+      o.run += g_number(r.stats.best) + " " + g_number(r.stats.mean) + " " + std::to_string(r.stats.evaluations) + "\n";
+      for (const auto& list : {r.born, r.reevaluated})
+        for (const Individual& ind : list)
+          o.run += std::to_string(ind.id) + " " + g_number(ind.fitness) + " " + std::to_string(ind.evaluations) + "\n";
+    }
+    o.evaluations = s.evaluations;
+    o.calls = problem.calls;
+    o.made = problem.evaluations;
+    return o;
+  };
+  const Outcome one = run(1), two = run(2), wide = run(64);
+  EXPECT_EQ(two.run, one.run);
+  EXPECT_EQ(wide.run, one.run);
+  EXPECT_EQ(wide.evaluations, one.evaluations);  // only those used count
+  EXPECT_EQ(one.made, one.evaluations);          // one worker: nothing ahead
+  EXPECT_GT(wide.made, wide.evaluations);
+  EXPECT_LT(wide.calls, one.calls * 3 / 4) << one.calls;
+  std::printf("calls: %ld at 1 worker, %ld at 64 (%ld evaluations made for %ld used)\n", one.calls, wide.calls,
+              wide.made, wide.evaluations);
+}
+
 TEST_P(EliteEvaluations, TheBestIsEvaluatedUntilItHasBestEvaluations) {
   auto ops = std::make_shared<FloatVectorOps>(FloatVectorDef{10, -1, 1, 0.1});
   auto run = [&](int best_n) {
