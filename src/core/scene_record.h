@@ -112,10 +112,12 @@ struct SceneField {
   friend bool operator==(const SceneField&, const SceneField&) = default;
 };
 
-/// A named counter's value from now on: "level", "score", "deaths".
+/// A named counter's value from now on: "level", "score", "deaths"; the
+/// locomotion task's "distance" (m, its distance so far over the scored span).
 struct SceneCounter {
   std::string name;
   double value = 0;
+  std::string unit;  ///< what the value counts in ("m"), or empty: a count
   friend bool operator==(const SceneCounter&, const SceneCounter&) = default;
 };
 
@@ -125,6 +127,12 @@ struct SceneEvent {
   std::variant<SceneGrid, SceneCell, SceneCarry, SceneField, SceneCounter> what;
   friend bool operator==(const SceneEvent&, const SceneEvent&) = default;
 };
+
+/// The markers of the span a task scores (its measured time: after a
+/// settling, a skipped fraction, ...), for a viewer to mark on its time bar:
+/// "scored from" when measuring began and "scored to" when it ended.
+inline constexpr std::string_view kScoredFrom = "scored from";
+inline constexpr std::string_view kScoredTo = "scored to";
 
 /// The record: what holds throughout, then the events in time order.
 struct SceneRecord {

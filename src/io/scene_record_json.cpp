@@ -50,6 +50,7 @@ json event_json(const SceneEvent& e) {
                         {"values", values}};
         } else {
           j["counter"] = {{"name", w.name}, {"value", w.value}};
+          if (!w.unit.empty()) j["counter"]["unit"] = w.unit;
         }
       },
       e.what);
@@ -222,6 +223,7 @@ SceneEvent read_event(const json& e, const std::string& path, int kinds, Seen& s
     SceneCounter c;
     c.name = text(w, at_, "name");
     c.value = number(w, at_, "value");
+    if (w.contains("unit")) c.unit = text(w, at_, "unit");
     out.what = std::move(c);
   }
   return out;

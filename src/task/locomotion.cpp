@@ -172,6 +172,25 @@ double LocomotionTask::efficiency(const CreatureModel& m) const {
                            def_.basal_power);
 }
 
+void LocomotionTask::record(const Observation& o, SceneRecord& out) {
+  if (!measured_) return;
+  if (!recorded_from_) {
+    out.markers.push_back({std::string(kScoredFrom), t_start_});
+    out.add(t_start_, SceneCounter{"distance", 0, "m"});
+    recorded_from_ = true;
+  }
+  const double d = distance();
+  const bool end = phase_ == Phase::Done && !recorded_to_;
+  if (std::abs(d - recorded_distance_) >= kDistanceStep || (end && d != recorded_distance_)) {
+    out.add(o.time(), SceneCounter{"distance", d, "m"});
+    recorded_distance_ = d;
+  }
+  if (end) {
+    out.markers.push_back({std::string(kScoredTo), t_});
+    recorded_to_ = true;
+  }
+}
+
 TaskScore LocomotionTask::score(const CreatureModel& m) const {
   TaskScore out{fitness(m), distance(), {}};
   if (def_.fitness == LocomotionFitness::Lessin2015)

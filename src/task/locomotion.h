@@ -98,6 +98,11 @@ class LocomotionTask : public Task {
   /// lessin2015's fitness adds its speed, efficiency and muscle work as metrics.
   TaskScore score(const CreatureModel& m) const override;
   std::string note() const override { return note_; }
+  /// The scored span's markers (kScoredFrom, kScoredTo) and its distance so
+  /// far as the counter "distance" (m), recorded each time it moved by
+  /// kDistanceStep and at the end: what a viewer shows as the distance.
+  void record(const Observation& o, SceneRecord& out) override;
+  static constexpr double kDistanceStep = 0.005;
   Phase phase() const { return phase_; }
 
   /// Call at the start with the centre of mass and every part's position.
@@ -148,6 +153,8 @@ class LocomotionTask : public Task {
   double gravity_;
   double work_ = 0, work_start_ = 0;  // the muscles' work (J): now, and when measuring began
   Stillness stillness_;
+  bool recorded_from_ = false, recorded_to_ = false;
+  double recorded_distance_ = 0;
   std::vector<Vec3> parts_;
   std::string note_;
 };

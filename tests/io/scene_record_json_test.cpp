@@ -24,12 +24,13 @@ SceneRecord everything() {
   r.parts = {{"projectile", 2, "#ffc61a"}};
   r.cell_kinds = {{"grass", "#a3c98a", false}, {"stone", "#7c838b", true}};
   r.add(0, SceneGrid{{-0.05, 1.5, 0}, 0.1, 3, 2, {0, 1, 0, 0, 0, 1}});
-  r.add(0, SceneCounter{"level", 1});
+  r.add(0, SceneCounter{"level", 1, {}});
   r.add(0, SceneField{"landscape", 3, 2, -15, 15, {0, 1.5, -15, 0.125, 2.5, 15}});
   r.add(1.25, SceneCell{1, 0, 0});
   r.add(1.25, SceneCarry{0, 1});
   r.add(2, SceneCarry{0, -1});
-  r.add(2, SceneCounter{"score", 101});
+  r.add(2, SceneCounter{"score", 101, {}});
+  r.add(2.5, SceneCounter{"distance", 0.25, "m"});
   return r;
 }
 
@@ -44,6 +45,9 @@ TEST(SceneRecordJson, EveryItemAndEventRoundTrips) {
   // the events' form: a time and one payload under its type's name
   EXPECT_EQ(j["events"][3], json::parse(R"({"t": 1.25, "cell": {"x": 1, "y": 0, "kind": 0}})"));
   EXPECT_EQ(j["events"][2]["field"]["range"], json::parse("[-15, 15]"));
+  // a counter's unit only where it has one
+  EXPECT_EQ(j["events"][6], json::parse(R"({"t": 2, "counter": {"name": "score", "value": 101}})"));
+  EXPECT_EQ(j["events"][7], json::parse(R"({"t": 2.5, "counter": {"name": "distance", "value": 0.25, "unit": "m"}})"));
 }
 
 TEST(SceneRecordJson, RoundsTimesAndFieldValuesAndLeavesEmptyListsOut) {

@@ -430,3 +430,54 @@ TEST(Locomotion, ForwardIsTheHeadingWhenSettlingEnded) {
 
 }  // namespace
 }  // namespace bx
+
+namespace bx {
+namespace {
+
+// The replay's record: the scored span's markers, and the distance as the
+// task counts it (here along x, after the first eighth), a counter in metres
+// recorded whenever it moved by kDistanceStep and at the end, so a viewer
+// shows the distance that scores and where its span lies.
+TEST(Locomotion, RecordsTheScoredSpanAndItsDistanceAsItGoes) {
+  LocomotionDef def;
+  def.seconds = 8;
+  def.metric = DistanceMetric::AlongX;
+  def.skip_fraction = 1.0 / 8;
+  LocomotionTask task(def, 0.5, 1);
+  Walker w;
+  task.begin(w);
+  SceneRecord rec;
+  task.record(w, rec);
+  for (int k = 1; k <= 16; ++k) {
+    w.t = 0.5 * k;
+    // 5 m in the first second (a fall: not scored), then 2 mm a step, then 2 cm
+    w.com = {k <= 2 ? 2.5 * k : k <= 8 ? 5 + 0.002 * (k - 2) : 5.012 + 0.02 * (k - 8), 0, 0};
+    task.observe(w);
+    task.record(w, rec);
+  }
+  task.record(w, rec);  // the loop's last call changes nothing more
+  ASSERT_TRUE(task.done());
+  EXPECT_EQ(rec.marker(kScoredFrom), 1.0);
+  EXPECT_EQ(rec.marker(kScoredTo), 8.0);
+  std::vector<std::pair<double, double>> counted;
+  for (const SceneEvent& e : rec.events) {
+    const auto& c = std::get<SceneCounter>(e.what);
+    EXPECT_EQ(c.name, "distance");
+    EXPECT_EQ(c.unit, "m");
+    counted.push_back({e.t, c.value});
+  }
+  // 0 when measuring began; 6 mm at 2.5 s and 12 mm at 4 s (steps of 2 mm);
+  // then every 2 cm step
+  ASSERT_EQ(counted.size(), 3u + 8u);
+  EXPECT_EQ(counted[0], (std::pair<double, double>{1.0, 0.0}));
+  EXPECT_EQ(counted[1].first, 2.5);
+  EXPECT_NEAR(counted[1].second, 0.006, 1e-12);
+  EXPECT_EQ(counted[2].first, 4.0);
+  EXPECT_NEAR(counted[2].second, 0.012, 1e-12);
+  EXPECT_EQ(counted.back().first, 8.0);
+  EXPECT_DOUBLE_EQ(counted.back().second, task.distance());
+  EXPECT_NEAR(task.distance(), 0.172, 1e-12);
+}
+
+}  // namespace
+}  // namespace bx

@@ -10,7 +10,7 @@ import { createTrail } from './trail_view.js';
 import { createFlight } from './flight_view.js';
 import { createRecordView } from './record_view.js';
 import { showCellsLegend } from './cells_legend.js';
-import { countersText, hasWorld, recordOf, sceneAt } from './scene_record.js';
+import { countersText, hasCounter, hasWorld, recordOf, sceneAt, scoredSpan } from './scene_record.js';
 import { centreAt, throwOf, throwStatus } from './flight.js';
 import { createCameraRig } from './camera_rig.js';
 import { pointsOfInterest } from './interest.js';
@@ -128,6 +128,9 @@ export function createViewer(ui, data) {
     player.setThrow(s.throw !== null, s.throw?.release ?? null, s.T);
     // what the scene record draws on the ground and on the parts, its legend
     s.record = recordOf(entry.replay);
+    player.setSpan(scoredSpan(s.record, s.T), s.T);
+    // the distance the task counts, when it records one (its counter), is the one shown
+    s.taskDistance = hasCounter(s.record, 'distance');
     if (s.record.points.length || s.record.props.length || hasWorld(s.record)) {
       world = createRecordView(s.record, entry.replay, bodies);
       world.showField(s.field);
@@ -175,11 +178,15 @@ export function createViewer(ui, data) {
     sparks.setTime(s.t);
     signals.setTime(s.t);
     const res = s.entry.replay.result ?? {};
-    // how far: the centre of mass's, or a catapult's projectile's since its release
-    const far = s.throw ? throwStatus(frames, s.throw, s.t) : `distance ${metres(distanceAt(frames, s.t))}`;
+    // how far: the task's distance (a counter, below), a catapult's
+    // projectile's since its release, or, for a task that counts no distance
+    // (or a replay made before tasks recorded it), how far the centre of mass
+    // moved from its start: not called distance, which the panel gives as the task's
+    const far = s.throw ? throwStatus(frames, s.throw, s.t)
+      : s.taskDistance ? '' : `moved ${metres(distanceAt(frames, s.t))}`;
     // and the record's counters at this moment (a river crossing's level, score, deaths)
     const counters = countersText(sceneAt(s.record, s.t).counters);
-    ui.hud.textContent = `${s.entry.label}   t ${seconds(s.t)}   ${far}` +
+    ui.hud.textContent = `${s.entry.label}   t ${seconds(s.t)}` + (far ? `   ${far}` : '') +
       (typeof res.fitness === 'number' ? `   fitness ${fitness(res.fitness)}` : '') + (counters ? `   ${counters}` : '');
     player.show({ t: s.t, duration: s.T, playing: s.playing, speed: s.speed, mode: rig.mode });
     dirty = true;

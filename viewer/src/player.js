@@ -1,5 +1,6 @@
-// The player bar under the scene: play/pause, scrub (with a catapult's
-// release marked on it), time, speed, camera and what to draw. It holds no
+// The player bar under the scene: play/pause, scrub (with the span the task
+// scored and a catapult's release marked on it), time, speed, camera and
+// what to draw. It holds no
 // state of its own: the viewer tells it what to show, and it reports what
 // the user did.
 import { el } from './dom.js';
@@ -29,7 +30,9 @@ export function createPlayer(container, on) {
   scrub.addEventListener('input', () => on.seek(Number(scrub.value)));
   // the release's mark rides over the bar, where the thumb's centre is at that time
   const mark = el('div', { id: 'release-mark', class: 'release-mark', hidden: true });
-  const scrubBox = el('div', { class: 'scrub-box' }, scrub, mark);
+  // the span the task scored, a band under the bar
+  const span = el('div', { id: 'scored-span', class: 'scored-span', hidden: true });
+  const scrubBox = el('div', { class: 'scrub-box' }, span, scrub, mark);
   const time = el('span', { id: 'time', class: 'time' });
   const speed = el('select', { id: 'speed', title: 'speed', 'aria-label': 'speed' },
     ...SPEEDS.map((s) => el('option', { value: String(s), selected: s === 1 }, `${s}x`)));
@@ -74,6 +77,17 @@ export function createPlayer(container, on) {
      * time `release` (s, or null when it never happened) marked on the scrub
      * bar of a replay `duration` long. Not throwing: neither.
      */
+    /**
+     * The span the task scored ({from, to} in s, or null: none marked),
+     * shaded on the scrub bar of a replay `duration` long.
+     */
+    setSpan(scored, duration) {
+      span.hidden = scored === null;
+      if (scored === null) return;
+      span.style.setProperty('--from', String(scrubFraction(scored.from, duration)));
+      span.style.setProperty('--to', String(scrubFraction(scored.to, duration)));
+      span.title = `scored from ${seconds(scored.from)} to ${seconds(scored.to)}`;
+    },
     setThrow(throwing, release, duration) {
       flight.label.hidden = !throwing;
       mark.hidden = !throwing || release === null || release > duration;

@@ -141,7 +141,7 @@ export function parseRecord(rec, nParts, path = 'scene.record') {
       }
       default:
         if (!isNum(w.value)) fail(`${where}.value`, 'expected a number', w.value);
-        return { t: e.t, type, name: str(w.name, `${where}.name`), value: w.value };
+        return { t: e.t, type, name: str(w.name, `${where}.name`), value: w.value, unit: w.unit === undefined ? '' : str(w.unit, `${where}.unit`) };
     }
   });
   return { markers, points, props, parts, cellKinds, events };
@@ -197,11 +197,12 @@ export function hasWorld(rec) {
  * `grid` (the last grid event, or null), `cellsKey` (the index of the last
  * grid or cell event: the cells differ only when it does), `carry` ({part,
  * kind} or null), `fields` (name -> the last field event of that name) and
- * `counters` ([name, value] in the order the record first names them).
+ * `counters` ([name, value, unit] in the order the record first names
+ * them; unit '' for a count).
  */
 export function sceneAt(rec, t) {
   let grid = null, cellsKey = -1, carry = null;
-  const fields = {}, counters = new Map();
+  const fields = {}, counters = new Map(), units = new Map();
   for (let i = 0; i < rec.events.length; ++i) {
     const e = rec.events[i];
     if (e.type === 'counter' && !counters.has(e.name)) counters.set(e.name, null);
@@ -210,9 +211,12 @@ export function sceneAt(rec, t) {
     else if (e.type === 'cell') cellsKey = i;
     else if (e.type === 'carry') carry = e.kind < 0 ? null : { part: e.part, kind: e.kind };
     else if (e.type === 'field') fields[e.name] = e;
-    else counters.set(e.name, e.value);
+    else { counters.set(e.name, e.value); units.set(e.name, e.unit ?? ''); }
   }
-  return { grid, cellsKey, carry, fields, counters: [...counters].filter(([, v]) => v !== null) };
+  return {
+    grid, cellsKey, carry, fields,
+    counters: [...counters].filter(([, v]) => v !== null).map(([name, v]) => [name, v, units.get(name)]),
+  };
 }
 
 /** The current grid's cells at time t (its grid's cells with the changes since), or null before a grid. */
@@ -230,7 +234,26 @@ export function cellsAt(rec, t) {
   return cells;
 }
 
-/** Counters as the line of text says them: "level 2   score 101   deaths 0". */
+/** Counters as the line of text says them: "level 2   score 101   deaths 0", "distance 0.69 m". */
 export function countersText(counters) {
-  return counters.map(([name, v]) => `${name} ${Number.isInteger(v) ? v : v.toFixed(2)}`).join('   ');
+  return counters.map(([name, v, unit]) => `${name} ${Number.isInteger(v) ? v : v.toFixed(2)}${unit ? ` ${unit}` : ''}`).join('   ');
+}
+
+/** Whether the record counts a counter named `name` at any time. */
+export function hasCounter(rec, name) {
+  return rec.events.some((e) => e.type === 'counter' && e.name === name);
+}
+
+/** The markers of the span a task scores (src/core/scene_record.h: kScoredFrom, kScoredTo). */
+export const SCORED_FROM = 'scored from', SCORED_TO = 'scored to';
+
+/**
+ * The span the task scored, {from, to} in s, from its markers (no "scored
+ * to": the replay's end, `duration`), or null when the record has none.
+ */
+export function scoredSpan(rec, duration) {
+  const from = markerTime(rec, SCORED_FROM);
+  if (from === null) return null;
+  const to = markerTime(rec, SCORED_TO);
+  return { from, to: to === null ? duration : to };
 }

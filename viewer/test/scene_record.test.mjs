@@ -3,7 +3,7 @@
 // field, the counters), and the record an old file's `throw` means.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { cellsAt, countersText, hasWorld, markerTime, parseRecord, partNamed, pointNamed, recordOf, sceneAt } from '../src/scene_record.js';
+import { cellsAt, countersText, hasCounter, hasWorld, markerTime, parseRecord, partNamed, pointNamed, recordOf, sceneAt, scoredSpan } from '../src/scene_record.js';
 import { AXIS_UP, makeCatapult, makeReplay, makeRiver, makeTargets } from './fixture.mjs';
 
 test("a catapult's record names its projectile and target and marks its release", () => {
@@ -35,7 +35,7 @@ test('the scene at a moment: the grid, its cells changed so far, the item carrie
   assert.deepEqual(start.grid.origin, [-1, -0.5, 0]);
   assert.equal(start.carry, null);
   assert.equal(start.fields.landscape.t, 0);
-  assert.deepEqual(start.counters, [['level', 1], ['score', 0], ['deaths', 0]]);
+  assert.deepEqual(start.counters, [['level', 1, ''], ['score', 0, ''], ['deaths', 0, '']]);
   assert.equal(cellsAt(rec, 0)[1], 1); // the stone at (1, 0)
   // picked up at 0.5 s: its cell is grass, part 0 carries a stone, a new landscape
   const carrying = sceneAt(rec, 0.7);
@@ -48,12 +48,36 @@ test('the scene at a moment: the grid, its cells changed so far, the item carrie
   assert.equal(cellsAt(rec, 0.49)[1], 1);
   assert.equal(sceneAt(rec, 0.49).cellsKey, start.cellsKey);
   // the score at 1 s, the bridge and the stone set down at 1.5 s
-  assert.deepEqual(sceneAt(rec, 1.2).counters, [['level', 1], ['score', 1], ['deaths', 0]]);
+  assert.deepEqual(sceneAt(rec, 1.2).counters, [['level', 1, ''], ['score', 1, ''], ['deaths', 0, '']]);
   const end = sceneAt(rec, 2);
   assert.equal(end.carry, null);
   assert.equal(cellsAt(rec, 2)[1 * 4 + 3], 3);
   assert.equal(countersText(end.counters), 'level 1   score 1   deaths 0');
   assert.equal(countersText([]), '');
+});
+
+test('a task\'s distance: a counter in metres, and the span it scored, from its markers', () => {
+  const walker = (markers) => {
+    const r = makeReplay();
+    r.scene.record = {
+      markers,
+      events: [
+        { t: 0.25, counter: { name: 'distance', value: 0, unit: 'm' } },
+        { t: 1, counter: { name: 'distance', value: 0.3456, unit: 'm' } },
+      ],
+    };
+    return r;
+  };
+  const rec = recordOf(walker([{ name: 'scored from', t: 0.25 }, { name: 'scored to', t: 1.75 }]));
+  assert.equal(hasCounter(rec, 'distance'), true);
+  assert.equal(hasCounter(rec, 'score'), false);
+  assert.deepEqual(scoredSpan(rec, 2), { from: 0.25, to: 1.75 });
+  assert.deepEqual(sceneAt(rec, 0.1).counters, []);  // before the span: nothing counted yet
+  assert.equal(countersText(sceneAt(rec, 0.5).counters), 'distance 0 m');
+  assert.equal(countersText(sceneAt(rec, 1.5).counters), 'distance 0.35 m');
+  // a span not yet ended runs to the replay's end; none without its start
+  assert.deepEqual(scoredSpan(recordOf(walker([{ name: 'scored from', t: 0.25 }])), 2), { from: 0.25, to: 2 });
+  assert.equal(scoredSpan(recordOf(makeRiver()), 2), null);
 });
 
 test('a new grid replaces the last, and the changes start over from it', () => {
@@ -110,6 +134,7 @@ test('a bad record names the field and what was wrong', () => {
     [(r) => (r.events[8].t = 0.2), /^scene\.record\.events\[8\]\.t: expected a time >= 0\.5, got 0\.2$/],
     [(r) => (r.events[8] = { t: 1, light: {} }), /^scene\.record\.events\[8\]: expected one of grid, cell, carry, field, counter/],
     [(r) => (r.events = {}), /^scene\.record\.events: expected an array, got \{\}$/],
+    [(r) => (r.events[1].counter.unit = 3), /^scene\.record\.events\[1\]\.counter\.unit: expected a string, got 3$/],
     [(r) => r.events.splice(0, 1), /^scene\.record\.events\[4\]\.cell: a cell changed before any grid was laid/],
   ];
   for (const [spoil, message] of cases) {

@@ -40,9 +40,9 @@ void RiverScene::record(double t, const GridWorld& w, Vec3 origin, double cell, 
   carrying_ = w.carrying();
   // the counters
   const double level = w.level(), score = w.score(), deaths = w.alive() ? 0 : 1;
-  if (!started_ || level != level_) out.add(t, SceneCounter{"level", level});
-  if (!started_ || score != score_) out.add(t, SceneCounter{"score", score});
-  if (!started_ || deaths != deaths_) out.add(t, SceneCounter{"deaths", deaths});
+  if (!started_ || level != level_) out.add(t, SceneCounter{"level", level, {}});
+  if (!started_ || score != score_) out.add(t, SceneCounter{"score", score, {}});
+  if (!started_ || deaths != deaths_) out.add(t, SceneCounter{"deaths", deaths, {}});
   level_ = level;
   score_ = score;
   deaths_ = deaths;

@@ -49,9 +49,9 @@ TEST(RiverScene, TheFirstCallLaysTheGridAndTheCounters) {
   ASSERT_EQ(g.cells.size(), 400u);
   for (int y = 0; y < 20; ++y)
     for (int x = 0; x < 20; ++x) ASSERT_EQ(g.cells[static_cast<std::size_t>(20 * y + x)], static_cast<int>(w.grid().at({x, y})));
-  EXPECT_EQ(std::get<SceneCounter>(r.events[1].what), (SceneCounter{"level", 4}));
-  EXPECT_EQ(std::get<SceneCounter>(r.events[2].what), (SceneCounter{"score", 0}));
-  EXPECT_EQ(std::get<SceneCounter>(r.events[3].what), (SceneCounter{"deaths", 0}));
+  EXPECT_EQ(std::get<SceneCounter>(r.events[1].what), (SceneCounter{"level", 4, {}}));
+  EXPECT_EQ(std::get<SceneCounter>(r.events[2].what), (SceneCounter{"score", 0, {}}));
+  EXPECT_EQ(std::get<SceneCounter>(r.events[3].what), (SceneCounter{"deaths", 0, {}}));
   // nothing changed: nothing more
   scene.record(0.5, w, kOrigin, kCell, r);
   EXPECT_EQ(r.events.size(), 4u);
@@ -92,8 +92,8 @@ TEST(RiverScene, AStonePickedUpAndPutDownAsABridgeIsRecordedWithItsCarrying) {
   ASSERT_TRUE(std::holds_alternative<SceneGrid>(next[0].what));
   EXPECT_EQ(std::get<SceneGrid>(next[0].what).origin, moved);
   EXPECT_EQ(std::get<SceneGrid>(next[0].what).cells, river_scene_cells(w));
-  EXPECT_EQ(next[1], (SceneEvent{9, SceneCounter{"level", 5}}));
-  EXPECT_EQ(next[2], (SceneEvent{9, SceneCounter{"score", 100}}));
+  EXPECT_EQ(next[1], (SceneEvent{9, SceneCounter{"level", 5, {}}}));
+  EXPECT_EQ(next[2], (SceneEvent{9, SceneCounter{"score", 100, {}}}));
 }
 
 TEST(RiverScene, ADeathIsCounted) {
@@ -107,7 +107,7 @@ TEST(RiverScene, ADeathIsCounted) {
   EXPECT_FALSE(agent.go_to({kRiverColumn, *row}, 0.0));
   const std::size_t from = r.events.size();
   scene.record(2, w, kOrigin, kCell, r);
-  EXPECT_EQ(since(r, from), (std::vector<SceneEvent>{{2, SceneCounter{"deaths", 1}}}));
+  EXPECT_EQ(since(r, from), (std::vector<SceneEvent>{{2, SceneCounter{"deaths", 1, {}}}}));
 }
 
 }  // namespace

@@ -183,7 +183,7 @@ TEST(RiverTask, ItsSceneLaysEachGridWhereTheTaskPlacedIt) {
   EXPECT_NEAR(g.x, 0, 1e-12);
   EXPECT_NEAR(g.y, 0, 1e-12);
   EXPECT_NE(second->origin, first.origin);
-  EXPECT_EQ(r.events.back(), (SceneEvent{4, SceneCounter{"score", task.score(CreatureModel{}).fitness}}));
+  EXPECT_EQ(r.events.back(), (SceneEvent{4, SceneCounter{"score", task.score(CreatureModel{}).fitness, {}}}));
 }
 
 }  // namespace
