@@ -26,6 +26,7 @@
 #include "cli/commands.h"
 #include "cli/creature.h"
 #include "core/files.h"
+#include "core/text.h"
 #include "eval/evaluate.h"
 #include "eval/task_table.h"
 #include "genome/encapsulate.h"
@@ -55,7 +56,7 @@ struct WatchArgs {
   std::optional<int> fps;  ///< render: default 30 for mp4, 15 for gif
   bool quiet = false;      ///< render: no progress output
   std::vector<std::string> metrics;  ///< plot: the task's metrics whose names contain these, not fitness
-  std::vector<std::string> more_runs;  ///< plot: runs compared with the first (genome)
+  std::vector<std::string> more_runs;  ///< plot, show: runs compared with the first (genome)
   std::string group_by;                ///< plot: "preset" or a config key: runs of one value are one condition
 };
 
@@ -159,7 +160,43 @@ int cmd_show_run(WatchArgs a) {
   return 0;
 }
 
+// Several runs: each one's best as scored, side by side on one page (its
+// picker switches between them), each labelled with its run.
+int cmd_show_runs(const WatchArgs& a) {
+  std::vector<std::string> dirs{a.genome};
+  dirs.insert(dirs.end(), a.more_runs.begin(), a.more_runs.end());
+  if (a.flags.id || a.flags.gen || !a.flags.config.empty() || a.flags.seed || !a.flags.set.empty() ||
+      a.flags.seconds || a.flags.trial)
+    return fail("--id/--gen/--config/--seed/--set/--seconds/--trial: a page of several runs shows each run's best as "
+                "it was scored (name one creature, RUN_DIR:ID, to vary its settings)");
+  for (const std::string& d : dirs)
+    if (!fs::is_directory(d) || !fs::exists(run_db_path(d)))
+      return fail(utf8_text(d) + ": not a run folder (a page of several runs shows each run's best: name run folders)");
+  if (a.out.empty()) return fail("--out: a page of several runs needs a file to write (--out compare.html)");
+  if (Status s = make_parent_dir("--out", a.out); !s) return fail(s.error());
+  std::vector<LabelledReplay> entries;
+  for (const std::string& d : dirs) {
+    auto c = resolve_creature(d, a.flags);
+    if (!c) return fail(c.error());
+    if (!has_body(c->cfg.sim.creature)) return fail(no_body(c->cfg.sim.creature, utf8_text(d) + ": nothing to show"));
+    auto w = simulate(*c);
+    if (!w) return fail(w.error());
+    print_result(*c, w->front().result);
+    // named by its folder, as runs are told apart (the last part of its path)
+    fs::path name = fs::path(d).lexically_normal();
+    if (name.filename().empty()) name = name.parent_path();  // "runs/a/"
+    w->front().entry.label = utf8_text(name.filename().string()) + ": " + w->front().entry.label +
+                             trial_text(w->front().result);
+    entries.push_back(std::move(w->front().entry));
+  }
+  if (Status s = save_view_html(a.out, entries); !s) return fail(s.error());
+  std::printf("%zu runs' bests on one page (pick them on the page)\nviewer written to %s\n", entries.size(),
+              utf8_text(a.out).c_str());
+  return 0;
+}
+
 int cmd_show(WatchArgs a) {
+  if (!a.more_runs.empty()) return cmd_show_runs(a);
   // a run directory alone is the run's page; RUN_DIR:ID, --id or --gen one of its creatures
   if (fs::is_directory(a.genome) && !a.flags.id && !a.flags.gen) {
     if (!a.flags.config.empty() || a.flags.seed || !a.flags.set.empty())
@@ -600,6 +637,8 @@ void add_watch_commands(CLI::App& app) {
   auto* s = app.add_subcommand("show", "Write a self-contained HTML viewer of a genome, or of a run directory (curves and the best of each generation)");
   add_creature_options(s, show.genome, show.flags);
   add_trial_option(s, show.flags);
+  s->add_option("more_runs", show.more_runs,
+                "More run directories: each run's best as scored, side by side on one page (needs --out)");
   s->add_option("--out", show.out,
                 "HTML file to write (default: the genome's name with .html, RUN_DIR/view.html for a run, "
                 "RUN_DIR/individual-ID.html for one of its creatures)");

@@ -306,6 +306,45 @@ TEST_F(RunCli, ARunStoredBeforeGenotypeKindsResumesExactly) {
   EXPECT_NE(v.out.find("stored before runs kept checksums were read but cannot be checked"), std::string::npos) << v.out;
 }
 
+// `show RUN RUN...`: each run's best as scored, on one page, named by its folder
+TEST_F(RunCli, ShowOfSeveralRunsPutsEachBestAsScoredOnOnePage) {
+  const std::string cfg = (dir / "small.toml").string();
+  for (const char* seed : {"1", "2"})
+    ASSERT_EQ(bestiary("run " + cfg + " --seed " + seed + " --set evolution.generations=2 --out " +
+                       (dir / (std::string("s") + seed)).string() + " --quiet --workers 1")
+                  .code,
+              0);
+  const fs::path page = dir / "both.html";
+  Outcome r = bestiary("show " + (dir / "s1").string() + " " + (dir / "s2").string() + "/ --out " + page.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("2 runs' bests on one page"), std::string::npos) << r.out;
+  // each as scored: the stored fitness, bit for bit
+  for (const char* run : {"s1", "s2"}) {
+    const std::string best = query(dir / run / "run.sqlite", "SELECT best_id FROM generation ORDER BY gen DESC LIMIT 1");
+    const std::string id = best.substr(0, best.find('|'));
+    const auto line = r.out.find((dir / run).string());
+    ASSERT_NE(line, std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find(" individual " + id + " (", line), r.out.find(" individual ", line)) << r.out;
+    const std::string data = bxtest::embedded_data(bxtest::slurp(page));
+    EXPECT_NE(data.find(std::string("\"label\":\"") + run + ": individual " + id + " "), std::string::npos) << run;
+  }
+  EXPECT_EQ(r.out.find("not as scored"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("the stored fitness, bit for bit"), std::string::npos) << r.out;
+  // what it refuses, in one line, writing nothing
+  const fs::path none = dir / "none.html";
+  for (const auto& [args, says] : std::vector<std::pair<std::string, std::string>>{
+           {(dir / "s1").string() + " " + (dir / "s2").string(), "--out: a page of several runs needs a file"},
+           {(dir / "s1").string() + " " + cfg + " --out " + none.string(), cfg + ": not a run folder"},
+           {(dir / "s1").string() + " " + (dir / "s2").string() + " --id 3 --out " + none.string(),
+            "a page of several runs shows each run's best as it was scored"}}) {
+    Outcome bad = bestiary("show " + args);
+    EXPECT_EQ(bad.code, 2) << args;
+    EXPECT_NE(bad.err.find(says), std::string::npos) << bad.err;
+    EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
+  }
+  EXPECT_FALSE(fs::exists(none));
+}
+
 TEST_F(RunCli, BadInputGivesOneErrorLineAndWritesNothing) {
   struct Case {
     std::string args, error;
