@@ -13,7 +13,7 @@
 //             the preset) evaluated again at the preset's own length and
 //             step: the CPU time of each (thread CPU time), the distribution
 //             a cluster's workers see in early generations.
-//   model     for W = 1, 8, 64, 512 and 4096 workers, each recorded batch's
+//   model     for W = 1, 8, 64, 128, 256, 512 and 4096 workers, each recorded batch's
 //             (a steady state's after its initial population: its long run)
 //             jobs (each a cost drawn in turn from the K measured) handed
 //             longest first to W workers: the batch takes its makespan plus
@@ -143,7 +143,7 @@ struct Width {
   double busy, speedup, parent_share;
 };
 
-constexpr int kWidths[] = {1, 8, 64, 512, 4096};
+constexpr int kWidths[] = {1, 8, 64, 128, 256, 512, 4096};
 
 // the model: every batch the run handed out at each width (a steady state's
 // after its initial population: the run's long run), its jobs' costs drawn
@@ -229,12 +229,12 @@ int bench(const std::string& preset, int samples, const std::vector<std::string>
   std::printf("  batches in order:");
   for (std::size_t k = 0; k < seen.batches.size() && k < 24; ++k) std::printf(" %d", seen.batches[k]);
   std::printf("%s\n", seen.batches.size() > 24 ? " ..." : "");
+  std::printf("  batches in order at 64 workers (the elite's rounds fill idle workers):");
+  for (std::size_t k = 0; k < batches_at[64].size() && k < 24; ++k) std::printf(" %d", batches_at[64][k]);
+  std::printf("%s\n", batches_at[64].size() > 24 ? " ..." : "");
   if (!generational)
     std::printf("  the long run (the batches after the initial population of %d):\n", seen.batches.front());
   std::printf("  %8s %8s %8s %14s\n", "workers", "busy", "speedup", "parent share");
-  std::printf("  batches at 64 workers:");
-  for (std::size_t k = 0; k < batches_at[64].size() && k < 24; ++k) std::printf(" %d", batches_at[64][k]);
-  std::printf("%s\n", batches_at[64].size() > 24 ? " ..." : "");
   for (const Width& w : model(seen, batches_at, !generational, parent_per_batch)) {
     std::printf("  %8d %8.3f %8.1f %14.4f\n", w.workers, w.busy, w.speedup, w.parent_share);
     if (w.workers == 64 && busy_64 < 0) busy_64 = w.busy;
