@@ -24,6 +24,7 @@
 #include "io/config.h"
 #include "io/presets.h"
 #include "io/mjcf.h"
+#include "io/urdf.h"
 #include "io/run_csv.h"
 #include "io/run_store.h"
 #include "io/syllabus.h"
@@ -255,7 +256,7 @@ int cmd_resume(const std::string& dir, const EvaluatorArgs& evaluator, int worke
 }
 
 struct ExportArgs {
-  std::string target, csv, mjcf;
+  std::string target, csv, mjcf, urdf;
   CreatureFlags flags;
 };
 
@@ -279,9 +280,31 @@ int export_mjcf(const ExportArgs& a) {
   return 0;
 }
 
+// a creature as URDF: its links, inertias, shapes and joints
+int export_urdf(const ExportArgs& a) {
+  const std::string ext = fs::path(a.urdf).extension().string();
+  if (ext != ".urdf") return fail("--urdf: expected a .urdf file, got \"" + a.urdf + "\"");
+  auto subject = resolve_creature(a.target, a.flags);
+  if (!subject) return fail(subject.error());
+  auto creature = subject->develop();
+  if (!creature) return fail(a.target + ": not viable: " + creature.error());
+  if (!creature->body) return fail(a.target + ": a " + subject->kind_name() + " has no body to export");
+  std::vector<std::string> notes;
+  const std::string xml = creature_urdf(*creature->body, subject->cfg.sim, subject->label, &notes);
+  if (Status s = make_parent_dir("--urdf", a.urdf); !s) return fail(s.error());
+  if (Status s = write_file_atomic(a.urdf, xml); !s) return fail(s.error());
+  const CreatureModel& m = *creature->body;
+  std::printf("%s -> %s: %d links, %zu joints, %.6g kg\n", subject->label.c_str(), a.urdf.c_str(), m.n_parts(),
+              m.joints.size(), m.total_mass());
+  for (const std::string& line : notes) std::printf("note: %s\n", line.c_str());
+  return 0;
+}
+
 int cmd_export(const ExportArgs& a) {
-  if (a.csv.empty() == a.mjcf.empty()) return fail("export: say what to write: --csv DIR (a run) or --mjcf OUT.xml (a creature)");
+  if (!a.csv.empty() + !a.mjcf.empty() + !a.urdf.empty() != 1)
+    return fail("export: say what to write, one of: --csv DIR (a run), --mjcf OUT.xml or --urdf OUT.urdf (a creature)");
   if (!a.mjcf.empty()) return export_mjcf(a);
+  if (!a.urdf.empty()) return export_urdf(a);
   const std::string& dir = a.target;
   if (!fs::is_directory(dir)) return fail(dir + ": no such run directory");
   const std::string& csv = a.csv;
@@ -439,10 +462,11 @@ void add_evolve_commands(CLI::App& app) {
   });
 
   static ExportArgs exp;
-  auto* x = app.add_subcommand("export", "Write a run's database as CSV files, or a creature as MuJoCo's MJCF");
+  auto* x = app.add_subcommand("export", "Write a run's database as CSV files, or a creature as MuJoCo's MJCF or as URDF");
   add_creature_options(x, exp.target, exp.flags);
   x->add_option("--csv", exp.csv, "A run: the directory to write its CSV files into (created if need be)");
   x->add_option("--mjcf", exp.mjcf, "A creature: the MJCF file (.xml) to write (docs/export.md)");
+  x->add_option("--urdf", exp.urdf, "A creature: the URDF file (.urdf) to write (docs/export.md)");
   x->callback([] { std::exit(cmd_export(exp)); });
 
   static std::string verify_dir;

@@ -5,16 +5,15 @@
 #include <vector>
 
 #include "core/text.h"
+#include "io/export_common.h"
 #include "eval/task_table.h"
 
 namespace bx {
 
 namespace {
 
-// the shortest text that reads back to the same double
-std::string num(double v) { return shortest_number(std::abs(v) < 1e-300 ? 0.0 : v); }  // no "-0"
-
-std::string vec(Vec3 v) { return num(v.x) + " " + num(v.y) + " " + num(v.z); }
+std::string num(double v) { return export_number(v); }
+std::string vec(Vec3 v) { return export_vec(v); }
 
 std::string quat(const Mat3& R) {
   const Quat q = to_quat(R);
@@ -40,28 +39,6 @@ std::string geom(const PartModel& p, int i) {
       break;
   }
   return g + "/>";
-}
-
-// the joint's degrees of freedom as MJCF joints: (type, axis in the creature
-// frame, limit) each, in its dof order
-struct Dof {
-  const char* type;
-  Vec3 axis;
-  const Limit* limit;
-};
-std::vector<Dof> dofs(const JointModel& j) {
-  auto lim = [&](int k) { return k < static_cast<int>(j.limits.size()) ? &j.limits[k] : nullptr; };
-  switch (j.type) {
-    case JointType::Fixed: return {};
-    case JointType::Hinge: return {{"hinge", j.axis1, lim(0)}};
-    case JointType::Universal: return {{"hinge", j.axis1, lim(0)}, {"hinge", j.axis2, lim(1)}};
-    case JointType::Spherical:  // Euler angles: axis1, the third axis, axis2 (genome.h)
-      return {{"hinge", j.axis1, lim(0)}, {"hinge", normalized(cross(j.axis2, j.axis1)), lim(1)},
-              {"hinge", j.axis2, lim(2)}};
-    case JointType::Slider: return {{"slide", j.axis1, lim(0)}};
-    case JointType::Cylindrical: return {{"slide", j.axis1, lim(0)}, {"hinge", j.axis1, lim(1)}};
-  }
-  return {};
 }
 
 }  // namespace
@@ -115,14 +92,14 @@ std::string creature_mjcf(const CreatureModel& m, const SimConfig& cfg, const st
       const Mat3 Rt = p.pose.R.transposed();
       const Vec3 anchor = Rt * (jm.anchor - p.pose.p);
       int k = 0;
-      for (const Dof& d : dofs(jm)) {
+      for (const ExportDof& d : export_dofs(jm)) {
         std::string jn = "j";
         jn += std::to_string(j);
         jn += '_';
         jn += std::to_string(k);
         joint_names[static_cast<std::size_t>(j) * 3 + k] = jn;
         // ODE's angle is the parent's turn relative to the child: about the negated axis here
-        x += in + "<joint name=\"" + jn + "\" type=\"" + d.type + "\" pos=\"" + vec(anchor) + "\" axis=\"" +
+        x += in + "<joint name=\"" + jn + "\" type=\"" + (d.slide ? "slide" : "hinge") + "\" pos=\"" + vec(anchor) + "\" axis=\"" +
              vec(-1.0 * (Rt * d.axis)) + "\"";
         if (d.limit && d.limit->hi > d.limit->lo)
           x += " limited=\"true\" range=\"" + num(d.limit->lo) + " " + num(d.limit->hi) + "\"";

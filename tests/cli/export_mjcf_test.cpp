@@ -1,6 +1,6 @@
-// `bestiary export CREATURE --mjcf OUT.xml` from the command line: a genome
-// file and a run's creature are written and say what they hold; what cannot
-// be exported is refused in one line and writes nothing.
+// `bestiary export CREATURE --mjcf OUT.xml` (and `--urdf OUT.urdf`) from the
+// command line: a genome file and a run's creature are written and say what
+// they hold; what cannot be exported is refused in one line and writes nothing.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -34,6 +34,28 @@ TEST_F(ExportMjcf, AGenomeFileAndARunsCreatureAreWritten) {
   r = bestiary("export " + run.string() + " --mjcf " + (dir / "best.xml").string());
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_TRUE(fs::exists(dir / "best.xml"));
+}
+
+TEST_F(ExportMjcf, AsUrdfTooWithWhatUrdfCannotSay) {
+  Outcome r = bestiary("export " + bxtest::creature("centipede.json") + " --urdf " + (dir / "c.urdf").string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("12 links, 11 joints"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("note: URDF has no actuators"), std::string::npos) << r.out;
+  const std::string urdf = bxtest::slurp(dir / "c.urdf");
+  EXPECT_NE(urdf.find("<robot name="), std::string::npos);
+  EXPECT_EQ(std::count(urdf.begin(), urdf.end(), '\n') > 20, true);
+  r = bestiary("export " + bxtest::creature("lessin_crawler.json") + " --urdf " + (dir / "l.urdf").string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("note: 24 muscle effectors not exported"), std::string::npos) << r.out;
+  for (const std::string& bad : {bxtest::creature("centipede.json") + " --urdf " + (dir / "x.xml").string(),
+                                 bxtest::creature("centipede.json") + " --urdf " + (dir / "x.urdf").string() +
+                                     " --mjcf " + (dir / "x.xml").string()}) {
+    Outcome b = bestiary("export " + bad);
+    EXPECT_EQ(b.code, 2) << bad;
+    EXPECT_EQ(std::count(b.err.begin(), b.err.end(), '\n'), 1) << b.err;
+  }
+  EXPECT_FALSE(fs::exists(dir / "x.urdf"));
+  EXPECT_FALSE(fs::exists(dir / "x.xml"));
 }
 
 TEST_F(ExportMjcf, WhatCannotBeExportedIsRefusedInOneLine) {
