@@ -9,6 +9,7 @@
 #include <cstring>
 #include <ctime>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <thread>
 #include <unistd.h>
@@ -260,44 +261,60 @@ struct ExportArgs {
   CreatureFlags flags;
 };
 
-// a creature as MJCF: its body, joints, actuators and the physics that matter
-int export_mjcf(const ExportArgs& a) {
-  const std::string ext = fs::path(a.mjcf).extension().string();
-  if (ext != ".xml") return fail("--mjcf: expected an .xml file, got \"" + a.mjcf + "\"");
-  auto subject = resolve_creature(a.target, a.flags);
-  if (!subject) return fail(subject.error());
-  auto creature = subject->develop();
-  if (!creature) return fail(a.target + ": not viable: " + creature.error());
-  if (!creature->body) return fail(a.target + ": a " + subject->kind_name() + " has no body to export");
-  MjcfNotes notes;
-  const std::string xml = creature_mjcf(*creature->body, subject->cfg.sim, subject->label, &notes);
-  if (Status s = make_parent_dir("--mjcf", a.mjcf); !s) return fail(s.error());
-  if (Status s = write_file_atomic(a.mjcf, xml); !s) return fail(s.error());
-  const CreatureModel& m = *creature->body;
-  std::printf("%s -> %s: %d bodies, %zu joints, %zu effectors, %.6g kg\n", subject->label.c_str(), a.mjcf.c_str(),
-              m.n_parts(), m.joints.size(), m.effectors.size(), m.total_mass());
-  for (const std::string& line : notes.lines) std::printf("note: %s\n", line.c_str());
-  return 0;
-}
-
-// a creature as URDF: its links, inertias, shapes and joints
-int export_urdf(const ExportArgs& a) {
-  const std::string ext = fs::path(a.urdf).extension().string();
-  if (ext != ".urdf") return fail("--urdf: expected a .urdf file, got \"" + a.urdf + "\"");
+// A creature's body written to `out` (flag `flag`, extension `ext`) in a
+// format `write` gives (the text, and its notes and what it counted), with
+// a line of what it wrote and a note a line.
+int export_body(const ExportArgs& a, const char* flag, const std::string& out, const char* ext,
+                const std::function<std::string(const CreatureModel&, const Subject&, std::vector<std::string>&)>& write,
+                const std::function<std::string(const CreatureModel&)>& counted) {
+  if (fs::path(out).extension().string() != ext)
+    return fail(std::string(flag) + ": expected a file name ending in " + ext + ", got \"" + out + "\"");
   auto subject = resolve_creature(a.target, a.flags);
   if (!subject) return fail(subject.error());
   auto creature = subject->develop();
   if (!creature) return fail(a.target + ": not viable: " + creature.error());
   if (!creature->body) return fail(a.target + ": a " + subject->kind_name() + " has no body to export");
   std::vector<std::string> notes;
-  const std::string xml = creature_urdf(*creature->body, subject->cfg.sim, subject->label, &notes);
-  if (Status s = make_parent_dir("--urdf", a.urdf); !s) return fail(s.error());
-  if (Status s = write_file_atomic(a.urdf, xml); !s) return fail(s.error());
-  const CreatureModel& m = *creature->body;
-  std::printf("%s -> %s: %d links, %zu joints, %.6g kg\n", subject->label.c_str(), a.urdf.c_str(), m.n_parts(),
-              m.joints.size(), m.total_mass());
+  const std::string text = write(*creature->body, *subject, notes);
+  if (Status s = make_parent_dir(flag, out); !s) return fail(s.error());
+  if (Status s = write_file_atomic(out, text); !s) return fail(s.error());
+  std::printf("%s -> %s: %s\n", subject->label.c_str(), out.c_str(), counted(*creature->body).c_str());
   for (const std::string& line : notes) std::printf("note: %s\n", line.c_str());
   return 0;
+}
+
+std::string mass_text(const CreatureModel& m) {
+  char kg[32];
+  std::snprintf(kg, sizeof kg, "%.6g kg", m.total_mass());
+  return kg;
+}
+
+// a creature as MJCF: its body, joints, actuators and the physics that matter
+int export_mjcf(const ExportArgs& a) {
+  return export_body(
+      a, "--mjcf", a.mjcf, ".xml",
+      [](const CreatureModel& m, const Subject& s, std::vector<std::string>& notes) {
+        MjcfNotes n;
+        std::string xml = creature_mjcf(m, s.cfg.sim, s.label, &n);
+        notes = n.lines;
+        return xml;
+      },
+      [](const CreatureModel& m) {
+        return std::to_string(m.n_parts()) + " bodies, " + std::to_string(m.joints.size()) + " joints, " +
+               std::to_string(m.effectors.size()) + " effectors, " + mass_text(m);
+      });
+}
+
+// a creature as URDF: its links, inertias, shapes and joints
+int export_urdf(const ExportArgs& a) {
+  return export_body(
+      a, "--urdf", a.urdf, ".urdf",
+      [](const CreatureModel& m, const Subject& s, std::vector<std::string>& notes) {
+        return creature_urdf(m, s.cfg.sim, s.label, &notes);
+      },
+      [](const CreatureModel& m) {
+        return std::to_string(m.n_parts()) + " links, " + std::to_string(m.joints.size()) + " joints, " + mass_text(m);
+      });
 }
 
 int cmd_export(const ExportArgs& a) {
