@@ -8,6 +8,7 @@
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <sqlite3.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -27,6 +28,7 @@
 #include "cli/creature.h"
 #include "core/files.h"
 #include "core/text.h"
+#include "io/http_serve.h"
 #include "eval/evaluate.h"
 #include "eval/task_table.h"
 #include "genome/encapsulate.h"
@@ -58,7 +60,12 @@ struct WatchArgs {
   std::vector<std::string> metrics;  ///< plot: the task's metrics whose names contain these, not fitness
   std::vector<std::string> more_runs;  ///< plot, show: runs compared with the first (genome)
   std::string group_by;                ///< plot: "preset" or a config key: runs of one value are one condition
+  bool watch = false;                  ///< show RUN: serve the page and keep it current while the run goes on
+  int port = 0;                        ///< ... on this port of 127.0.0.1 (0: any free one)
 };
+
+// how often a watched page asks whether the run stored more, and the server looks (s)
+constexpr double kWatchEvery = 2;
 
 /// What simulating gave: the page's entry and the result.
 struct Watched {
@@ -118,20 +125,25 @@ void print_result(const Subject& c, const EvalResult& res) {
 // A run directory: its context and fitness curves, the overall best, the
 // generations' bests and their lineages, re-simulated exactly (the run's
 // config and evaluation seeds).
-int cmd_show_run(WatchArgs a) {
+// A run's page: its html, and the line that says what it holds. `stamp`
+// (non-empty: watched) goes into the page for it to follow the run.
+struct RunPageText {
+  std::string html, summary;
+};
+Result<RunPageText> run_page(const WatchArgs& a, const std::string& stamp = {}, double every = 0) {
   const std::string dir = a.genome;
   auto store = RunStore::open(run_db_path(dir));
-  if (!store) return fail(store.error());
+  if (!store) return Error{store.error()};
   auto text = (*store)->config_text();
-  if (!text) return fail(text.error());
+  if (!text) return Error{text.error()};
   auto syl = read_syllabus(*text, run_db_path(dir) + " (the run's config)");
-  if (!syl) return fail(syl.error());
+  if (!syl) return Error{syl.error()};
   const RunConfig* cfg = &syl->stages.front().cfg;
   if (!has_body(cfg->sim.creature))
-    return fail(no_body(cfg->sim.creature, "no creature to show (its curves: `" + program() + " plot " + dir +
-                                              " --out fitness.svg`, and --metric NAME)"));
+    return Error{no_body(cfg->sim.creature, "no creature to show (its curves: `" + program() + " plot " + dir +
+                                                " --out fitness.svg`, and --metric NAME)")};
   auto seed = (*store)->master_seed();
-  if (!seed) return fail(seed.error());
+  if (!seed) return Error{seed.error()};
   // each stage's creatures simulated on its own config; a run of several
   // shows its syllabus as a graph, each stage's curve on its own
   std::vector<PageStage> stages;
@@ -140,23 +152,93 @@ int cmd_show_run(WatchArgs a) {
     std::vector<std::string> uses = st.uses;
     if (!st.reconcile.empty()) uses.push_back(st.reconcile);
     stages.push_back({st.name, uses, st.group, st.cfg.sim});
-    if (Status s = set_seconds(stages.back().sim, a.flags.seconds); !s) return fail(s.error());
+    if (Status s = set_seconds(stages.back().sim, a.flags.seconds); !s) return Error{s.error()};
   }
-  if (a.out.empty()) a.out = (fs::path(dir) / "view.html").string();
-  if (Status s = make_parent_dir("--out", a.out); !s) return fail(s.error());
-
   // the overall best, the lineages and the generations' bests (io/run_page.h)
   auto page = gather_run_page(**store, dir, *cfg, stages, *seed);
-  if (!page) return fail(dir + ": " + page.error());
+  if (!page) return Error{dir + ": " + page.error()};
   for (std::size_t k = 1; k < syl->stages.size(); ++k)
     page->run.planned_generations += total_generations(syl->stages[k].cfg.evolution);
-  if (Status s = save_view_html(a.out, page->replays, page->run); !s) return fail(s.error());
+  page->run.watch_stamp = stamp;
+  page->run.watch_every = every;
   const RunView& run = page->run;
   auto best = std::find_if(run.members.begin(), run.members.end(), [&](const RunMember& m) { return m.id == run.best_id; });
-  std::printf("%s: %zu generations, best fitness %.6g (individual %lld); %zu of %zu creatures replayed\n"
-              "viewer written to %s\n",
-              dir.c_str(), run.generations.size(), best->fitness, static_cast<long long>(run.best_id),
-              page->replays.size(), run.members.size(), a.out.c_str());
+  char line[512];
+  std::snprintf(line, sizeof line, "%s: %zu generations, best fitness %.6g (individual %lld); %zu of %zu creatures replayed",
+                utf8_text(dir).c_str(), run.generations.size(), best->fitness, static_cast<long long>(run.best_id),
+                page->replays.size(), run.members.size());
+  return RunPageText{make_view_html(page->replays, run), line};
+}
+
+// Where a run stands, as a watched page compares it: its generations stored
+// and evaluations done (read without a lock: the run may be going on)
+std::string run_stamp(const std::string& dir) {
+  sqlite3* db = nullptr;
+  std::string stamp;
+  if (sqlite3_open_v2(run_db_path(dir).c_str(), &db, SQLITE_OPEN_READONLY, nullptr) == SQLITE_OK) {
+    sqlite3_busy_timeout(db, 2000);
+    sqlite3_stmt* q = nullptr;
+    if (sqlite3_prepare_v2(db, "SELECT count(*), coalesce(max(evaluations), 0) FROM generation", -1, &q, nullptr) ==
+            SQLITE_OK &&
+        sqlite3_step(q) == SQLITE_ROW)
+      stamp = std::to_string(sqlite3_column_int64(q, 0)) + " generations, " + std::to_string(sqlite3_column_int64(q, 1)) +
+              " evaluations";
+    sqlite3_finalize(q);
+  }
+  sqlite3_close(db);
+  return stamp;
+}
+
+// `show RUN --watch`: the page served on 127.0.0.1, made again (and written
+// to --out) each time the run stores a generation; the page asks for /stamp
+// and reloads when it changed
+int watch_run(const WatchArgs& a) {
+  auto server = HttpServer::listen(a.port);
+  if (!server) return fail(server.error());
+  std::string stamp = run_stamp(a.genome);
+  if (stamp.empty()) return fail(utf8_text(a.genome) + ": no run database to watch");
+  auto page = run_page(a, stamp, kWatchEvery);
+  if (!page) return fail(page.error());
+  if (Status s = write_file_atomic(a.out, page->html); !s) return fail(s.error());
+  std::printf("%s\nwatching at http://127.0.0.1:%d/ (the page reloads as the run stores generations; Ctrl-C "
+              "stops; %s is kept current too)\n",
+              page->summary.c_str(), server->port(), utf8_text(a.out).c_str());
+  std::fflush(stdout);
+  std::string html = std::move(page->html);
+  server->serve(
+      [&](const std::string& path) -> HttpReply {
+        if (path == "/" || path == "/view.html") return {200, "text/html; charset=utf-8", html};
+        if (path == "/stamp") return {200, "text/plain; charset=utf-8", stamp + "\n"};
+        return {404, "text/plain; charset=utf-8", "not here: / (the page) and /stamp\n"};
+      },
+      [&] {
+        const std::string now = run_stamp(a.genome);
+        if (now.empty() || now == stamp) return true;
+        auto next = run_page(a, now, kWatchEvery);
+        if (!next) {  // a page that cannot be made now (a run mid-write): try again at the next tick
+          std::fprintf(stderr, "not updated: %s\n", next.error().c_str());
+          return true;
+        }
+        stamp = now;
+        html = std::move(next->html);
+        if (Status s = write_file_atomic(a.out, html); !s) std::fprintf(stderr, "%s\n", s.error().c_str());
+        std::printf("%s\n", next->summary.c_str());
+        std::fflush(stdout);
+        return true;
+      },
+      kWatchEvery);
+  return 0;
+}
+
+int cmd_show_run(WatchArgs a) {
+  const std::string dir = a.genome;
+  if (a.out.empty()) a.out = (fs::path(dir) / "view.html").string();
+  if (Status s = make_parent_dir("--out", a.out); !s) return fail(s.error());
+  if (a.watch) return watch_run(a);
+  auto page = run_page(a);
+  if (!page) return fail(page.error());
+  if (Status s = write_file_atomic(a.out, page->html); !s) return fail(s.error());
+  std::printf("%s\nviewer written to %s\n", page->summary.c_str(), utf8_text(a.out).c_str());
   return 0;
 }
 
@@ -196,6 +278,9 @@ int cmd_show_runs(const WatchArgs& a) {
 }
 
 int cmd_show(WatchArgs a) {
+  if ((a.watch || a.port) && (!a.more_runs.empty() || !fs::is_directory(a.genome) || a.flags.id || a.flags.gen))
+    return fail("--watch/--port: follow one run as it goes: name its folder alone (RUN_DIR)");
+  if (a.port && !a.watch) return fail("--port: only with --watch");
   if (!a.more_runs.empty()) return cmd_show_runs(a);
   // a run directory alone is the run's page; RUN_DIR:ID, --id or --gen one of its creatures
   if (fs::is_directory(a.genome) && !a.flags.id && !a.flags.gen) {
@@ -637,6 +722,11 @@ void add_watch_commands(CLI::App& app) {
   auto* s = app.add_subcommand("show", "Write a self-contained HTML viewer of a genome, or of a run directory (curves and the best of each generation)");
   add_creature_options(s, show.genome, show.flags);
   add_trial_option(s, show.flags);
+  s->add_flag("--watch", show.watch,
+              "A run: serve its page on 127.0.0.1 and keep it current while the run goes on (the page reloads as "
+              "generations are stored; Ctrl-C stops)");
+  s->add_option("--port", show.port, "--watch: the port (default: any free one, printed)")
+      ->check(CLI::Range(0, 65535));
   s->add_option("more_runs", show.more_runs,
                 "More run directories: each run's best as scored, side by side on one page (needs --out)");
   s->add_option("--out", show.out,

@@ -88,6 +88,7 @@ std::string view_data_json(const std::vector<LabelledReplay>& replays,
       }
       r["stages"] = std::move(stages);
     }
+    if (!run->watch_stamp.empty()) r["watch"] = {{"stamp", run->watch_stamp}, {"every", run->watch_every}};
     out += json_text(r);
   }
   out += '}';

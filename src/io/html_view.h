@@ -75,6 +75,11 @@ struct RunView {
   std::int64_t best_id = -1;    ///< must be a member with a replay
   int replay_cap = 0;           ///< most replays the page holds
   std::vector<RunStage> stages; ///< a run of several stages: all of them, in order; else none
+  /// `show RUN --watch`: where the run stood when the page was made (its
+  /// server answers /stamp with where it stands now: the page reloads when
+  /// they differ) and how often the page asks (s); empty: not watched.
+  std::string watch_stamp;
+  double watch_every = 0;
 };
 
 /// The page's data as JSON text:
@@ -86,7 +91,8 @@ struct RunView {
 /// (null when none), "operator", "replay_index" (null when none),
 /// "evaluations"}...], "best_id", "replay_cap", "stages"?: [{"name", "uses",
 /// "group", "first_gen" (null when not begun), "generations", "best" (null
-/// when not begun)}...]}}; "stages" only for a run of several. docs/viewer.md
+/// when not begun)}...], "watch"?: {"stamp", "every"}}}; "stages" only for a
+/// run of several, "watch" only for a watched one. docs/viewer.md
 /// describes it.
 std::string view_data_json(const std::vector<LabelledReplay>& replays,
                            const std::optional<RunView>& run);

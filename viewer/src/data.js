@@ -289,6 +289,13 @@ export function parseRun(run, nReplays, path = 'run') {
       }
     });
   }
+  // `show RUN --watch`: where the run stood when the page was made, and how
+  // often (s) the page asks its server whether it stores more
+  if (run.watch !== undefined) {
+    obj(run.watch, `${path}.watch`);
+    if (typeof run.watch.stamp !== 'string' || run.watch.stamp === '') fail(`${path}.watch.stamp`, 'expected a stamp', run.watch.stamp);
+    if (!(isNum(run.watch.every) && run.watch.every > 0)) fail(`${path}.watch.every`, 'expected seconds > 0', run.watch.every);
+  }
   return run;
 }
 

@@ -5,6 +5,7 @@ import { parsePageData } from './data.js';
 import { sceneProps } from './props.js';
 import { recordOf } from './scene_record.js';
 import { createViewer } from './app.js';
+import { watchRun } from './watch.js';
 
 function start() {
   const $ = (id) => document.getElementById(id);
@@ -21,6 +22,9 @@ function start() {
       run: $('run'), signals: $('signals'), neurons: $('neurons'), player: $('player'),
     }, data);
     window.bestiary = Object.assign(viewer, { ready: true, error: null });
+    // served by `bestiary show RUN --watch`: follow the run
+    if (data.run?.watch && location.protocol.startsWith('http'))
+      watchRun(viewer, data.replays.map((e) => e.label), data.run.watch, window);
   } catch (e) {
     const message = e && e.message ? e.message : String(e);
     $('error').hidden = false;
