@@ -18,6 +18,7 @@
 #include "genome/genome_json.h"
 #include "io/config.h"
 #include "physics/world.h"
+#include "support/creatures.h"
 #include "task/river/quadruped.h"
 
 namespace bx {
@@ -53,13 +54,10 @@ class MjcfCreature : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(MjcfCreature, LoadsWithItsPartsMassJointsAndActuatorsAndComesToRest) {
   const std::string name = GetParam();
-  auto g = load_genome(std::string(BESTIARY_SOURCE_DIR) + "/creatures/" + name + ".json");
-  ASSERT_TRUE(g.ok()) << g.error();
-  auto cfg = read_run_config("[genome]\ndialect = \"" + std::string(to_string(g->dialect)) + "\"\n", "test");
-  ASSERT_TRUE(cfg.ok()) << cfg.error();
-  Development dev = develop(*g, cfg->sim.develop);
-  ASSERT_TRUE(dev.viable()) << dev.reason;
-  const CreatureModel& cm = *dev.model;
+  const bxtest::DevelopedCreature c = bxtest::develop_creature(name);
+  ASSERT_TRUE(c.dev.viable());
+  const CreatureModel& cm = *c.dev.model;
+  const auto* cfg = &c.cfg;
   MjcfNotes notes;
   Loaded l;
   load(creature_mjcf(cm, cfg->sim, name, &notes), l);

@@ -188,8 +188,12 @@ TEST(ReplayFile, ACatapultsSceneNamesItsProjectileAndMarksItsRelease) {
   EXPECT_FALSE(w.j["result"].contains("throw_distance"));
   EXPECT_FALSE(w.j["result"].contains("target_miss"));
   EXPECT_EQ(w.j["result"]["distance"].get<double>(), w.res.distance);
-  // a walker's task shows nothing beside it: no record
-  EXPECT_FALSE(simulate("walker.json", 1).j["scene"].contains("record"));
+  // a walker's task records only its scored span and its distance: no items, no grid
+  const auto walker = simulate("walker.json", 1).j["scene"]["record"];
+  EXPECT_EQ(walker["markers"][0]["name"], "scored from") << walker;
+  EXPECT_FALSE(walker.contains("parts"));
+  EXPECT_FALSE(walker.contains("points"));
+  for (const auto& e : walker["events"]) EXPECT_EQ(e["counter"]["name"], "distance") << e;
 }
 
 // v rotated by the unit quaternion q = [w, x, y, z] (a replay pose's q)

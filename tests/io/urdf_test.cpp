@@ -19,6 +19,7 @@
 #include "genome/genome_json.h"
 #include "io/config.h"
 #include "io/mjcf.h"
+#include "support/creatures.h"
 #include "task/river/quadruped.h"
 
 namespace bx {
@@ -106,14 +107,9 @@ void compare(const CreatureModel& cm, const SimConfig& sim, const std::string& n
 class UrdfCreature : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(UrdfCreature, LoadsWithItsMassAndJointsAndMovesAsTheMjcfExport) {
-  const std::string name = GetParam();
-  auto g = load_genome(std::string(BESTIARY_SOURCE_DIR) + "/creatures/" + name + ".json");
-  ASSERT_TRUE(g.ok()) << g.error();
-  auto cfg = read_run_config("[genome]\ndialect = \"" + std::string(to_string(g->dialect)) + "\"\n", "test");
-  ASSERT_TRUE(cfg.ok()) << cfg.error();
-  Development dev = develop(*g, cfg->sim.develop);
-  ASSERT_TRUE(dev.viable()) << dev.reason;
-  compare(*dev.model, cfg->sim, name);
+  const bxtest::DevelopedCreature c = bxtest::develop_creature(GetParam());
+  ASSERT_TRUE(c.dev.viable());
+  compare(*c.dev.model, c.cfg.sim, GetParam());
 }
 
 INSTANTIATE_TEST_SUITE_P(Canonical, UrdfCreature,

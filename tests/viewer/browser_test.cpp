@@ -196,7 +196,7 @@ TEST_F(ViewerInBrowser, ARiverCrossingsGridStonesHeatMapAndCountersAreDrawn) {
     EXPECT_GE(scene["items"].get<int>(), 19) << scene;  // the stones, one perhaps carried
     EXPECT_TRUE(scene["field"].is_number()) << scene;   // the landscape's heat map
     EXPECT_TRUE(scene["heat"].get<bool>());
-    EXPECT_EQ(m["state"]["counters"][0], json::array({"level", 4})) << m["state"]["counters"];
+    EXPECT_EQ(m["state"]["counters"][0], json::array({"level", 4, ""})) << m["state"]["counters"];
     EXPECT_EQ(m["state"]["counters"][2][0], "deaths");
   }
   // the legend names the kinds and the heat map's scale, and fits its box

@@ -265,7 +265,7 @@ export function createViewer(ui, data) {
    * is the mean of (the replay is the first); for a catapult, the
    * projectile's centre and whether its flight is drawn; what the scene
    * record draws (record_view.js's state(), or null) and its counters
-   * ([name, value]) at this moment.
+   * ([name, value, unit]) at this moment.
    */
   function state() {
     const p = bodies.parts[0].position;
