@@ -36,7 +36,7 @@ struct Individual {
   double distance = 0;  ///< the first evaluation's, the one a replay shows
   std::string failure;  ///< why it failed (crash, timeout, explosion) or scored 0 by rule
   std::int64_t parent1 = -1, parent2 = -1;
-  std::string op;       ///< random, mutation, crossover, graft
+  std::string op;       ///< random, mutation, crossover, graft; copy, file (a stage's founders); migrant (islands)
   int generation = 0;   ///< the generation (steady state: the report interval) it was born in
   std::uint64_t seed = 0;  ///< the seed of its first evaluation (the k-th's: repeat_seed(seed, k))
   /// How many evaluations `fitness` folds (their mean, or least: Evolution's
