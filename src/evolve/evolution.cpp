@@ -267,9 +267,18 @@ std::vector<Individual> Evolution::reevaluate_elite(EvolutionState& s, Evaluator
     return EvalJob{ind.genotype.get(), repeat_seed(ind.seed, e), repeat_step_divisor(repeats, e), task_};
   };
   for (;;) {
+    // the members in rank order, sorted only as deep as a loop below reads
     std::vector<int> order(n);
     std::iota(order.begin(), order.end(), 0);
-    std::sort(order.begin(), order.end(), [&](int x, int y) { return better(s.population[x], s.population[y]); });
+    int ranked = 0;
+    auto rank_to = [&](int depth) {
+      depth = std::min(depth, n);
+      if (depth <= ranked) return;
+      std::partial_sort(order.begin() + ranked, order.begin() + depth, order.end(),
+                        [&](int x, int y) { return better(s.population[x], s.population[y]); });
+      ranked = depth;
+    };
+    rank_to(std::max(elite, 1));
     // each due individual with how many evaluations it gets in this round
     std::vector<std::pair<int, int>> due;
     // (not one that fell below a retest: its 0 stands)
@@ -281,25 +290,26 @@ std::vector<Individual> Evolution::reevaluate_elite(EvolutionState& s, Evaluator
     if (due.empty()) break;
     std::vector<EvalJob> jobs;
     std::vector<std::pair<int, int>> keys;  // (member, evaluation) of each job
+    std::set<std::pair<int, int>> asked;    // the same, to look up
+    auto ask = [&](int i, int e) {
+      jobs.push_back(job(i, e));
+      keys.push_back({i, e});
+      asked.insert({i, e});
+    };
     for (auto [i, count] : due)
       for (int e = s.population[i].evaluations; e < s.population[i].evaluations + count; ++e)
-        if (!ahead.count({i, e})) {
-          jobs.push_back(job(i, e));
-          keys.push_back({i, e});
-        }
+        if (!ahead.count({i, e})) ask(i, e);
     // idle workers (in a round that needs a call at all): in rank order,
     // each member's evaluations up to the elite's (the best: up to
     // best_target) not yet made or asked for
     const std::size_t width = jobs.empty() ? 0 : static_cast<std::size_t>(std::max(1, eval.workers()));
     for (int k = 0; k < n && jobs.size() < width; ++k) {
+      if (k >= ranked) rank_to(k + static_cast<int>(width - jobs.size()));
       const int i = order[k];
       if (failed_retest(s.population[i])) continue;
       const int target = k == 0 ? best_target : evo_.elite_evaluations;
       for (int e = s.population[i].evaluations; e < target && jobs.size() < width; ++e)
-        if (!ahead.count({i, e}) && std::find(keys.begin(), keys.end(), std::pair{i, e}) == keys.end()) {
-          jobs.push_back(job(i, e));
-          keys.push_back({i, e});
-        }
+        if (!ahead.count({i, e}) && !asked.count({i, e})) ask(i, e);
     }
     std::vector<EvalOutcome> out = jobs.empty() ? std::vector<EvalOutcome>{} : eval.evaluate(jobs);
     for (std::size_t k = 0; k < out.size(); ++k) ahead[keys[k]] = std::move(out[k]);

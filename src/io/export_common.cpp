@@ -6,9 +6,9 @@
 
 namespace bx {
 
-std::string export_number(double v) { return shortest_number(std::abs(v) < 1e-300 ? 0.0 : v); }
+std::string xml::num(double v) { return shortest_number(std::abs(v) < 1e-300 ? 0.0 : v); }
 
-std::string export_vec(Vec3 v) { return export_number(v.x) + " " + export_number(v.y) + " " + export_number(v.z); }
+std::string xml::vec(Vec3 v) { return xml::num(v.x) + " " + xml::num(v.y) + " " + xml::num(v.z); }
 
 std::vector<ExportDof> export_dofs(const JointModel& j) {
   auto lim = [&](int k) { return k < static_cast<int>(j.limits.size()) ? &j.limits[k] : nullptr; };

@@ -11,10 +11,12 @@
 
 namespace bx {
 
+namespace xml {
 /// The shortest text that reads back as the same double ("0", never "-0").
-std::string export_number(double v);
-/// "x y z" of export_number each.
-std::string export_vec(Vec3 v);
+std::string num(double v);
+/// "x y z" of num each.
+std::string vec(Vec3 v);
+}  // namespace xml
 
 /// One degree of freedom of a joint: a hinge or a slide along `axis` (in the
 /// creature frame at the built pose), with its limit if the joint has one.

@@ -12,8 +12,8 @@ namespace bx {
 
 namespace {
 
-std::string num(double v) { return export_number(v); }
-std::string vec(Vec3 v) { return export_vec(v); }
+using xml::num;
+using xml::vec;
 
 std::string quat(const Mat3& R) {
   const Quat q = to_quat(R);

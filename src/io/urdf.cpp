@@ -10,8 +10,8 @@ namespace bx {
 
 namespace {
 
-std::string num(double v) { return export_number(v); }
-std::string vec(Vec3 v) { return export_vec(v); }
+using xml::num;
+using xml::vec;
 
 // URDF's rpy (fixed axes x, y, z: R = Rz(yaw) Ry(pitch) Rx(roll)) of a rotation
 std::string rpy(const Mat3& R) {
