@@ -47,6 +47,22 @@ json sensor_json(const SensorModel& s) {
   return o;
 }
 
+// the wires into neuron (or effector) k: [slot, weight] each, or [slot,
+// weight, gate slot] for a gated one (lessin2015's switches); slots are the
+// brain's values: sensors first (0 .. sensors - 1), then neurons. A
+// positional hole (a wire that reads 0) is left out.
+json wires_json(const std::vector<std::uint32_t>& begin, const std::vector<std::int32_t>& src,
+                const std::vector<double>& weight, const std::vector<std::int32_t>& gate, std::size_t k) {
+  json out = json::array();
+  for (std::uint32_t w = begin[k]; w < begin[k + 1]; ++w) {
+    if (src[w] < 0) continue;
+    json wire = {src[w], round_to(weight[w], 1e-6)};
+    if (!gate.empty() && gate[w] >= 0) wire.push_back(gate[w]);
+    out.push_back(wire);
+  }
+  return out;
+}
+
 }  // namespace
 
 std::string replay_creature(const SimConfig& cfg) {
@@ -125,10 +141,16 @@ std::string replay_to_string(const CreatureModel& m, const Replay& r, const Eval
   json neurons = json::array();
   std::size_t internals = r.frames.empty() ? static_cast<std::size_t>(m.brain.n_neurons()) : 0;
   for (const auto& f : r.frames) internals = std::max(internals, f.neurons.size());
-  if (info.creature.empty() && internals == static_cast<std::size_t>(m.brain.n_neurons())) {
-    for (int i = 0; i < m.brain.n_neurons(); ++i)
-      neurons.push_back({{"part", m.brain.neuron_part[i]},
-                         {"fn", std::string(all_neuron_fns()[m.brain.fn[i]].name)}});
+  const bool graph_brain = info.creature.empty() && internals == static_cast<std::size_t>(m.brain.n_neurons());
+  if (graph_brain) {
+    for (int i = 0; i < m.brain.n_neurons(); ++i) {
+      const auto k = static_cast<std::size_t>(i);
+      neurons.push_back({{"part", m.brain.neuron_part[k]},
+                         {"fn", std::string(all_neuron_fns()[m.brain.fn[k]].name)},
+                         {"bias", round_to(m.brain.bias[k], 1e-6)},
+                         {"inputs", wires_json(m.brain.input_begin, m.brain.input_src, m.brain.input_weight,
+                                               m.brain.input_gate, k)}});
+    }
   } else {
     for (std::size_t i = 0; i < internals; ++i) neurons.push_back({{"part", -1}, {"fn", "controller"}});
   }
@@ -140,6 +162,12 @@ std::string replay_to_string(const CreatureModel& m, const Replay& r, const Eval
     const EffectorModel& em = m.effectors[e];
     const bool muscle = em.muscle >= 0;
     json ej = muscle ? json{{"muscle", em.muscle}} : json{{"joint", em.joint}, {"dof", em.dof}};
+    // what drives it, as a neuron's inputs (a graph brain's)
+    if (graph_brain && e < static_cast<std::size_t>(m.brain.n_effectors())) {
+      ej["bias"] = round_to(m.brain.effector_bias[e], 1e-6);
+      ej["inputs"] = wires_json(m.brain.effector_input_begin, m.brain.effector_input_src,
+                                m.brain.effector_input_weight, m.brain.effector_input_gate, e);
+    }
     // its signal's dominant frequency over the driven steps (Hz; 0: constant)
     if (e < hz.size()) ej["hz"] = round_to(hz[e], 1e-3);
     effectors.push_back(ej);
