@@ -26,6 +26,9 @@ void add_watch_commands(CLI::App& app);
 /// `check` (src/cli/check.cpp).
 void add_check_command(CLI::App& app);
 
+/// `crosscheck` (src/cli/crosscheck.cpp).
+void add_crosscheck_command(CLI::App& app);
+
 /// Prints "bestiary: MESSAGE" on stderr and returns 2, the bad-input exit code.
 int fail(const std::string& message);
 

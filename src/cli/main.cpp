@@ -76,6 +76,7 @@ int main(int argc, char** argv) {
   bx::add_evolve_commands(app);
   bx::add_watch_commands(app);
   bx::add_check_command(app);
+  bx::add_crosscheck_command(app);
   // a command that is not one: name it, and the nearest, before CLI11 does in its words
   if (argc > 1 && argv[1][0] != '-') {
     std::vector<std::string> names;

@@ -75,6 +75,7 @@ bool step(const CreatureModel& m, const SimConfig& cfg, EvalState& s) {
     ++s.driven_steps;
     if (s.record_signals) s.signal_trace.insert(s.signal_trace.end(), s.signals.begin(), s.signals.end());
   }
+  s.motors = hold ? EvalState::Motors::Held : on ? EvalState::Motors::Driven : EvalState::Motors::Off;
   s.world.apply_effectors(m, cfg.motor, s.signals);
   if (hold) s.world.brake_effectors(m, cfg.motor, 1);  // every joint held with all its motor's force
   else if (!on && cfg.motor.off_brake > 0) s.world.brake_effectors(m, cfg.motor, cfg.motor.off_brake);

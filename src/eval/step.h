@@ -67,6 +67,11 @@ struct EvalState {
   std::vector<double> sensor_readings, task_inputs;  ///< of the last controller step
   bool failed = false;        ///< the world blew up (failure says how)
   std::string failure;
+  /// What the motors did in the last step: followed `signals` (Driven), or
+  /// were braked because the task had the controller off (Off: with
+  /// motor.off_brake of their force, none at 0) or held every joint (Held).
+  enum class Motors { Driven, Off, Held };
+  Motors motors = Motors::Off;
   /// The signals the motors were given in the last step: the controller's,
   /// the diagnostic clamp, or the task's "off" zeros (all 0 before the first
   /// step).

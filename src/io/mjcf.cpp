@@ -43,6 +43,14 @@ std::string geom(const PartModel& p, int i) {
 
 }  // namespace
 
+std::string mjcf_joint_name(int joint, int dof) {
+  std::string jn = "j";  // built in steps: GCC 12 warns (falsely) on "j" + to_string(...)
+  jn += std::to_string(joint);
+  jn += '_';
+  jn += std::to_string(dof);
+  return jn;
+}
+
 std::string creature_mjcf(const CreatureModel& m, const SimConfig& cfg, const std::string& name, MjcfNotes* notes) {
   MjcfNotes local;
   MjcfNotes& n = notes ? *notes : local;
@@ -93,10 +101,7 @@ std::string creature_mjcf(const CreatureModel& m, const SimConfig& cfg, const st
       const Vec3 anchor = Rt * (jm.anchor - p.pose.p);
       int k = 0;
       for (const ExportDof& d : export_dofs(jm)) {
-        std::string jn = "j";
-        jn += std::to_string(j);
-        jn += '_';
-        jn += std::to_string(k);
+        const std::string jn = mjcf_joint_name(j, k);
         joint_names[static_cast<std::size_t>(j) * 3 + k] = jn;
         // ODE's angle is the parent's turn relative to the child: about the negated axis here
         x += in + "<joint name=\"" + jn + "\" type=\"" + (d.slide ? "slide" : "hinge") + "\" pos=\"" + vec(anchor) + "\" axis=\"" +

@@ -31,4 +31,7 @@ struct MjcfNotes {
 std::string creature_mjcf(const CreatureModel& m, const SimConfig& cfg, const std::string& name,
                           MjcfNotes* notes = nullptr);
 
+/// The MuJoCo joint creature_mjcf names for degree of freedom `dof` of joint `joint`.
+std::string mjcf_joint_name(int joint, int dof);
+
 }  // namespace bx

@@ -1,0 +1,99 @@
+// `bestiary crosscheck`: a creature's evaluation in ODE, then its recorded
+// effector signals replayed open loop in MuJoCo (io/mujoco_replay.h): does
+// it move the same way in a second simulator?
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdio>
+
+#include "cli/commands.h"
+#include "cli/creature.h"
+#include "genome/json_text.h"
+#include "io/mujoco_replay.h"
+
+namespace bx {
+
+namespace {
+
+struct CrosscheckArgs {
+  std::string target;  ///< a genome file or a run's creature (cli/creature.h)
+  CreatureFlags flags;
+  bool json = false;
+};
+
+// Within these the two simulators agree (docs/export.md, "A second simulator").
+constexpr double kMaxHeadingDegrees = 45, kMinRatio = 0.5, kMaxRatio = 2;
+
+double degrees(double rad) { return rad * 180 / kPi; }
+
+double heading_deg(Vec3 v) { return degrees(std::atan2(v.y, v.x)); }
+
+double planar(Vec3 v) { return std::hypot(v.x, v.y); }
+
+int cmd_crosscheck(const CrosscheckArgs& a) {
+  auto subject = resolve_creature(a.target, a.flags);
+  if (!subject) return fail(subject.error());
+  const SimConfig& sim = subject->cfg.sim;
+  if (!has_body(sim.creature)) return fail(no_body(sim.creature, "nothing to replay in MuJoCo"));
+  auto creature = subject->develop();
+  if (!creature) return fail(subject->label + ": not viable: " + creature.error());
+  auto r = crosscheck_mujoco(*creature->body, *creature->controller, sim, subject->seed);
+  if (!r) return fail(subject->label + ": cannot replay it in MuJoCo: " + r.error());
+  const double head = degrees(r->heading_difference);
+  // a creature that moves less than a tenth of its length in ODE gives no heading to compare
+  const bool moved = planar(r->ode) >= 0.1 * creature->body->body_length();
+  const bool agrees = moved && head <= kMaxHeadingDegrees && r->distance_ratio >= kMinRatio &&
+                      r->distance_ratio <= kMaxRatio;
+  if (a.json) {
+    nlohmann::json out;
+    out["creature"] = subject->label;
+    out["seed"] = subject->seed;
+    out["from"] = r->from;
+    out["to"] = r->to;
+    out["seconds"] = r->seconds;
+    out["steps"] = r->steps;
+    out["ode"] = {r->ode.x, r->ode.y, r->ode.z};
+    out["mujoco"] = {r->mujoco.x, r->mujoco.y, r->mujoco.z};
+    out["heading_difference_deg"] = head;
+    out["distance_ratio"] = r->distance_ratio;
+    out["mujoco_min_height"] = r->mujoco_min_height;
+    out["first_second_angle_gap"] = r->first_second_angle_gap;
+    out["warnings"] = r->warnings;
+    out["agrees"] = agrees;
+    std::printf("%s\n", json_text(out).c_str());
+    return 0;
+  }
+  std::printf("%s, seed %llu\n", subject->label.c_str(), static_cast<unsigned long long>(subject->seed));
+  std::printf("compared over %.2f-%.2f s of %.2f s (%ld steps of %.6g s; the task's scored span)\n", r->from, r->to,
+              r->seconds, r->steps, sim.physics.dt);
+  std::printf("ODE, closed loop:                    %.3f m at heading %.1f deg\n", planar(r->ode),
+              heading_deg(r->ode));
+  std::printf("MuJoCo, ODE's signals in open loop:  %.3f m at heading %.1f deg (centre of mass as low as %.3f m)\n",
+              planar(r->mujoco), heading_deg(r->mujoco), r->mujoco_min_height);
+  std::printf("joint angles over the first second: at most %.3f rad apart\n", r->first_second_angle_gap);
+  for (const std::string& w : r->warnings) std::printf("MuJoCo warned: %s\n", w.c_str());
+  if (!moved) {
+    std::printf("it moves less than a tenth of its length (%.3f m) in ODE over that span: nothing to compare\n",
+                creature->body->body_length());
+    return 0;
+  }
+  std::printf("headings differ by %.1f deg, distance ratio %.2f (MuJoCo / ODE): %s (within %.0f deg and %.1f-%.0fx)\n",
+              head, r->distance_ratio, agrees ? "the same way" : "NOT the same way", kMaxHeadingDegrees, kMinRatio,
+              kMaxRatio);
+  return 0;
+}
+
+}  // namespace
+
+void add_crosscheck_command(CLI::App& app) {
+  static CrosscheckArgs a;
+  auto* c = app.add_subcommand(
+      "crosscheck", "Replay a creature's effector signals open loop in MuJoCo: does it move the same way as in ODE?");
+  add_creature_options(c, a.target, a.flags);
+  c->add_flag("--json", a.json, "Print one JSON object");
+  c->footer("Exit code 0: compared (the verdict is printed); 2: bad input, or a creature MuJoCo cannot replay.");
+  c->callback([] { std::exit(cmd_crosscheck(a)); });
+}
+
+}  // namespace bx

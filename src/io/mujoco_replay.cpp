@@ -1,0 +1,310 @@
+#include "io/mujoco_replay.h"
+
+#include <mujoco/mujoco.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdarg>
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "eval/evaluate.h"
+#include "eval/step.h"
+#include "eval/task_table.h"
+#include "io/mjcf.h"
+#include "physics/mechanisms.h"
+
+namespace bx {
+
+namespace {
+
+// What the motors did in one ODE step, and where the creature was after it.
+struct Recorded {
+  EvalState::Motors motors;
+  std::vector<double> signals;
+  Vec3 com;
+  std::vector<double> angles;  // every joint's dofs in turn
+};
+
+// What one degree of freedom's motor asks for in a step: a speed reached
+// with at most `force` (a velocity motor), or a torque.
+struct Drive {
+  bool velocity = false;
+  double speed = 0, force = 0, torque = 0;
+};
+
+// One effector's drive by ODE's laws (physics/actuators.cpp's gain rows),
+// from its (lagged) signal and its joint's position in MuJoCo.
+Drive drive(const CreatureModel& m, const MotorDef& motor, const EffectorModel& em, double s, double position) {
+  const JointModel& jm = m.joints[em.joint];
+  const bool linear = (jm.type == JointType::Slider || (jm.type == JointType::Cylindrical && em.dof == 0));
+  Drive d;
+  switch (motor.model) {
+    case MotorModel::Servo: return {true, motor.max_speed * s, motor.max_force, 0};
+    case MotorModel::Saturation:
+      return {true, s >= 0 ? motor.max_speed : -motor.max_speed, std::abs(s) * motor.strength * em.cross_section, 0};
+    case MotorModel::Torque: {
+      const double torque = s * motor.strength * em.cross_section;
+      const double limit = linear ? motor.torque_max_linear_speed : motor.torque_max_speed;
+      if (limit > 0) return {true, torque >= 0 ? limit : -limit, std::abs(torque), 0};
+      d.torque = torque;
+      return d;
+    }
+    case MotorModel::PD: {
+      double target;
+      if (em.dof < static_cast<int>(jm.limits.size())) {
+        const Limit& l = jm.limits[em.dof];
+        target = 0.5 * (l.lo + l.hi) + 0.5 * s * (l.hi - l.lo);
+      } else {
+        target = s * (linear ? 1.0 : kPi);
+      }
+      d.torque = motor.kp * (target - position);  // the damper: the joint's own (MJCF damping)
+      return d;
+    }
+    case MotorModel::Muscle: break;
+  }
+  return d;
+}
+
+// A brake (World::brake_effectors): speed 0 with `share` of the full force.
+Drive brake(const MotorDef& motor, const EffectorModel& em, double share) {
+  return {true, 0, share * (motor.model == MotorModel::Servo ? motor.max_force : motor.strength * em.cross_section), 0};
+}
+
+struct MjDeleter {
+  void operator()(mjModel* m) const { mj_deleteModel(m); }
+  void operator()(mjData* d) const { mj_deleteData(d); }
+};
+
+// MuJoCo reports trouble through a global handler: collected per replay
+thread_local std::vector<std::string>* g_warnings = nullptr;
+void on_warning(const char* msg) {
+  if (g_warnings && g_warnings->size() < 8) g_warnings->push_back(msg);
+}
+
+Vec3 horizontal(Vec3 v) { return {v.x, v.y, 0}; }
+
+// How far apart two positions of a degree of freedom are: ODE reads a hinge's
+// angle within (-pi, pi], MuJoCo's keeps counting turns
+double angle_gap(double a, double b, bool linear) {
+  return linear ? std::abs(a - b) : std::abs(std::remainder(a - b, 2 * kPi));
+}
+
+}  // namespace
+
+Result<CrossSimReport> crosscheck_mujoco(const CreatureModel& m, const ControllerModel& controller,
+                                         const SimConfig& given, std::uint64_t seed, double seconds) {
+  for (const EffectorModel& em : m.effectors)
+    if (em.muscle >= 0 || given.motor.model == MotorModel::Muscle)
+      return Error{"its effectors are muscles (lessin2015), which the MJCF export does not write yet"};
+
+  // ODE, closed loop, as evaluate_once runs the first trial
+  reseed_physics(seed);
+  const SeedDraw draw = seed_draw(given, seed);
+  SimConfig cfg = given;
+  cfg.motor.response_time = draw.response_time;
+  auto task = make_task(m, cfg, seed, 0);
+  if (!task) return Error{task.error()};
+  EvalState s(m, controller, cfg, std::move(*task), {draw.yaw, draw.lift});
+  const Pose root0 = s.world.part_pose(0);
+  std::vector<double> angles0;
+  for (int j = 0; j < static_cast<int>(m.joints.size()); ++j)
+    for (int k = 0; k < joint_dofs(m.joints[j].type); ++k) angles0.push_back(s.world.joint_position(j, k));
+  const Vec3 com0 = s.world.centre_of_mass();
+  const long max_steps =
+      seconds > 0 ? static_cast<long>(std::llround(seconds / cfg.physics.dt)) : s.task->max_steps();
+  std::vector<Recorded> rec;
+  rec.reserve(static_cast<std::size_t>(std::min(max_steps, 1L << 22)));
+  while (s.physics_steps < max_steps && (seconds > 0 || !s.task->done())) {
+    if (!step(m, cfg, s)) return Error{"it failed in ODE: " + s.failure};
+    std::vector<double> angles;
+    for (int j = 0; j < static_cast<int>(m.joints.size()); ++j)
+      for (int k = 0; k < joint_dofs(m.joints[j].type); ++k) angles.push_back(s.world.joint_position(j, k));
+    rec.push_back({s.motors, std::vector<double>(s.signals.begin(), s.signals.end()), s.world.centre_of_mass(),
+                   std::move(angles)});
+  }
+  if (s.world.n_props() > 0) return Error{"its task places props in the world (a target, a projectile), which MJCF does not carry"};
+  for (int j = 0; j < static_cast<int>(m.joints.size()); ++j)
+    if (s.world.joint_broken(j)) return Error{"its task broke a joint (a catapult's release), which the replay cannot"};
+  // the scored span, as the task marks it
+  SceneRecord scene;
+  s.task->record(WorldObservation(m, s.world, s.front), scene);
+  CrossSimReport r;
+  r.steps = static_cast<long>(rec.size());
+  r.seconds = static_cast<double>(r.steps) * cfg.physics.dt;
+  r.from = 0;
+  r.to = r.seconds;
+  for (const SceneMarker& mk : scene.markers) {
+    if (mk.name == kScoredFrom) r.from = mk.t;
+    if (mk.name == kScoredTo) r.to = mk.t;
+  }
+  auto index_at = [&](double t) {  // the step whose end is at or after t (-1: the start)
+    const long k = static_cast<long>(std::ceil(t / cfg.physics.dt - 1e-9)) - 1;
+    return std::clamp(k, -1L, r.steps - 1);
+  };
+  const long i_from = index_at(r.from), i_to = index_at(r.to);
+  auto ode_com = [&](long i) { return i < 0 ? com0 : rec[static_cast<std::size_t>(i)].com; };
+  r.ode = ode_com(i_to) - ode_com(i_from);
+
+  // MuJoCo: the exported body, its actuators silenced (the motors are ours)
+  char err[1000] = "";
+  std::string xml = creature_mjcf(m, cfg, "creature");
+  std::unique_ptr<mjVFS> vfs(new mjVFS);
+  mj_defaultVFS(vfs.get());
+  const std::string file = "creature.xml";
+  mj_makeEmptyFileVFS(vfs.get(), file.c_str(), static_cast<int>(xml.size()));
+  std::copy(xml.begin(), xml.end(), static_cast<char*>(vfs->filedata[vfs->nfile - 1]));
+  std::unique_ptr<mjModel, MjDeleter> mm(mj_loadXML(file.c_str(), vfs.get(), err, sizeof err));
+  mj_deleteVFS(vfs.get());
+  if (!mm) return Error{std::string("MuJoCo refused the exported body: ") + err};
+  mjModel* M = mm.get();
+  for (int a = 0; a < M->nu; ++a) {
+    for (int k = 0; k < mjNGAIN; ++k) M->actuator_gainprm[a * mjNGAIN + k] = 0;
+    for (int k = 0; k < mjNBIAS; ++k) M->actuator_biasprm[a * mjNBIAS + k] = 0;
+  }
+  M->opt.integrator = mjINT_EULER;  // implicit in the joints' damping: a PD's damper, as ODE's
+  std::unique_ptr<mjData, MjDeleter> dd(mj_makeData(M));
+  mjData* D = dd.get();
+  // ODE's start: the root's pose, every joint's position
+  const Quat q0 = to_quat(root0.R);
+  const double start[7] = {root0.p.x, root0.p.y, root0.p.z, q0.w, q0.x, q0.y, q0.z};
+  std::copy(start, start + 7, D->qpos);
+  // each effector's degree of freedom in MuJoCo, and each joint dof's
+  std::vector<int> dof_of(m.effectors.size(), -1), qpos_of;
+  {
+    std::size_t a = 0;
+    for (int j = 0; j < static_cast<int>(m.joints.size()); ++j)
+      for (int k = 0; k < joint_dofs(m.joints[j].type); ++k, ++a) {
+        const int id = mj_name2id(M, mjOBJ_JOINT, mjcf_joint_name(j, k).c_str());
+        qpos_of.push_back(id);
+        if (id >= 0) D->qpos[M->jnt_qposadr[id]] = angles0[a];
+      }
+    for (std::size_t e = 0; e < m.effectors.size(); ++e) {
+      const EffectorModel& em = m.effectors[e];
+      const int id = mj_name2id(M, mjOBJ_JOINT, mjcf_joint_name(em.joint, em.dof).c_str());
+      if (id >= 0) dof_of[e] = M->jnt_dofadr[id];
+    }
+  }
+  std::vector<std::string> warnings;
+  g_warnings = &warnings;
+  mju_user_warning = on_warning;
+  mj_forward(M, D);
+  auto mj_com = [&] { return Vec3{D->subtree_com[3], D->subtree_com[4], D->subtree_com[5]}; };
+  const Vec3 mj_com0 = mj_com();
+  Vec3 mj_from = mj_com0, mj_to = mj_com0;
+  if (i_from < 0) mj_from = mj_com0;
+  r.mujoco_min_height = mj_com0.z;
+
+  const double dt = cfg.physics.dt;
+  const double lag = motor_lag_share(dt, cfg.motor.response_time);
+  std::vector<double> lagged(m.effectors.size(), 0.0);
+  std::vector<Drive> drives(m.effectors.size());
+  std::vector<int> vel;  // effectors driven as velocity motors this step
+  std::vector<double> a_mat, f, v_free, base, probe;
+  for (long i = 0; i < r.steps; ++i) {
+    const Recorded& step_rec = rec[static_cast<std::size_t>(i)];
+    // the motors' laws, after their lag, then any brake (step.cpp's order)
+    for (std::size_t e = 0; e < m.effectors.size(); ++e) {
+      double sig = step_rec.signals[e];
+      if (lag > 0) sig = lagged[e] += lag * (sig - lagged[e]);
+      const int dof = dof_of[e];
+      const double position = dof >= 0 ? D->qpos[M->jnt_qposadr[M->dof_jntid[dof]]] : 0;
+      drives[e] = drive(m, cfg.motor, m.effectors[e], sig, position);
+      if (step_rec.motors == EvalState::Motors::Held) drives[e] = brake(cfg.motor, m.effectors[e], 1);
+      else if (step_rec.motors == EvalState::Motors::Off && cfg.motor.off_brake > 0)
+        drives[e] = brake(cfg.motor, m.effectors[e], cfg.motor.off_brake);
+    }
+    // torques first; then the velocity motors' forces, solved together
+    // (projected Gauss-Seidel on the effective inverse inertia, as ODE's
+    // motor rows are) against the motion everything else would give
+    std::fill(D->qfrc_applied, D->qfrc_applied + M->nv, 0.0);
+    vel.clear();
+    for (std::size_t e = 0; e < m.effectors.size(); ++e) {
+      if (dof_of[e] < 0) continue;
+      if (drives[e].velocity) vel.push_back(static_cast<int>(e));
+      else D->qfrc_applied[dof_of[e]] += drives[e].torque;
+    }
+    if (!vel.empty()) {
+      // the velocity motors' forces, solved together as ODE's motor rows are
+      // with its stops and contacts: their response to each motor's force is
+      // measured through MuJoCo's constrained forward dynamics (a unit force
+      // on each in turn), then projected Gauss-Seidel within the force caps,
+      // then a correction round from where those forces take them
+      const std::size_t n = vel.size();
+      base.assign(D->qfrc_applied, D->qfrc_applied + M->nv);
+      f.assign(n, 0.0);
+      v_free.assign(n, 0.0);
+      a_mat.assign(n * n, 0.0);
+      auto dof_at = [&](std::size_t c) { return dof_of[static_cast<std::size_t>(vel[c])]; };
+      auto forward_with = [&](const std::vector<double>& forces) {
+        std::copy(base.begin(), base.end(), D->qfrc_applied);
+        for (std::size_t c = 0; c < n; ++c) D->qfrc_applied[dof_at(c)] += forces[c];
+        mj_forward(M, D);
+      };
+      forward_with(f);
+      for (std::size_t c = 0; c < n; ++c) v_free[c] = D->qvel[dof_at(c)] + dt * D->qacc[dof_at(c)];
+      for (std::size_t c = 0; c < n; ++c) {
+        probe.assign(n, 0.0);
+        probe[c] = 1;
+        forward_with(probe);
+        for (std::size_t r2 = 0; r2 < n; ++r2)
+          a_mat[r2 * n + c] = D->qvel[dof_at(r2)] + dt * D->qacc[dof_at(r2)] - v_free[r2];
+      }
+      auto solve = [&] {
+        for (int sweep = 0; sweep < 50; ++sweep)
+          for (std::size_t c = 0; c < n; ++c) {
+            const Drive& dr = drives[static_cast<std::size_t>(vel[c])];
+            const double a = a_mat[c * n + c];
+            if (!(a > 1e-12)) continue;
+            double v = v_free[c];
+            for (std::size_t k = 0; k < n; ++k) v += a_mat[c * n + k] * f[k];
+            f[c] = std::clamp(f[c] + (dr.speed - v) / a, -dr.force, dr.force);
+          }
+      };
+      solve();
+      // the correction: the velocities those forces give, against the model's
+      forward_with(f);
+      for (std::size_t c = 0; c < n; ++c) {
+        double model = v_free[c];
+        for (std::size_t k = 0; k < n; ++k) model += a_mat[c * n + k] * f[k];
+        v_free[c] += D->qvel[dof_at(c)] + dt * D->qacc[dof_at(c)] - model;
+      }
+      solve();
+      std::copy(base.begin(), base.end(), D->qfrc_applied);
+      for (std::size_t c = 0; c < n; ++c) D->qfrc_applied[dof_at(c)] += f[c];
+    }
+    mj_step(M, D);
+    bool finite = true;
+    for (int k = 0; k < M->nq; ++k) finite = finite && std::isfinite(D->qpos[k]);
+    if (!finite) {
+      g_warnings = nullptr;
+      return Error{"MuJoCo's simulation blew up at t=" + std::to_string(D->time) + " s"};
+    }
+    mj_kinematics(M, D);  // subtree_com of the state after the step
+    mj_comPos(M, D);
+    const Vec3 c = mj_com();
+    r.mujoco_min_height = std::min(r.mujoco_min_height, c.z);
+    // the joints' angles against ODE's, over the first second
+    if (static_cast<double>(i + 1) * dt <= 1.0 + 1e-9)
+      for (std::size_t k = 0; k < qpos_of.size(); ++k)
+        if (qpos_of[k] >= 0)
+          r.first_second_angle_gap = std::max(r.first_second_angle_gap,
+                                              angle_gap(D->qpos[M->jnt_qposadr[qpos_of[k]]], step_rec.angles[k],
+                                                        M->jnt_type[qpos_of[k]] == mjJNT_SLIDE));
+    if (i == i_from) mj_from = c;
+    if (i == i_to) mj_to = c;
+  }
+  g_warnings = nullptr;
+  mju_user_warning = nullptr;
+  r.warnings = std::move(warnings);
+  r.mujoco = mj_to - mj_from;
+  const Vec3 a = horizontal(r.ode), b = horizontal(r.mujoco);
+  const double la = norm(a), lb = norm(b);
+  r.distance_ratio = la > 0 ? lb / la : 0;
+  r.heading_difference = la > 0 && lb > 0 ? std::acos(std::clamp(dot(a, b) / (la * lb), -1.0, 1.0)) : 0;
+  return r;
+}
+
+}  // namespace bx
