@@ -18,6 +18,8 @@ import { createSparklines } from './sparklines.js';
 import { createSignalsPanel } from './signals_panel.js';
 import { createRunPanel } from './run_panel.js';
 import { createPicker } from './picker.js';
+import { createBrainPanel } from './brain_panel.js';
+import { createPartHover } from './part_hover.js';
 import { bestOf, lineageOf, memberOfReplay, membersById } from './lineage.js';
 import { showInfo } from './info_panel.js';
 import { createPlayer } from './player.js';
@@ -27,17 +29,23 @@ import { fitness, metres, seconds } from './format.js';
 
 /**
  * A viewer of the checked page data `data` ({replays, run}) in the page's
- * elements `ui` ({canvas, stage, hud, cells, info, picker, run, signals, neurons, player}).
+ * elements `ui` ({canvas, stage, hud, cells, info, picker, run, brain, signals, neurons, player};
+ * brain may be missing: no genome and brain panel).
  */
 export function createViewer(ui, data) {
   const stage = createStage(ui.canvas);
   const rig = createCameraRig(ui.canvas);
   const s = { index: -1, entry: null, t: 0, T: 0, playing: false, speed: 1, joints: false, trail: true, flight: true, field: true, radius: 1, throw: null, record: null };
-  let bodies = null, trail = null, flight = null, world = null, sparks = null, signals = null, renderMode = false;
+  let bodies = null, trail = null, flight = null, world = null, sparks = null, signals = null, brain = null, renderMode = false;
+  // the genome and brain panel's tab, kept from one creature to the next
+  // once chosen (null: the panel's choice)
+  let brainTab = null;
   // the scene is drawn only when something changed: software GL is slow, and
   // a paused page should cost nothing
   let dirty = true;
   rig.controls.addEventListener('change', () => (dirty = true));
+  // a part under the pointer in the scene highlights its gene (brain_panel.js)
+  const hover = createPartHover(ui.canvas, () => rig.camera, () => (bodies ? bodies.parts : []), (part) => brain?.focusPart(part));
 
   // panels: choice of creature, the run, the player bar. In a run, the
   // creature shown is a member, chosen as a generation's best (`gen`) or from
@@ -144,6 +152,12 @@ export function createViewer(ui, data) {
     signals?.dispose();
     signals = createSignalsPanel(ui.signals, entry.replay);
     sparks = createSparklines(ui.neurons, entry.replay);
+    // the genome and brain: a highlight there lights the parts up here
+    brain = ui.brain ? createBrainPanel(ui.brain, entry, brainTab, {
+      highlight: (h) => { bodies.highlight(h ? h.parts : null); dirty = true; },
+      tab: (key) => (brainTab = key),
+    }) : null;
+    hover.reset();
     if (run) {
       // a replay chosen by index (a script) names its member here
       if (pick.member?.replay_index !== i) {
@@ -177,6 +191,7 @@ export function createViewer(ui, data) {
     stage.focus(rig.targetAt(s.t), s.radius);
     sparks.setTime(s.t);
     signals.setTime(s.t);
+    brain?.setTime(s.t);
     const res = s.entry.replay.result ?? {};
     // how far: the task's distance (a counter, below), a catapult's
     // projectile's since its release, or, for a task that counts no distance
@@ -226,6 +241,7 @@ export function createViewer(ui, data) {
         if (t > s.T) t = 0;
         setTime(t);
       }
+      hover.update();
       fit();
       if (dirty) draw();
     }
@@ -265,7 +281,8 @@ export function createViewer(ui, data) {
    * is the mean of (the replay is the first); for a catapult, the
    * projectile's centre and whether its flight is drawn; what the scene
    * record draws (record_view.js's state(), or null) and its counters
-   * ([name, value, unit]) at this moment.
+   * ([name, value, unit]) at this moment; the genome and brain panel's
+   * (brain_panel.js's state(), or null).
    */
   function state() {
     const p = bodies.parts[0].position;
@@ -280,6 +297,7 @@ export function createViewer(ui, data) {
       flight: flight ? flight.drawn && s.flight : false,
       scene: world ? world.state() : null,
       counters: sceneAt(s.record, s.t).counters,
+      brain: brain ? brain.state() : null,
     };
   }
 

@@ -8,7 +8,7 @@ import {
   ArrowHelper, EdgesGeometry, Group, LineBasicMaterial, LineSegments, Mesh, MeshBasicMaterial,
   MeshStandardMaterial, SphereGeometry, Vector3,
 } from 'three';
-import { geneColor } from './palette.js';
+import { fadedColor, geneColor } from './palette.js';
 import { recordOf } from './scene_record.js';
 import { shapeGeometry } from './shapes.js';
 import { partPoseAt } from './timeline.js';
@@ -18,6 +18,8 @@ import { createEyes } from './eye_view.js';
 
 /** Colours of a joint's axes: first degree of freedom red, second green. */
 const AXIS_COLORS = [0xd8342c, 0x2f9e44];
+/** Glow of a highlighted part (its material's emissive colour), the others faded (palette.js). */
+export const HIGHLIGHT_GLOW = 0x2a2a2a;
 /** Joint types that use axis2 as well as axis1. */
 const TWO_AXES = new Set(['universal', 'spherical']);
 
@@ -75,7 +77,8 @@ function jointMarker(joint, partSize) {
 /**
  * The creature and props of a replay as one group. `setTime(t)` poses every
  * mesh (and sets each muscle's and eye's activity); `showJoints(on)` toggles
- * the joint markers; `muscles` and `eyes` are muscle_view.js's and
+ * the joint markers; `highlight(parts)` makes those parts (indices; null or
+ * [] for none) glow and fades the others; `muscles` and `eyes` are muscle_view.js's and
  * eye_view.js's views; `dispose()` frees GPU data.
  */
 export function createBodies(replay) {
@@ -83,8 +86,9 @@ export function createBodies(replay) {
   // parts, each with the markers of the joints that attach it to its parent
   // a part the scene record names (a catapult's projectile) in its colour
   const named = new Map(recordOf(replay).parts.map((p) => [p.part, p.color]));
+  const colors = replay.parts.map((p, k) => named.get(k) ?? geneColor(p.gene, p.mirrored));
   const parts = replay.parts.map((p, k) => {
-    const color = named.get(k) ?? geneColor(p.gene, p.mirrored);
+    const color = colors[k];
     const mesh = solid(p.shape, p.size, color);
     group.add(mesh);
     return mesh;
@@ -121,6 +125,19 @@ export function createBodies(replay) {
     },
     showJoints(on) {
       markers.forEach((m) => (m.visible = on));
+    },
+    highlight(list) {
+      const some = list !== null && list !== undefined && list.length > 0;
+      parts.forEach((m, k) => {
+        m.material.color.setHex(some ? fadedColor(colors[k]) : colors[k]);
+        m.material.emissive.setHex(0x000000);
+      });
+      if (!some) return;
+      for (const k of list) {
+        if (!parts[k]) continue;
+        parts[k].material.color.setHex(colors[k]);
+        parts[k].material.emissive.setHex(HIGHLIGHT_GLOW);
+      }
     },
     dispose() {
       group.traverse((o) => {

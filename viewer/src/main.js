@@ -19,7 +19,7 @@ function start() {
     document.title = data.run ? `${data.run.name}, seed ${data.run.seed} · Bestiary` : `${data.replays[0].label} · Bestiary`;
     const viewer = createViewer({
       canvas: $('view'), stage: $('stage'), hud: $('hud'), cells: $('cells'), info: $('info'), picker: $('picker'),
-      run: $('run'), signals: $('signals'), neurons: $('neurons'), player: $('player'),
+      run: $('run'), brain: $('brain'), signals: $('signals'), neurons: $('neurons'), player: $('player'),
     }, data);
     window.bestiary = Object.assign(viewer, { ready: true, error: null });
     // served by `bestiary show RUN --watch`: follow the run

@@ -28,6 +28,11 @@ export function geneColor(gene, mirrored = false) {
   return mirrored ? mix(c, 0xffffff, 0.35) : c;
 }
 
+/** A colour faded toward the ground's grey: a part left out of a highlight. */
+export function fadedColor(c) {
+  return mix(c, 0xd5d9dd, 0.65);
+}
+
 /**
  * Colour of a catapult's projectile: a warm yellow far from every gene's
  * colour (the nearest, gene 1's orange, is on most bodies), so the

@@ -7,8 +7,10 @@
 // joint angles; a river crossing's scene record (makeRiver); a lessin2015
 // creature with two muscles and an eye (makeLessin); fight-or-flight
 // targets as the scene record's props (makeTargets); a light task's light,
-// the scene record's point, 3 m away (makeLight); and runs, a plain one
-// (makeRun) and one of several stages (makeStagedRun).
+// the scene record's point, 3 m away (makeLight); runs, a plain one
+// (makeRun) and one of several stages (makeStagedRun); and a graph genome
+// (makeGenome) with a creature grown from it whose replay holds its brain's
+// wires (makeWired).
 
 /** Quaternion [w, x, y, z] for `angle` radians about z. */
 export function aboutZ(angle) {
@@ -283,4 +285,80 @@ export function makeStagedRun() {
       { name: 'fight', uses: ['face'], group: '', first_gen: null, generations: 0, best: null },
     ],
   };
+}
+
+/**
+ * A graph genome (parsed), as docs/genome-format.md writes it: gene 0 a box
+ * of recursive limit 3 with a sum neuron and a joint-angle sensor, its edge
+ * 0 to itself (recursion, scale 0.8), edge 1 to gene 1 reflected across y,
+ * edge 2 to gene 1 terminal-only (and no `reflect` written); gene 1 a
+ * capsule with two neurons, a contact sensor and an effector; one global
+ * neuron.
+ */
+export function makeGenome() {
+  return {
+    format: 'bestiary-genome', version: 1, dialect: 'sims1994',
+    global_neurons: [{ fn: 'oscillate-wave', params: { freq: 1 } }],
+    nodes: [
+      {
+        shape: 'box', size: [0.3, 0.2, 0.1], recursive_limit: 3,
+        neurons: [{ fn: 'sum', inputs: [{ from: 'global', neuron: 0 }] }],
+        sensors: [{ type: 'joint_angle', dof: 0 }],
+        edges: [
+          { to: 0, face: '+x', scale: 0.8, reflect: [], terminal_only: false },
+          { to: 1, face: '+y', reflect: ['y'] },
+          { to: 1, face: '+x', terminal_only: true },
+        ],
+      },
+      {
+        shape: 'capsule', size: [0.3, 0.05, 0.05],
+        neurons: [{ fn: 'sin' }, { fn: 'sum' }],
+        sensors: [{ type: 'contact', face: '-z' }],
+        effectors: [{ dof: 0 }],
+      },
+    ],
+  };
+}
+
+/**
+ * A replay (makeReplay, 2 s) of a creature of four parts holding its brain's
+ * wires: parts 0 and 1 of gene 0 (1 by recursion), 2 and 3 of gene 1 (3
+ * mirrored) on part 1, by joints 0 (0-1), 1 (1-2) and 2 (1-3). Sensors: 0 the
+ * angle of joint 0 (part 1), 1 and 2 contacts of parts 2 and 3. Neurons: 0
+ * global; 1 on part 0 reading neuron 0 (slot 3); 2 on part 2 reading sensor 1
+ * (weight -2); 3 on part 3 reading sensor 2 and, gated by neuron 0 (slot 3),
+ * neuron 2 (slot 5). Effectors: 0 drives joint 1 (part 2) from neuron 2, 1
+ * joint 2 (part 3) from neuron 3, 2 joint 0 (part 1) from sensor 0 and from
+ * slot 99, which the brain lacks. Neuron 1 reaches 3 once (at 1 s).
+ */
+export function makeWired() {
+  const r = makeReplay();
+  const box = (gene, parent, mirrored = false) => ({ shape: gene ? 'capsule' : 'box', size: [0.3, 0.1, 0.1], mass: 1, gene, parent, mirrored });
+  r.parts = [box(0, -1), box(0, 0), box(1, 1), box(1, 1, true)];
+  const hinge = (parent, child) => ({ type: 'hinge', parent, child, anchor: [-0.15, 0, 0], axis1: [0, 0, 1], axis2: [0, 1, 0], limits: [[-1, 1]] });
+  r.joints = [hinge(0, 1), hinge(1, 2), hinge(1, 3)];
+  r.sensors = [
+    { type: 'joint_angle', part: 1, joint: 0, dof: 0 },
+    { type: 'contact', part: 2, face: '-z' },
+    { type: 'contact', part: 3, face: '-z' },
+  ];
+  r.neurons = [
+    { part: -1, fn: 'oscillate-wave', bias: 0, inputs: [] },
+    { part: 0, fn: 'sum', bias: 0, inputs: [[3, 0.5]] },
+    { part: 2, fn: 'sin', bias: 0, inputs: [[1, -2]] },
+    { part: 3, fn: 'sin', bias: 0.25, inputs: [[2, -2], [5, 1, 3]] },
+  ];
+  r.effectors = [
+    { joint: 1, dof: 0, bias: 0, inputs: [[5, 1.5]] },
+    { joint: 2, dof: 0, bias: 0, inputs: [[6, 1.5]] },
+    { joint: 0, dof: 0, bias: 0, inputs: [[0, 0.25], [99, 1]] },
+  ];
+  r.frames.forEach((f, k) => {
+    f.poses = [f.poses[0], f.poses[1], f.poses[1], f.poses[1]];
+    f.neurons = [Math.sin(f.t), k === 10 ? 3 : 0.5, -0.5, 0.25];
+    f.sensors = [0.1, 1, -1];
+    f.effectors = [0.5, -0.5, 0];
+    f.joint_angles = [[0], [0], [0]];
+  });
+  return r;
 }
