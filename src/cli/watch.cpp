@@ -32,6 +32,7 @@
 #include "eval/evaluate.h"
 #include "eval/task_table.h"
 #include "genome/encapsulate.h"
+#include "genome/genotype_file.h"
 #include "io/config.h"
 #include "io/fitness_plot.h"
 #include "io/html_view.h"
@@ -96,7 +97,7 @@ Result<std::vector<Watched>> simulate(const Subject& c, int trials = 0) {
                                    : fs::path(c.label).stem().string();
   std::vector<Watched> out;
   for (std::size_t k = 0; k < results.size(); ++k)
-    out.push_back({{label, replay_to_string(m, replays[k], results[k], info)}, results[k]});
+    out.push_back({{label, replay_to_string(m, replays[k], results[k], info), genotype_text(*c.genotype)}, results[k]});
   return out;
 }
 
