@@ -84,6 +84,9 @@ void on_warning(const char* msg) {
   if (g_warnings && g_warnings->size() < 8) g_warnings->push_back(msg);
 }
 
+// how many times the velocity motors' forces are corrected in a step
+constexpr int kCorrections = 4;
+
 Vec3 horizontal(Vec3 v) { return {v.x, v.y, 0}; }
 
 // How far apart two positions of a degree of freedom are: ODE reads a hinge's
@@ -92,30 +95,60 @@ double angle_gap(double a, double b, bool linear) {
   return linear ? std::abs(a - b) : std::abs(std::remainder(a - b, 2 * kPi));
 }
 
-}  // namespace
+// What the ODE evaluation left for the replay.
+struct OdeRun {
+  SimConfig cfg;  // as evaluated (the seed's motor lag drawn)
+  std::vector<Recorded> rec;
+  Pose root0;
+  std::vector<double> angles0;
+  Vec3 com0;
+  double from = 0, to = 0;  // the scored span (s)
+  long i_from = -1, i_to = -1;  // the steps at its ends (-1: the start)
+  Vec3 displacement;
+};
 
-Result<CrossSimReport> crosscheck_mujoco(const CreatureModel& m, const ControllerModel& controller,
-                                         const SimConfig& given, std::uint64_t seed, double seconds) {
-  for (const EffectorModel& em : m.effectors)
-    if (em.muscle >= 0 || given.motor.model == MotorModel::Muscle)
-      return Error{"its effectors are muscles (lessin2015), which the MJCF export does not write yet"};
+// How MuJoCo's contacts are set for one replay (docs/export.md).
+struct MujocoContacts {
+  const char* name;
+  bool stiffest = false;  // solref's time constant at 2 steps (default 0.02 s)
+  bool elliptic = false;  // the elliptic friction cone (default pyramidal)
+};
+constexpr MujocoContacts kMujocoContacts[] = {
+    {"as exported", false, false},
+    {"stiffest", true, false},
+    {"elliptic cone", false, true},
+    {"stiffest, elliptic cone", true, true},
+};
 
-  // ODE, closed loop, as evaluate_once runs the first trial
+// What one MuJoCo replay did.
+struct MujocoRun {
+  Vec3 displacement;  // of the centre of mass over the scored span
+  double min_height = 0;
+  double first_second_angle_gap = 0;
+  std::vector<std::string> warnings;
+};
+
+// ODE, closed loop, as evaluate_once runs the first trial: every step's
+// motor commands, and the scored span
+Result<OdeRun> run_ode(const CreatureModel& m, const ControllerModel& controller, const SimConfig& given,
+                       std::uint64_t seed, double seconds) {
+  OdeRun o;
+
   reseed_physics(seed);
   const SeedDraw draw = seed_draw(given, seed);
-  SimConfig cfg = given;
+  SimConfig& cfg = o.cfg;
+  cfg = given;
   cfg.motor.response_time = draw.response_time;
   auto task = make_task(m, cfg, seed, 0);
   if (!task) return Error{task.error()};
   EvalState s(m, controller, cfg, std::move(*task), {draw.yaw, draw.lift});
-  const Pose root0 = s.world.part_pose(0);
-  std::vector<double> angles0;
+  o.root0 = s.world.part_pose(0);
   for (int j = 0; j < static_cast<int>(m.joints.size()); ++j)
-    for (int k = 0; k < joint_dofs(m.joints[j].type); ++k) angles0.push_back(s.world.joint_position(j, k));
-  const Vec3 com0 = s.world.centre_of_mass();
+    for (int k = 0; k < joint_dofs(m.joints[j].type); ++k) o.angles0.push_back(s.world.joint_position(j, k));
+  o.com0 = s.world.centre_of_mass();
   const long max_steps =
       seconds > 0 ? static_cast<long>(std::llround(seconds / cfg.physics.dt)) : s.task->max_steps();
-  std::vector<Recorded> rec;
+  std::vector<Recorded>& rec = o.rec;
   rec.reserve(static_cast<std::size_t>(std::min(max_steps, 1L << 22)));
   while (s.physics_steps < max_steps && (seconds > 0 || !s.task->done())) {
     if (!step(m, cfg, s)) return Error{"it failed in ODE: " + s.failure};
@@ -131,24 +164,32 @@ Result<CrossSimReport> crosscheck_mujoco(const CreatureModel& m, const Controlle
   // the scored span, as the task marks it
   SceneRecord scene;
   s.task->record(WorldObservation(m, s.world, s.front), scene);
-  CrossSimReport r;
-  r.steps = static_cast<long>(rec.size());
-  r.seconds = static_cast<double>(r.steps) * cfg.physics.dt;
-  r.from = 0;
-  r.to = r.seconds;
+  const long steps = static_cast<long>(rec.size());
+  o.from = 0;
+  o.to = static_cast<double>(steps) * cfg.physics.dt;
   for (const SceneMarker& mk : scene.markers) {
-    if (mk.name == kScoredFrom) r.from = mk.t;
-    if (mk.name == kScoredTo) r.to = mk.t;
+    if (mk.name == kScoredFrom) o.from = mk.t;
+    if (mk.name == kScoredTo) o.to = mk.t;
   }
   auto index_at = [&](double t) {  // the step whose end is at or after t (-1: the start)
     const long k = static_cast<long>(std::ceil(t / cfg.physics.dt - 1e-9)) - 1;
-    return std::clamp(k, -1L, r.steps - 1);
+    return std::clamp(k, -1L, steps - 1);
   };
-  const long i_from = index_at(r.from), i_to = index_at(r.to);
-  auto ode_com = [&](long i) { return i < 0 ? com0 : rec[static_cast<std::size_t>(i)].com; };
-  r.ode = ode_com(i_to) - ode_com(i_from);
+  o.i_from = index_at(o.from);
+  o.i_to = index_at(o.to);
+  auto ode_com = [&](long i) { return i < 0 ? o.com0 : rec[static_cast<std::size_t>(i)].com; };
+  o.displacement = ode_com(o.i_to) - ode_com(o.i_from);
+  return o;
+}
 
-  // MuJoCo: the exported body, its actuators silenced (the motors are ours)
+
+// MuJoCo, open loop: the exported body, its actuators silenced (the motors
+// are ours), its contacts as `contacts` says
+Result<MujocoRun> run_mujoco(const CreatureModel& m, const OdeRun& o, const MujocoContacts& contacts) {
+  const SimConfig& cfg = o.cfg;
+  const std::vector<Recorded>& rec = o.rec;
+  const long steps = static_cast<long>(rec.size());
+  MujocoRun r;
   char err[1000] = "";
   std::string xml = creature_mjcf(m, cfg, "creature");
   std::unique_ptr<mjVFS> vfs(new mjVFS);
@@ -164,12 +205,15 @@ Result<CrossSimReport> crosscheck_mujoco(const CreatureModel& m, const Controlle
     for (int k = 0; k < mjNGAIN; ++k) M->actuator_gainprm[a * mjNGAIN + k] = 0;
     for (int k = 0; k < mjNBIAS; ++k) M->actuator_biasprm[a * mjNBIAS + k] = 0;
   }
+  if (contacts.stiffest)  // the shortest time constant MuJoCo allows (2 steps), nearer ODE's hard contacts
+    for (int g = 0; g < M->ngeom; ++g) M->geom_solref[2 * g] = 2 * cfg.physics.dt;
+  if (contacts.elliptic) M->opt.cone = mjCONE_ELLIPTIC;
   M->opt.integrator = mjINT_EULER;  // implicit in the joints' damping: a PD's damper, as ODE's
   std::unique_ptr<mjData, MjDeleter> dd(mj_makeData(M));
   mjData* D = dd.get();
   // ODE's start: the root's pose, every joint's position
-  const Quat q0 = to_quat(root0.R);
-  const double start[7] = {root0.p.x, root0.p.y, root0.p.z, q0.w, q0.x, q0.y, q0.z};
+  const Quat q0 = to_quat(o.root0.R);
+  const double start[7] = {o.root0.p.x, o.root0.p.y, o.root0.p.z, q0.w, q0.x, q0.y, q0.z};
   std::copy(start, start + 7, D->qpos);
   // each effector's degree of freedom in MuJoCo, and each joint dof's
   std::vector<int> dof_of(m.effectors.size(), -1), qpos_of;
@@ -179,7 +223,7 @@ Result<CrossSimReport> crosscheck_mujoco(const CreatureModel& m, const Controlle
       for (int k = 0; k < joint_dofs(m.joints[j].type); ++k, ++a) {
         const int id = mj_name2id(M, mjOBJ_JOINT, mjcf_joint_name(j, k).c_str());
         qpos_of.push_back(id);
-        if (id >= 0) D->qpos[M->jnt_qposadr[id]] = angles0[a];
+        if (id >= 0) D->qpos[M->jnt_qposadr[id]] = o.angles0[a];
       }
     for (std::size_t e = 0; e < m.effectors.size(); ++e) {
       const EffectorModel& em = m.effectors[e];
@@ -194,16 +238,15 @@ Result<CrossSimReport> crosscheck_mujoco(const CreatureModel& m, const Controlle
   auto mj_com = [&] { return Vec3{D->subtree_com[3], D->subtree_com[4], D->subtree_com[5]}; };
   const Vec3 mj_com0 = mj_com();
   Vec3 mj_from = mj_com0, mj_to = mj_com0;
-  if (i_from < 0) mj_from = mj_com0;
-  r.mujoco_min_height = mj_com0.z;
+  r.min_height = mj_com0.z;
 
   const double dt = cfg.physics.dt;
   const double lag = motor_lag_share(dt, cfg.motor.response_time);
   std::vector<double> lagged(m.effectors.size(), 0.0);
   std::vector<Drive> drives(m.effectors.size());
   std::vector<int> vel;  // effectors driven as velocity motors this step
-  std::vector<double> a_mat, f, v_free, base, probe;
-  for (long i = 0; i < r.steps; ++i) {
+  std::vector<double> a_mat, f, v_free, base, probe, f_prev, v_prev;
+  for (long i = 0; i < steps; ++i) {
     const Recorded& step_rec = rec[static_cast<std::size_t>(i)];
     // the motors' laws, after their lag, then any brake (step.cpp's order)
     for (std::size_t e = 0; e < m.effectors.size(); ++e) {
@@ -237,6 +280,7 @@ Result<CrossSimReport> crosscheck_mujoco(const CreatureModel& m, const Controlle
       f.assign(n, 0.0);
       v_free.assign(n, 0.0);
       a_mat.assign(n * n, 0.0);
+      v_prev.assign(n, 0.0);
       auto dof_at = [&](std::size_t c) { return dof_of[static_cast<std::size_t>(vel[c])]; };
       auto forward_with = [&](const std::vector<double>& forces) {
         std::copy(base.begin(), base.end(), D->qfrc_applied);
@@ -264,14 +308,27 @@ Result<CrossSimReport> crosscheck_mujoco(const CreatureModel& m, const Controlle
           }
       };
       solve();
-      // the correction: the velocities those forces give, against the model's
-      forward_with(f);
-      for (std::size_t c = 0; c < n; ++c) {
-        double model = v_free[c];
-        for (std::size_t k = 0; k < n; ++k) model += a_mat[c * n + k] * f[k];
-        v_free[c] += D->qvel[dof_at(c)] + dt * D->qacc[dof_at(c)] - model;
+      // corrections: the velocities the forces give, the linear model moved to
+      // them, each motor's own response re-measured from the last two rounds
+      // (a secant: it grows once a contact's friction gives way, which the
+      // unit forces did not show)
+      for (int round = 0; round < kCorrections; ++round) {
+        forward_with(f);
+        for (std::size_t c = 0; c < n; ++c) {
+          const double v = D->qvel[dof_at(c)] + dt * D->qacc[dof_at(c)];
+          if (round > 0 && std::abs(f[c] - f_prev[c]) > 1e-12) {
+            const double slope = (v - v_prev[c]) / (f[c] - f_prev[c]);
+            if (slope > a_mat[c * n + c]) a_mat[c * n + c] = slope;
+          }
+          v_prev[c] = v;
+        }
+        for (std::size_t c = 0; c < n; ++c) {
+          v_free[c] = v_prev[c];
+          for (std::size_t k = 0; k < n; ++k) v_free[c] -= a_mat[c * n + k] * f[k];
+        }
+        f_prev = f;
+        solve();
       }
-      solve();
       std::copy(base.begin(), base.end(), D->qfrc_applied);
       for (std::size_t c = 0; c < n; ++c) D->qfrc_applied[dof_at(c)] += f[c];
     }
@@ -285,7 +342,7 @@ Result<CrossSimReport> crosscheck_mujoco(const CreatureModel& m, const Controlle
     mj_kinematics(M, D);  // subtree_com of the state after the step
     mj_comPos(M, D);
     const Vec3 c = mj_com();
-    r.mujoco_min_height = std::min(r.mujoco_min_height, c.z);
+    r.min_height = std::min(r.min_height, c.z);
     // the joints' angles against ODE's, over the first second
     if (static_cast<double>(i + 1) * dt <= 1.0 + 1e-9)
       for (std::size_t k = 0; k < qpos_of.size(); ++k)
@@ -293,17 +350,58 @@ Result<CrossSimReport> crosscheck_mujoco(const CreatureModel& m, const Controlle
           r.first_second_angle_gap = std::max(r.first_second_angle_gap,
                                               angle_gap(D->qpos[M->jnt_qposadr[qpos_of[k]]], step_rec.angles[k],
                                                         M->jnt_type[qpos_of[k]] == mjJNT_SLIDE));
-    if (i == i_from) mj_from = c;
-    if (i == i_to) mj_to = c;
+    if (i == o.i_from) mj_from = c;
+    if (i == o.i_to) mj_to = c;
   }
   g_warnings = nullptr;
   mju_user_warning = nullptr;
   r.warnings = std::move(warnings);
-  r.mujoco = mj_to - mj_from;
-  const Vec3 a = horizontal(r.ode), b = horizontal(r.mujoco);
-  const double la = norm(a), lb = norm(b);
-  r.distance_ratio = la > 0 ? lb / la : 0;
-  r.heading_difference = la > 0 && lb > 0 ? std::acos(std::clamp(dot(a, b) / (la * lb), -1.0, 1.0)) : 0;
+  r.displacement = mj_to - mj_from;
+  return r;
+}
+
+}  // namespace
+
+Result<CrossSimReport> crosscheck_mujoco(const CreatureModel& m, const ControllerModel& controller,
+                                         const SimConfig& cfg, std::uint64_t seed, double seconds) {
+  for (const EffectorModel& em : m.effectors)
+    if (em.muscle >= 0 || cfg.motor.model == MotorModel::Muscle)
+      return Error{"its effectors are muscles (lessin2015), which the MJCF export does not write yet"};
+  auto o = run_ode(m, controller, cfg, seed, seconds);
+  if (!o) return Error{o.error()};
+  CrossSimReport r;
+  r.steps = static_cast<long>(o->rec.size());
+  r.seconds = static_cast<double>(r.steps) * o->cfg.physics.dt;
+  r.from = o->from;
+  r.to = o->to;
+  r.ode = o->displacement;
+  const Vec3 a = horizontal(r.ode);
+  const double la = norm(a);
+  std::vector<double> headings, ratios;
+  for (const MujocoContacts& contacts : kMujocoContacts) {
+    auto run = run_mujoco(m, *o, contacts);
+    if (!run) return Error{std::string(contacts.name) + ": " + run.error()};
+    CrossSimVariant v;
+    v.name = contacts.name;
+    v.displacement = run->displacement;
+    v.min_height = run->min_height;
+    v.first_second_angle_gap = run->first_second_angle_gap;
+    v.warnings = std::move(run->warnings);
+    const Vec3 b = horizontal(v.displacement);
+    const double lb = norm(b);
+    v.distance_ratio = la > 0 ? lb / la : 0;
+    v.heading_difference = la > 0 && lb > 0 ? std::acos(std::clamp(dot(a, b) / (la * lb), -1.0, 1.0)) : 0;
+    headings.push_back(v.heading_difference);
+    ratios.push_back(v.distance_ratio);
+    r.variants.push_back(std::move(v));
+  }
+  auto median = [](std::vector<double> x) {
+    std::sort(x.begin(), x.end());
+    const std::size_t n = x.size();
+    return n % 2 ? x[n / 2] : 0.5 * (x[n / 2 - 1] + x[n / 2]);
+  };
+  r.heading_difference = median(headings);
+  r.distance_ratio = median(ratios);
   return r;
 }
 
