@@ -42,6 +42,13 @@ For a lessin2015 locomotion run also its best's speed (the scored one: the
 lesser of the measured time's halves, task.windows), efficiency and muscle
 work over the measured time (the task's named metrics).
 
+For every run but the river crossing's also `bestiary crosscheck` of its
+best (docs/export.md): its ODE evaluation's motor commands replayed open loop
+in MuJoCo under four contact settings, each as its distance's ratio to ODE's
+and how many degrees its heading is off, their medians and the verdict (the
+same way: within 45 degrees and 0.5-2x); a creature MuJoCo cannot replay
+(muscles, a throw's projectile) says why.
+
 For a run of several stages (an ESP syllabus) instead: per stage, its
 generations, its best in its first and last generation, and `bestiary check`
 of that last best on its own stage's task.
@@ -151,6 +158,27 @@ def check_row(preset, seed, run_dir, check_set=()):
             f"{cell('dt/4')} | {cell('lag')} | {cell('half rate')} | {cell('clamped')} | {cell('held')} | "
             f"{sustained} | {len(active)}/{len(c['effector_sd'])} | {hz or '-'} | {100 * c['max_joint_gap']:.1f} | "
             f"{verdict} |")
+
+
+def cross_row(preset, seed, run_dir):
+    """`bestiary crosscheck` of the run's best: its motor commands replayed open
+    loop in MuJoCo under four contact settings, against ODE (docs/export.md)."""
+    r = sh(["crosscheck", run_dir, "--json"])
+    if r.returncode != 0:
+        why = r.stderr.strip().split(": cannot replay it in MuJoCo: ")[-1]
+        return f"| {preset} | {seed} | - | - | - | - | - | - | not replayed: {why} |"
+    c = json.loads(r.stdout)
+    ode = math.hypot(c["ode"][0], c["ode"][1])
+    heading = math.degrees(math.atan2(c["ode"][1], c["ode"][0]))
+    cells = [f"{v['distance_ratio']:.2f} / {v['heading_difference_deg']:.0f}" for v in c["variants"]]
+    verdict = ("moves less than a tenth of its length" if not c["moved"] else
+               "the same way" if c["agrees"] else "NOT the same way")
+    return (f"| {preset} | {seed} | {ode:.2f} m at {heading:.0f} | " + " | ".join(cells) +
+            f" | {c['distance_ratio']:.2f} / {c['heading_difference_deg']:.0f} | {verdict} |")
+
+
+CROSS_HEADER = ("\n| preset | seed | ODE: distance at heading (deg) | MuJoCo as exported: ratio / degrees off "
+                "| stiffest | elliptic cone | stiffest, elliptic cone | median | MuJoCo |\n|" + "---|" * 9)
 
 
 def stage_rows(preset, seed, run_dir, staged, check_set=()):
@@ -394,7 +422,7 @@ def main():
                     help="a [check] key for `bestiary check` (repeatable), e.g. check.converge_seeds=5 "
                          "for runs made before their preset set it")
     a = ap.parse_args()
-    rows, throws, checks, rivers, speeds, syllabus = [], [], [], [], [], []
+    rows, throws, checks, rivers, speeds, syllabus, crosses = [], [], [], [], [], [], []
     for spec in a.runs:
         preset, _, s = spec.partition(":")
         for seed in seeds(s or "1"):
@@ -414,6 +442,9 @@ def main():
                 continue
             checks.append(check_row(preset, seed, run_dir, a.check_set))
             print(checks[-1], flush=True)
+            if not is_river(run_dir):
+                crosses.append(cross_row(preset, seed, run_dir))
+                print(crosses[-1], flush=True)
             if is_river(run_dir):
                 rivers.append(river_row(preset, seed, run_dir))
                 print(rivers[-1][0], flush=True)
@@ -444,6 +475,9 @@ def main():
               "| their frequencies (Hz) | largest joint gap (cm) | check |")
         print("|" + "---|" * 15)
         print("\n".join(checks))
+    if crosses:
+        print(CROSS_HEADER)
+        print("\n".join(crosses))
     if syllabus:
         print("\n| preset | seed | stage | generations | best, first generation | best, last | its id "
               "| other seeds (median) | check |")
