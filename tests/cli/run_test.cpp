@@ -368,7 +368,7 @@ TEST_F(RunCli, BadInputGivesOneErrorLineAndWritesNothing) {
       {"run " + cfg + " --out " + out.string() + " --frob",
        "The following argument was not expected: --frob (see " BESTIARY_BINARY " run --help)"},
       {"runn " + cfg, "runn: no such command (did you mean \"run\"?); the commands: simulate, config, run, resume, export, verify, "
-                      "best, presets, show, render, plot, check"},
+                      "best, presets, show, render, plot, check, crosscheck"},
       {"run quikc --out " + out.string(), "quikc: no such config file, and no preset of that name (did you mean "
                                           "\"quick\"?) (`" BESTIARY_BINARY " presets` lists them)"},
       {"run " + cfg + " --out " + out.string() + " --set evolution.populaton=5",
