@@ -51,6 +51,12 @@ std::string mjcf_joint_name(int joint, int dof) {
   return jn;
 }
 
+std::string mjcf_muscle_name(int muscle) {
+  std::string mn = "m";  // in steps, as mjcf_joint_name
+  mn += std::to_string(muscle);
+  return mn;
+}
+
 std::string creature_mjcf(const CreatureModel& m, const SimConfig& cfg, const std::string& name, MjcfNotes* notes) {
   MjcfNotes local;
   MjcfNotes& n = notes ? *notes : local;
@@ -114,11 +120,33 @@ std::string creature_mjcf(const CreatureModel& m, const SimConfig& cfg, const st
       }
     }
     x += in + geom(p, i) + "\n";
+    // the ends of the muscles this part holds (lessin2015), in its frame
+    for (int k = 0; k < static_cast<int>(m.muscles.size()); ++k) {
+      const MuscleModel& mm = m.muscles[k];
+      for (int end = 0; end < 2; ++end)
+        if ((end == 0 ? mm.part_a : mm.part_b) == i) {
+          const Vec3 at = p.pose.R.transposed() * ((end == 0 ? mm.anchor_a : mm.anchor_b) - p.pose.p);
+          x += in + "<site name=\"" + mjcf_muscle_name(k) + (end == 0 ? "a" : "b") + "\" pos=\"" + vec(at) + "\"/>\n";
+        }
+    }
     for (int c : children[i]) self_fn(self_fn, c, in);
     x += indent + "</body>\n";
   };
   body(body, 0, "    ");
   x += "  </worldbody>\n";
+  // each muscle a spring between its two ends: a spatial tendon whose
+  // stiffness is its activation (0-1) times its strength, 0 at rest (a
+  // simulator sets it each step), its damper motor.muscle_damping
+  if (!m.muscles.empty()) {
+    x += "  <tendon>\n";
+    for (int k = 0; k < static_cast<int>(m.muscles.size()); ++k) {
+      const std::string mn = mjcf_muscle_name(k);
+      x += "    <spatial name=\"" + mn + "\" stiffness=\"0\" damping=\"" + num(motor.muscle_damping) +
+           "\" springlength=\"" + num(m.muscles[k].rest_length) + "\">\n      <site site=\"" + mn +
+           "a\"/>\n      <site site=\"" + mn + "b\"/>\n    </spatial>\n";
+    }
+    x += "  </tendon>\n";
+  }
 
   // the actuators: one per effector on its joint's degree of freedom
   std::string acts;
@@ -157,8 +185,8 @@ std::string creature_mjcf(const CreatureModel& m, const SimConfig& cfg, const st
   x += "</mujoco>\n";
 
   if (muscles > 0)
-    n.lines.push_back(std::to_string(muscles) + " muscle effectors not exported (MJCF muscles act along tendons: "
-                      "not written yet); the body and joints are");
+    n.lines.push_back(std::to_string(muscles) + " muscles as spatial tendons \"m<k>\" of stiffness 0: a muscle's "
+                      "stiffness is its activation (0-1) times its strength (N/m); set tendon_stiffness each step");
   if (motor.model == MotorModel::Servo)
     n.lines.push_back("servo motors as velocity actuators: control = target speed (rad/s), kv = the force cap");
   if (motor.model == MotorModel::Saturation)

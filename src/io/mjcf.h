@@ -26,12 +26,18 @@ struct MjcfNotes {
 /// is the negated one), its range the joint's limits; each effector an
 /// actuator "e<index>" on its joint (cfg.motor.model: torque and saturation
 /// a motor of the torque at signal 1, servo a velocity actuator, pd a
-/// position actuator with the joint's damping kd; muscles are not exported,
-/// which `notes` says).
+/// position actuator with the joint's damping kd); each muscle (lessin2015) a
+/// spatial tendon "m<k>" between sites on its two parts, its damping
+/// motor.muscle_damping, its spring length the muscle's rest length, its
+/// stiffness 0 (its activation times its strength, which a simulator sets
+/// each step: `notes` says so).
 std::string creature_mjcf(const CreatureModel& m, const SimConfig& cfg, const std::string& name,
                           MjcfNotes* notes = nullptr);
 
 /// The MuJoCo joint creature_mjcf names for degree of freedom `dof` of joint `joint`.
 std::string mjcf_joint_name(int joint, int dof);
+/// The spatial tendon creature_mjcf writes for muscle `muscle` (its end sites
+/// are the name with "a" and "b").
+std::string mjcf_muscle_name(int muscle);
 
 }  // namespace bx

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -208,7 +209,10 @@ Result<MujocoRun> run_mujoco(const CreatureModel& m, const OdeRun& o, const Mujo
   if (contacts.stiffest)  // the shortest time constant MuJoCo allows (2 steps), nearer ODE's hard contacts
     for (int g = 0; g < M->ngeom; ++g) M->geom_solref[2 * g] = 2 * cfg.physics.dt;
   if (contacts.elliptic) M->opt.cone = mjCONE_ELLIPTIC;
-  M->opt.integrator = mjINT_EULER;  // implicit in the joints' damping: a PD's damper, as ODE's
+  // implicit in the joints' damping (a PD's damper, as ODE's motor row), and
+  // with muscles in the tendons' too (a muscle's damper: ODE's is a soft
+  // constraint, implicit)
+  M->opt.integrator = m.muscles.empty() ? mjINT_EULER : mjINT_IMPLICIT;
   std::unique_ptr<mjData, MjDeleter> dd(mj_makeData(M));
   mjData* D = dd.get();
   // ODE's start: the root's pose, every joint's position
@@ -227,10 +231,18 @@ Result<MujocoRun> run_mujoco(const CreatureModel& m, const OdeRun& o, const Mujo
       }
     for (std::size_t e = 0; e < m.effectors.size(); ++e) {
       const EffectorModel& em = m.effectors[e];
+      if (em.muscle >= 0) continue;  // a muscle's tendon, below
       const int id = mj_name2id(M, mjOBJ_JOINT, mjcf_joint_name(em.joint, em.dof).c_str());
       if (id >= 0) dof_of[e] = M->jnt_dofadr[id];
     }
   }
+  // each muscle's tendon, and where a brake holds it (NaN: not held)
+  std::vector<int> tendon_of(m.muscles.size(), -1);
+  for (std::size_t k = 0; k < m.muscles.size(); ++k) {
+    tendon_of[k] = mj_name2id(M, mjOBJ_TENDON, mjcf_muscle_name(static_cast<int>(k)).c_str());
+    if (tendon_of[k] < 0) return Error{"the exported body lacks muscle " + std::to_string(k) + "'s tendon"};
+  }
+  std::vector<double> muscle_hold(m.muscles.size(), std::numeric_limits<double>::quiet_NaN());
   std::vector<std::string> warnings;
   g_warnings = &warnings;
   mju_user_warning = on_warning;
@@ -252,6 +264,29 @@ Result<MujocoRun> run_mujoco(const CreatureModel& m, const OdeRun& o, const Mujo
     for (std::size_t e = 0; e < m.effectors.size(); ++e) {
       double sig = step_rec.signals[e];
       if (lag > 0) sig = lagged[e] += lag * (sig - lagged[e]);
+      if (const int k = m.effectors[e].muscle; k >= 0) {
+        // a muscle (physics/actuators.cpp's row): a spring of its activation
+        // times its strength toward its rest length; braked, held at its
+        // length when the brake began with the brake's share of its strength
+        const auto ku = static_cast<std::size_t>(k);
+        const int t = tendon_of[ku];
+        const MuscleModel& mm = m.muscles[ku];
+        const double share = step_rec.motors == EvalState::Motors::Held ? 1
+                             : step_rec.motors == EvalState::Motors::Off ? cfg.motor.off_brake
+                                                                          : 0;
+        if (share > 0) {
+          if (std::isnan(muscle_hold[ku])) muscle_hold[ku] = D->ten_length[t];
+          M->tendon_lengthspring[t] = muscle_hold[ku];
+          M->tendon_stiffness[t] = share * mm.strength;
+        } else {
+          muscle_hold[ku] = std::numeric_limits<double>::quiet_NaN();
+          M->tendon_lengthspring[t] = mm.rest_length;
+          M->tendon_stiffness[t] = std::clamp(sig, 0.0, 1.0) * mm.strength;
+        }
+        M->tendon_damping[t] = cfg.motor.muscle_damping;
+        drives[e] = Drive{};
+        continue;
+      }
       const int dof = dof_of[e];
       const double position = dof >= 0 ? D->qpos[M->jnt_qposadr[M->dof_jntid[dof]]] : 0;
       drives[e] = drive(m, cfg.motor, m.effectors[e], sig, position);
@@ -364,9 +399,6 @@ Result<MujocoRun> run_mujoco(const CreatureModel& m, const OdeRun& o, const Mujo
 
 Result<CrossSimReport> crosscheck_mujoco(const CreatureModel& m, const ControllerModel& controller,
                                          const SimConfig& cfg, std::uint64_t seed, double seconds) {
-  for (const EffectorModel& em : m.effectors)
-    if (em.muscle >= 0 || cfg.motor.model == MotorModel::Muscle)
-      return Error{"its effectors are muscles (lessin2015), which the MJCF export does not write yet"};
   auto o = run_ode(m, controller, cfg, seed, seconds);
   if (!o) return Error{o.error()};
   CrossSimReport r;

@@ -57,10 +57,11 @@ struct CrossSimReport {
 /// motor with a force cap (servo, saturation, a torque's no-load speed, a
 /// brake) as the force that reaches its speed in one step, capped, solved
 /// for all motors together; a torque as itself; a PD's spring explicit, its
-/// damper the joint's (implicit in MuJoCo's Euler step); once under each of
-/// four contact settings (CrossSimReport::variants). `seconds` > 0
-/// replaces the task's length. Refused, with the reason: muscles (lessin2015:
-/// not exported yet), a task that breaks joints or adds props (a throw).
+/// damper the joint's (implicit in MuJoCo's Euler step); a muscle its
+/// exported tendon, a spring of its activation times its strength (implicit
+/// integration); once under each of four contact settings
+/// (CrossSimReport::variants). `seconds` > 0 replaces the task's length.
+/// Refused, with the reason: a task that breaks joints or adds props (a throw).
 Result<CrossSimReport> crosscheck_mujoco(const CreatureModel& m, const ControllerModel& controller,
                                          const SimConfig& cfg, std::uint64_t seed, double seconds = 0);
 

@@ -24,10 +24,13 @@ TEST_F(ExportMjcf, AGenomeFileAndARunsCreatureAreWritten) {
   const std::string xml = bxtest::slurp(dir / "c.xml");
   EXPECT_NE(xml.find("<freejoint name=\"root\"/>"), std::string::npos);
   EXPECT_EQ(std::count(xml.begin(), xml.end(), '\n') > 20, true);
-  // muscles are named as left out
+  // muscles as spatial tendons, whose stiffness the note says how to set
   r = bestiary("export " + bxtest::creature("lessin_crawler.json") + " --mjcf " + (dir / "l.xml").string());
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_NE(r.out.find("note: 24 muscle effectors not exported"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("note: 24 muscles as spatial tendons"), std::string::npos) << r.out;
+  const std::string lx = bxtest::slurp(dir / "l.xml");
+  EXPECT_NE(lx.find("<spatial name=\"m23\""), std::string::npos);
+  EXPECT_NE(lx.find("<site name=\"m23b\""), std::string::npos);
   // a run's best
   const fs::path run = dir / "r";
   ASSERT_EQ(bxtest::small_run(run).code, 0);
