@@ -10,18 +10,24 @@
 namespace bx {
 namespace {
 
+// creatures/NAME.json crosschecked for `seconds` without gravity (in the air,
+// its parts off the ground but for what its limbs touch)
+Result<CrossSimReport> in_the_air(const std::string& name, std::uint64_t seed, double seconds) {
+  auto c = bxtest::develop_creature(name);
+  if (!c.dev.viable()) return Error{name + ": not viable"};
+  SimConfig cfg = c.cfg.sim;
+  cfg.physics.gravity = 0;
+  const CreatureModel& m = *c.dev.model;
+  return crosscheck_mujoco(m, GraphBrain(m.brain), cfg, seed, seconds);
+}
+
 // miconi_stroke's servos swing its limbs to their stops within a second; in
 // the air (no gravity, held clear of the ground) the replayed motors must move
 // MuJoCo's joints as ODE's moved: every joint within 0.1 rad (the stops'
 // softness differs by about 0.05 rad). Motors solved one at a time, blind to
 // how the stops and the other motors respond, miss by 0.5-1 rad.
 TEST(MujocoReplay, ServoMotorsDriveTheJointsAsInOdeInTheAir) {
-  auto c = bxtest::develop_creature("miconi_stroke");
-  ASSERT_TRUE(c.dev.viable());
-  SimConfig cfg = c.cfg.sim;
-  cfg.physics.gravity = 0;
-  const CreatureModel& m = *c.dev.model;
-  auto r = crosscheck_mujoco(m, GraphBrain(m.brain), cfg, 1, 2.0);
+  auto r = in_the_air("miconi_stroke", 1, 2.0);
   ASSERT_TRUE(r.ok()) << r.error();
   EXPECT_NEAR(r->seconds, 2.0, 1e-9);
   EXPECT_GT(r->steps, 0);
@@ -34,12 +40,7 @@ TEST(MujocoReplay, ServoMotorsDriveTheJointsAsInOdeInTheAir) {
 // MuJoCo's softer limits let it pass by about 0.05 rad), and the report's
 // span is the task's whole run when it marks none.
 TEST(MujocoReplay, AHingedPairSwingsAlikeAndTheSpanIsTheRun) {
-  auto c = bxtest::develop_creature("hinged_pair");
-  ASSERT_TRUE(c.dev.viable());
-  SimConfig cfg = c.cfg.sim;
-  cfg.physics.gravity = 0;
-  const CreatureModel& m = *c.dev.model;
-  auto r = crosscheck_mujoco(m, GraphBrain(m.brain), cfg, 3, 1.0);
+  auto r = in_the_air("hinged_pair", 3, 1.0);
   ASSERT_TRUE(r.ok()) << r.error();
   for (const CrossSimVariant& v : r->variants) EXPECT_LT(v.first_second_angle_gap, 0.1) << v.name;
   EXPECT_LE(r->from, r->to);
@@ -88,13 +89,7 @@ TEST(MujocoReplay, AWheeledCartRollsAboutAsFarInBoth) {
 // lessin_crawler's limbs swing as in ODE, every joint within 0.1 rad over
 // the first second (0.025 rad measured).
 TEST(MujocoReplay, MusclesSwingTheLimbsAsInOdeInTheAir) {
-  auto c = bxtest::develop_creature("lessin_crawler");
-  ASSERT_TRUE(c.dev.viable());
-  SimConfig cfg = c.cfg.sim;
-  cfg.physics.gravity = 0;
-  const CreatureModel& m = *c.dev.model;
-  ASSERT_FALSE(m.muscles.empty());
-  auto r = crosscheck_mujoco(m, GraphBrain(m.brain), cfg, 1, 1.0);
+  auto r = in_the_air("lessin_crawler", 1, 1.0);
   ASSERT_TRUE(r.ok()) << r.error();
   for (const CrossSimVariant& v : r->variants) EXPECT_LT(v.first_second_angle_gap, 0.1) << v.name;
 }
