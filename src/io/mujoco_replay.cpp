@@ -16,6 +16,7 @@
 #include "eval/task_table.h"
 #include "io/mjcf.h"
 #include "physics/mechanisms.h"
+#include "physics/motor_law.h"
 
 namespace bx {
 
@@ -26,53 +27,8 @@ struct Recorded {
   EvalState::Motors motors;
   std::vector<double> signals;
   Vec3 com;
-  std::vector<double> angles;  // every joint's dofs in turn
+  std::vector<double> angles;  // every joint's dofs in turn, over the first kAngleSpan (else empty)
 };
-
-// What one degree of freedom's motor asks for in a step: a speed reached
-// with at most `force` (a velocity motor), or a torque.
-struct Drive {
-  bool velocity = false;
-  double speed = 0, force = 0, torque = 0;
-};
-
-// One effector's drive by ODE's laws (physics/actuators.cpp's gain rows),
-// from its (lagged) signal and its joint's position in MuJoCo.
-Drive drive(const CreatureModel& m, const MotorDef& motor, const EffectorModel& em, double s, double position) {
-  const JointModel& jm = m.joints[em.joint];
-  const bool linear = (jm.type == JointType::Slider || (jm.type == JointType::Cylindrical && em.dof == 0));
-  Drive d;
-  switch (motor.model) {
-    case MotorModel::Servo: return {true, motor.max_speed * s, motor.max_force, 0};
-    case MotorModel::Saturation:
-      return {true, s >= 0 ? motor.max_speed : -motor.max_speed, std::abs(s) * motor.strength * em.cross_section, 0};
-    case MotorModel::Torque: {
-      const double torque = s * motor.strength * em.cross_section;
-      const double limit = linear ? motor.torque_max_linear_speed : motor.torque_max_speed;
-      if (limit > 0) return {true, torque >= 0 ? limit : -limit, std::abs(torque), 0};
-      d.torque = torque;
-      return d;
-    }
-    case MotorModel::PD: {
-      double target;
-      if (em.dof < static_cast<int>(jm.limits.size())) {
-        const Limit& l = jm.limits[em.dof];
-        target = 0.5 * (l.lo + l.hi) + 0.5 * s * (l.hi - l.lo);
-      } else {
-        target = s * (linear ? 1.0 : kPi);
-      }
-      d.torque = motor.kp * (target - position);  // the damper: the joint's own (MJCF damping)
-      return d;
-    }
-    case MotorModel::Muscle: break;
-  }
-  return d;
-}
-
-// A brake (World::brake_effectors): speed 0 with `share` of the full force.
-Drive brake(const MotorDef& motor, const EffectorModel& em, double share) {
-  return {true, 0, share * (motor.model == MotorModel::Servo ? motor.max_force : motor.strength * em.cross_section), 0};
-}
 
 struct MjDeleter {
   void operator()(mjModel* m) const { mj_deleteModel(m); }
@@ -87,6 +43,8 @@ void on_warning(const char* msg) {
 
 // how many times the velocity motors' forces are corrected in a step
 constexpr int kCorrections = 4;
+// the span (s) over which the joints' angles are compared
+constexpr double kAngleSpan = 1.0;
 
 Vec3 horizontal(Vec3 v) { return {v.x, v.y, 0}; }
 
@@ -153,9 +111,11 @@ Result<OdeRun> run_ode(const CreatureModel& m, const ControllerModel& controller
   rec.reserve(static_cast<std::size_t>(std::min(max_steps, 1L << 22)));
   while (s.physics_steps < max_steps && (seconds > 0 || !s.task->done())) {
     if (!step(m, cfg, s)) return Error{"it failed in ODE: " + s.failure};
+    // the joints' angles over the first second, which the replay's are compared with
     std::vector<double> angles;
-    for (int j = 0; j < static_cast<int>(m.joints.size()); ++j)
-      for (int k = 0; k < joint_dofs(m.joints[j].type); ++k) angles.push_back(s.world.joint_position(j, k));
+    if (s.world.time() <= kAngleSpan + 1e-9)
+      for (int j = 0; j < static_cast<int>(m.joints.size()); ++j)
+        for (int k = 0; k < joint_dofs(m.joints[j].type); ++k) angles.push_back(s.world.joint_position(j, k));
     rec.push_back({s.motors, std::vector<double>(s.signals.begin(), s.signals.end()), s.world.centre_of_mass(),
                    std::move(angles)});
   }
@@ -255,7 +215,7 @@ Result<MujocoRun> run_mujoco(const CreatureModel& m, const OdeRun& o, const Mujo
   const double dt = cfg.physics.dt;
   const double lag = motor_lag_share(dt, cfg.motor.response_time);
   std::vector<double> lagged(m.effectors.size(), 0.0);
-  std::vector<Drive> drives(m.effectors.size());
+  std::vector<MotorDemand> drives(m.effectors.size());
   std::vector<int> vel;  // effectors driven as velocity motors this step
   std::vector<double> a_mat, f, v_free, base, probe, f_prev, v_prev;
   for (long i = 0; i < steps; ++i) {
@@ -284,15 +244,18 @@ Result<MujocoRun> run_mujoco(const CreatureModel& m, const OdeRun& o, const Mujo
           M->tendon_stiffness[t] = std::clamp(sig, 0.0, 1.0) * mm.strength;
         }
         M->tendon_damping[t] = cfg.motor.muscle_damping;
-        drives[e] = Drive{};
+        drives[e] = MotorDemand{};
         continue;
       }
-      const int dof = dof_of[e];
-      const double position = dof >= 0 ? D->qpos[M->jnt_qposadr[M->dof_jntid[dof]]] : 0;
-      drives[e] = drive(m, cfg.motor, m.effectors[e], sig, position);
-      if (step_rec.motors == EvalState::Motors::Held) drives[e] = brake(cfg.motor, m.effectors[e], 1);
+      // a joint's motor by the world's law (physics/motor_law.h); a PD's
+      // spring from MuJoCo's angle, its damper the joint's
+      const EffectorModel& em = m.effectors[e];
+      drives[e] = motor_demand(cfg.motor, m.joints[em.joint], em, sig);
+      if (drives[e].kind == MotorDemand::Kind::Target && dof_of[e] >= 0)
+        drives[e].torque = cfg.motor.kp * (drives[e].target - D->qpos[M->jnt_qposadr[M->dof_jntid[dof_of[e]]]]);
+      if (step_rec.motors == EvalState::Motors::Held) drives[e] = brake_demand(cfg.motor, em, 1);
       else if (step_rec.motors == EvalState::Motors::Off && cfg.motor.off_brake > 0)
-        drives[e] = brake(cfg.motor, m.effectors[e], cfg.motor.off_brake);
+        drives[e] = brake_demand(cfg.motor, em, cfg.motor.off_brake);
     }
     // torques first; then the velocity motors' forces, solved together
     // (projected Gauss-Seidel on the effective inverse inertia, as ODE's
@@ -301,7 +264,7 @@ Result<MujocoRun> run_mujoco(const CreatureModel& m, const OdeRun& o, const Mujo
     vel.clear();
     for (std::size_t e = 0; e < m.effectors.size(); ++e) {
       if (dof_of[e] < 0) continue;
-      if (drives[e].velocity) vel.push_back(static_cast<int>(e));
+      if (drives[e].kind == MotorDemand::Kind::Velocity) vel.push_back(static_cast<int>(e));
       else D->qfrc_applied[dof_of[e]] += drives[e].torque;
     }
     if (!vel.empty()) {
@@ -334,7 +297,7 @@ Result<MujocoRun> run_mujoco(const CreatureModel& m, const OdeRun& o, const Mujo
       auto solve = [&] {
         for (int sweep = 0; sweep < 50; ++sweep)
           for (std::size_t c = 0; c < n; ++c) {
-            const Drive& dr = drives[static_cast<std::size_t>(vel[c])];
+            const MotorDemand& dr = drives[static_cast<std::size_t>(vel[c])];
             const double a = a_mat[c * n + c];
             if (!(a > 1e-12)) continue;
             double v = v_free[c];
@@ -379,7 +342,7 @@ Result<MujocoRun> run_mujoco(const CreatureModel& m, const OdeRun& o, const Mujo
     const Vec3 c = mj_com();
     r.min_height = std::min(r.min_height, c.z);
     // the joints' angles against ODE's, over the first second
-    if (static_cast<double>(i + 1) * dt <= 1.0 + 1e-9)
+    if (!step_rec.angles.empty())
       for (std::size_t k = 0; k < qpos_of.size(); ++k)
         if (qpos_of[k] >= 0)
           r.first_second_angle_gap = std::max(r.first_second_angle_gap,

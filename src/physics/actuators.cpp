@@ -8,6 +8,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "physics/motor_law.h"
 #include "physics/world_impl.h"
 
 namespace bx {
@@ -85,55 +86,37 @@ double World::Impl::muscle_length(std::size_t k) const {
 }
 
 const World::Impl::GainRow& World::Impl::gain(MotorModel model) {
-  // the joint rows brake a degree of freedom at speed 0 with a share of their
-  // full force: a Servo's cap, the others' strength x cross-section
-  static constexpr auto brake_strength = [](Impl& w, const Actuation& a) {
-    w.drive(w.joints[a.em.joint], a.em.dof, 0, a.s * (a.motor.strength * a.em.cross_section));
+  // the joint rows drive by the motor's law (physics/motor_law.h) and brake a
+  // degree of freedom at speed 0 with a share of their full force
+  static constexpr auto velocity = [](Impl& w, const Actuation& a) {
+    const MotorDemand d = motor_demand(a.motor, a.m.joints[a.em.joint], a.em, a.s);
+    w.drive(w.joints[a.em.joint], a.em.dof, d.speed, d.force);
+    return false;
+  };
+  static constexpr auto brake = [](Impl& w, const Actuation& a) {
+    const MotorDemand d = brake_demand(a.motor, a.em, a.s);
+    w.drive(w.joints[a.em.joint], a.em.dof, d.speed, d.force);
   };
   static const GainRow rows[] = {
-      // miconi2006: target velocity max_speed s, force capped at max_force
-      {MotorModel::Servo, false,
-       [](Impl& w, const Actuation& a) {
-         w.drive(w.joints[a.em.joint], a.em.dof, a.motor.max_speed * a.s, a.motor.max_force);
-         return false;
-       },
-       [](Impl& w, const Actuation& a) { w.drive(w.joints[a.em.joint], a.em.dof, 0, a.s * a.motor.max_force); }},
-      // chaumont2007 5.3: target velocity sign(s) max_speed, force cap |s| strength x cross-section
-      {MotorModel::Saturation, false,
-       [](Impl& w, const Actuation& a) {
-         w.drive(w.joints[a.em.joint], a.em.dof, a.s >= 0 ? a.motor.max_speed : -a.motor.max_speed,
-                 std::abs(a.s) * a.motor.strength * a.em.cross_section);
-         return false;
-       },
-       brake_strength},
-      // sims1994: the torque s strength x cross-section, up to the no-load speed if it has one
+      {MotorModel::Servo, false, velocity, brake},
+      {MotorModel::Saturation, false, velocity, brake},
+      // a torque, or up to the no-load speed if it has one (as Saturation, with its own speed)
       {MotorModel::Torque, false,
        [](Impl& w, const Actuation& a) {
-         const Joint& j = w.joints[a.em.joint];
-         double torque = a.s * a.motor.strength * a.em.cross_section;
-         double limit = is_linear_dof(j.type, a.em.dof) ? a.motor.torque_max_linear_speed
-                                                        : a.motor.torque_max_speed;
-         if (limit > 0) {
-           // the torque up to the no-load speed (as Saturation, with its own speed)
-           w.drive(j, a.em.dof, torque >= 0 ? limit : -limit, std::abs(torque));
+         const MotorDemand d = motor_demand(a.motor, a.m.joints[a.em.joint], a.em, a.s);
+         if (d.kind == MotorDemand::Kind::Velocity) {
+           w.drive(w.joints[a.em.joint], a.em.dof, d.speed, d.force);
            return false;
          }
-         w.joint_torque[a.em.joint][a.em.dof] += torque;
+         w.joint_torque[a.em.joint][a.em.dof] += d.torque;
          return true;
        },
-       brake_strength},
-      // rivercrossing: T = kp (theta_d - theta) - kd theta', theta_d from s within the joint's range
+       brake},
+      // T = kp (theta_d - theta) - kd theta'
       {MotorModel::PD, true,
        [](Impl& w, const Actuation& a) {
          const Joint& j = w.joints[a.em.joint];
-         const JointModel& jm = a.m.joints[a.em.joint];
-         double target;
-         if (a.em.dof < static_cast<int>(jm.limits.size())) {
-           const Limit& l = jm.limits[a.em.dof];
-           target = 0.5 * (l.lo + l.hi) + 0.5 * a.s * (l.hi - l.lo);
-         } else {
-           target = a.s * (is_linear_dof(j.type, a.em.dof) ? 1.0 : kPi);
-         }
+         const double target = motor_demand(a.motor, a.m.joints[a.em.joint], a.em, a.s).target;
          const double err = target - w.position(j, a.em.dof);
          if (j.motor && a.motor.kd > 0) {
            // hinges and universal joints: the damper implicit in the joint's own motor
@@ -147,7 +130,7 @@ const World::Impl::GainRow& World::Impl::gain(MotorModel model) {
          w.joint_torque[a.em.joint][a.em.dof] += a.motor.kp * err - a.motor.kd * w.rate(j, a.em.dof);
          return true;
        },
-       brake_strength},
+       brake},
       // lessin2015 III-E: the muscle's stiffness is its activation (held to [0, 1]) times its strength
       {MotorModel::Muscle, false,
        [](Impl& w, const Actuation& a) {

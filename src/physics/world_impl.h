@@ -17,15 +17,11 @@
 
 #include "geometry/ode.h"
 #include "physics/mechanisms.h"
+#include "physics/motor_law.h"
 #include "physics/world.h"
 
 namespace bx {
 
-/// Whether degree of freedom `dof` of a joint of type `t` is a length (m),
-/// not an angle.
-inline bool is_linear_dof(JointType t, int dof) {
-  return t == JointType::Slider || (t == JointType::Cylindrical && dof == 0);
-}
 
 // what a geom belongs to, held in its data pointer: the entity's kind in
 // the low 4 bits, its index above them (the ground: 0, a null pointer)

@@ -231,17 +231,3 @@ export function valueScales(frames, key, n) {
   }
   return out;
 }
-
-/** The index of the frame at or before time t (the first for an earlier t), found without allocating. */
-export function frameAt(frames, t) {
-  const n = frames.length;
-  if (!(t > frames[0].t)) return 0;
-  if (t >= frames[n - 1].t) return n - 1;
-  let lo = 0, hi = n - 1;
-  while (hi - lo > 1) {
-    const mid = (lo + hi) >> 1;
-    if (frames[mid].t <= t) lo = mid;
-    else hi = mid;
-  }
-  return lo;
-}

@@ -8,7 +8,8 @@ import { el, svg } from './dom.js';
 import { cssColor, geneColor } from './palette.js';
 import { neuronLabel } from './neurons.js';
 import { effectorLabel, sensorLabel } from './signals.js';
-import { HEADINGS, VALUE_COLORS, frameAt, networkLayout, valueScales, valueStep } from './network.js';
+import { HEADINGS, VALUE_COLORS, networkLayout, valueScales, valueStep } from './network.js';
+import { frameIndexAt } from './timeline.js';
 
 /** How much larger than its layout the network is drawn, room allowing. */
 const ZOOM = 1.25;
@@ -127,7 +128,7 @@ export function createNetworkView(container, model, replay, onHover) {
     setTime(time) {
       t = time;
       if (!active) return;
-      const i = frameAt(frames, t);
+      const i = frameIndexAt(frames, t);
       if (i === frame) return;
       frame = i;
       colour();

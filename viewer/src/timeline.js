@@ -12,17 +12,27 @@ export function duration(frames) {
  */
 export function bracket(frames, t) {
   const n = frames.length;
-  if (!(t > frames[0].t)) return { i: 0, j: 0, u: 0 };
-  if (t >= frames[n - 1].t) return { i: n - 1, j: n - 1, u: 0 };
-  // binary search for the last frame at or before t
+  const i = frameIndexAt(frames, t);
+  const j = t > frames[0].t && t < frames[n - 1].t ? i + 1 : i;
+  const span = frames[j].t - frames[i].t;
+  return { i, j, u: span > 0 ? (t - frames[i].t) / span : 0 };
+}
+
+/**
+ * The index of the last frame at or before time t (the first for an earlier
+ * t, the last for a later one), by binary search, allocating nothing.
+ */
+export function frameIndexAt(frames, t) {
+  const n = frames.length;
+  if (!(t > frames[0].t)) return 0;
+  if (t >= frames[n - 1].t) return n - 1;
   let lo = 0, hi = n - 1;
   while (hi - lo > 1) {
     const mid = (lo + hi) >> 1;
     if (frames[mid].t <= t) lo = mid;
     else hi = mid;
   }
-  const span = frames[hi].t - frames[lo].t;
-  return { i: lo, j: hi, u: span > 0 ? (t - frames[lo].t) / span : 0 };
+  return lo;
 }
 
 /** Pose of part `k` at time t, interpolated between frames. */

@@ -4,11 +4,11 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import {
-  NET, VALUE_COLORS, VALUE_STEPS, bandTitle, brainOf, decodeSlot, effectorPart, effectorShort, frameAt, networkLayout,
+  NET, VALUE_COLORS, VALUE_STEPS, bandTitle, brainOf, decodeSlot, effectorPart, effectorShort, networkLayout,
   networkModel, neuronShort, sensorShort, valueScales, valueStep, wireWidth,
 } from '../src/network.js';
 import { noNetworkText } from '../src/brain_panel.js';
-import { bracket } from '../src/timeline.js';
+import { bracket, frameIndexAt } from '../src/timeline.js';
 import { makeLessin, makeReplay, makeRiver, makeWired } from './fixture.mjs';
 
 // the numbers in an SVG path, in order; a path's numbers are to 0.1 px
@@ -143,5 +143,5 @@ test('values to colours: white at 0, the sign\'s colour at the scale, clamped be
 
 test('the frame shown at a time is the one at or before it, as the other panels take it', () => {
   const frames = makeReplay().frames;
-  for (const t of [-1, 0, 0.05, 0.1, 0.15, 1, 1.99, 2, 5]) assert.equal(frameAt(frames, t), bracket(frames, t).i, `t ${t}`);
+  for (const t of [-1, 0, 0.05, 0.1, 0.15, 1, 1.99, 2, 5]) assert.equal(frameIndexAt(frames, t), bracket(frames, t).i, `t ${t}`);
 });
