@@ -53,6 +53,7 @@ int cmd_crosscheck(const CrosscheckArgs& a) {
     out["to"] = r->to;
     out["seconds"] = r->seconds;
     out["steps"] = r->steps;
+    out["tracked"] = r->tracked;
     out["ode"] = {r->ode.x, r->ode.y, r->ode.z};
     nlohmann::json variants = nlohmann::json::array();
     for (const CrossSimVariant& v : r->variants)
@@ -62,8 +63,17 @@ int cmd_crosscheck(const CrosscheckArgs& a) {
                           {"distance_ratio", v.distance_ratio},
                           {"min_height", v.min_height},
                           {"first_second_angle_gap", v.first_second_angle_gap},
+                          {"flight", r->has_flight ? nlohmann::json{v.flight.x, v.flight.y, v.flight.z} : nlohmann::json()},
+                          {"flight_heading_difference_deg", degrees(v.flight_heading_difference)},
+                          {"flight_ratio", v.flight_ratio},
                           {"warnings", v.warnings}});
     out["variants"] = variants;
+    if (r->has_flight) {
+      out["ode_flight"] = {r->ode_flight.x, r->ode_flight.y, r->ode_flight.z};
+      out["landing"] = r->landing;
+      out["flight_heading_difference_deg"] = degrees(r->flight_heading_difference);
+      out["flight_ratio"] = r->flight_ratio;
+    }
     out["heading_difference_deg"] = head;
     out["distance_ratio"] = r->distance_ratio;
     out["moved"] = moved;
@@ -74,14 +84,23 @@ int cmd_crosscheck(const CrosscheckArgs& a) {
   std::printf("%s, seed %llu\n", subject->label.c_str(), static_cast<unsigned long long>(subject->seed));
   std::printf("compared over %.2f-%.2f s of %.2f s (%ld steps of %.6g s; the task's scored span)\n", r->from, r->to,
               r->seconds, r->steps, sim.physics.dt);
+  std::printf("compared: the %s's horizontal displacement\n", r->tracked.c_str());
   std::printf("ODE, closed loop: %.3f m at heading %.1f deg\n", planar(r->ode), heading_deg(r->ode));
   std::printf("MuJoCo, ODE's motor commands open loop, by its contacts:\n");
   for (const CrossSimVariant& v : r->variants) {
     std::printf("  %-24s %6.3f m at heading %6.1f deg: %5.1f deg off, ratio %.2f; joints %.3f rad apart in 1 s\n",
                 v.name.c_str(), planar(v.displacement), heading_deg(v.displacement), degrees(v.heading_difference),
                 v.distance_ratio, v.first_second_angle_gap);
+    if (r->has_flight)
+      std::printf("  %-24s flight %6.3f m at heading %6.1f deg: %5.1f deg off, ratio %.2f\n", "", planar(v.flight),
+                  heading_deg(v.flight), degrees(v.flight_heading_difference), v.flight_ratio);
     for (const std::string& w : v.warnings) std::printf("    MuJoCo warned: %s\n", w.c_str());
   }
+  if (r->has_flight)
+    std::printf("its flight (until the %s first touches the ground: %.2f s in ODE): %.3f m at heading %.1f deg in ODE; "
+                "median %.1f deg off, ratio %.2f\n",
+                r->tracked.c_str(), r->landing, planar(r->ode_flight), heading_deg(r->ode_flight),
+                degrees(r->flight_heading_difference), r->flight_ratio);
   if (!moved) {
     std::printf("it moves less than a tenth of its length (%.3f m) in ODE over that span: nothing to compare\n",
                 creature->body->body_length());

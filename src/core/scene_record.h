@@ -58,10 +58,14 @@ struct SceneProp {
 };
 
 /// A named part of the creature, drawn in `color`: a catapult's "projectile".
+/// `scored`: the task scores this part's path over its scored span (a
+/// thrown projectile's), not the creature's centre of mass's; at most one
+/// part is scored (what `crosscheck` compares, io/mujoco_replay.h).
 struct ScenePart {
   std::string name;
   int part = 0;
   std::string color;
+  bool scored = false;
   friend bool operator==(const ScenePart&, const ScenePart&) = default;
 };
 

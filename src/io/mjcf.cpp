@@ -22,9 +22,9 @@ std::string quat(const Mat3& R) {
 
 
 // a part's geom in its own body's frame (the part's centre and axes)
-std::string geom(const PartModel& p, int i) {
+std::string geom(const PartModel& p, int i, const std::string& extra) {
   const Vec3 s = p.size;
-  std::string g = "<geom name=\"g" + std::to_string(i) + "\" mass=\"" + num(p.mass) + "\" ";
+  std::string g = "<geom name=\"g" + std::to_string(i) + "\" mass=\"" + num(p.mass) + "\" " + extra;
   switch (p.shape) {
     case Shape::Box: g += "type=\"box\" size=\"" + vec(0.5 * s) + "\""; break;
     case Shape::Sphere: g += "type=\"sphere\" size=\"" + num(s.x / 2) + "\""; break;
@@ -57,7 +57,15 @@ std::string mjcf_muscle_name(int muscle) {
   return mn;
 }
 
-std::string creature_mjcf(const CreatureModel& m, const SimConfig& cfg, const std::string& name, MjcfNotes* notes) {
+std::string mjcf_free_joint_name(int part) {
+  if (part == 0) return "root";
+  std::string fn = "free";  // in steps, as mjcf_joint_name
+  fn += std::to_string(part);
+  return fn;
+}
+
+std::string creature_mjcf(const CreatureModel& m, const SimConfig& cfg, const std::string& name, MjcfNotes* notes,
+                          std::span<const int> broken_joints) {
   MjcfNotes local;
   MjcfNotes& n = notes ? *notes : local;
   const PhysicsDef& ph = cfg.physics;
@@ -65,6 +73,10 @@ std::string creature_mjcf(const CreatureModel& m, const SimConfig& cfg, const st
   // each part's joint to its parent
   std::vector<int> joint_of(m.parts.size(), -1);
   for (int j = 0; j < static_cast<int>(m.joints.size()); ++j) joint_of[m.joints[j].child] = j;
+  // a part whose joint is broken heads a tree of its own, free in the world
+  std::vector<bool> freed(m.parts.size(), false);
+  for (int j : broken_joints)
+    if (j >= 0 && j < static_cast<int>(m.joints.size())) freed[m.joints[j].child] = true;
   std::vector<std::vector<int>> children(m.parts.size());
   for (int i = 1; i < m.n_parts(); ++i) children[m.parts[i].parent].push_back(i);
   bool joined_collide = false;
@@ -88,9 +100,10 @@ std::string creature_mjcf(const CreatureModel& m, const SimConfig& cfg, const st
   std::vector<std::string> joint_names(m.joints.size() * 3);
   auto body = [&](auto&& self_fn, int i, const std::string& indent) -> void {
     const PartModel& p = m.parts[i];
+    const bool top = p.parent < 0 || freed[i];
     Vec3 pos;
     Mat3 R;
-    if (p.parent < 0) {
+    if (top) {
       pos = p.pose.p + lift;
       R = p.pose.R;
     } else {
@@ -100,8 +113,8 @@ std::string creature_mjcf(const CreatureModel& m, const SimConfig& cfg, const st
     }
     x += indent + "<body name=\"p" + std::to_string(i) + "\" pos=\"" + vec(pos) + "\" quat=\"" + quat(R) + "\">\n";
     const std::string in = indent + "  ";
-    if (p.parent < 0) x += in + "<freejoint name=\"root\"/>\n";
-    if (int j = joint_of[i]; j >= 0) {
+    if (top) x += in + "<freejoint name=\"" + mjcf_free_joint_name(i) + "\"/>\n";
+    if (int j = joint_of[i]; j >= 0 && !freed[i]) {
       const JointModel& jm = m.joints[j];
       const Mat3 Rt = p.pose.R.transposed();
       const Vec3 anchor = Rt * (jm.anchor - p.pose.p);
@@ -119,7 +132,8 @@ std::string creature_mjcf(const CreatureModel& m, const SimConfig& cfg, const st
         ++k;
       }
     }
-    x += in + geom(p, i) + "\n";
+    // a freed part collides with every part (World::break_joint)
+    x += in + geom(p, i, freed[i] ? "contype=\"3\" conaffinity=\"3\" " : "") + "\n";
     // the ends of the muscles this part holds (lessin2015), in its frame
     for (int k = 0; k < static_cast<int>(m.muscles.size()); ++k) {
       const MuscleModel& mm = m.muscles[k];
@@ -129,10 +143,13 @@ std::string creature_mjcf(const CreatureModel& m, const SimConfig& cfg, const st
           x += in + "<site name=\"" + mjcf_muscle_name(k) + (end == 0 ? "a" : "b") + "\" pos=\"" + vec(at) + "\"/>\n";
         }
     }
-    for (int c : children[i]) self_fn(self_fn, c, in);
+    for (int c : children[i])
+      if (!freed[c]) self_fn(self_fn, c, in);
     x += indent + "</body>\n";
   };
   body(body, 0, "    ");
+  for (int i = 1; i < m.n_parts(); ++i)
+    if (freed[i]) body(body, i, "    ");
   x += "  </worldbody>\n";
   // each muscle a spring between its two ends: a spatial tendon whose
   // stiffness is its activation (0-1) times its strength, 0 at rest (a

@@ -6,6 +6,7 @@
 // body. Lengths in metres, angles in radians, masses in kilograms.
 #pragma once
 
+#include <span>
 #include <string>
 
 #include "develop/creature_model.h"
@@ -30,12 +31,17 @@ struct MjcfNotes {
 /// spatial tendon "m<k>" between sites on its two parts, its damping
 /// motor.muscle_damping, its spring length the muscle's rest length, its
 /// stiffness 0 (its activation times its strength, which a simulator sets
-/// each step: `notes` says so).
+/// each step: `notes` says so). Each joint in `broken_joints` (a catapult's
+/// release, World::break_joint) is left out: its child part heads a body of
+/// its own at the top level, free ("free<part>"), colliding with every part.
 std::string creature_mjcf(const CreatureModel& m, const SimConfig& cfg, const std::string& name,
-                          MjcfNotes* notes = nullptr);
+                          MjcfNotes* notes = nullptr, std::span<const int> broken_joints = {});
 
 /// The MuJoCo joint creature_mjcf names for degree of freedom `dof` of joint `joint`.
 std::string mjcf_joint_name(int joint, int dof);
+/// The free joint creature_mjcf gives part `part` when it heads a tree: the
+/// root's "root", a freed part's "free<part>".
+std::string mjcf_free_joint_name(int part);
 /// The spatial tendon creature_mjcf writes for muscle `muscle` (its end sites
 /// are the name with "a" and "b").
 std::string mjcf_muscle_name(int muscle);

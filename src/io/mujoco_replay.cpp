@@ -26,8 +26,10 @@ namespace {
 struct Recorded {
   EvalState::Motors motors;
   std::vector<double> signals;
-  Vec3 com;
+  Vec3 tracked;  // the scored part's centre, else the creature's centre of mass
   std::vector<double> angles;  // every joint's dofs in turn, over the first kAngleSpan (else empty)
+  std::vector<int> breaks;     // the joints the task broke before this step's physics
+  bool landed = false;         // the scored part touched the ground, and no part, in this step
 };
 
 struct MjDeleter {
@@ -60,10 +62,15 @@ struct OdeRun {
   std::vector<Recorded> rec;
   Pose root0;
   std::vector<double> angles0;
-  Vec3 com0;
+  int scored_part = -1;  // the part the task scores (ScenePart::scored), else -1: the centre of mass
+  std::string tracked = "centre of mass";
+  Vec3 tracked0;
   double from = 0, to = 0;  // the scored span (s)
   long i_from = -1, i_to = -1;  // the steps at its ends (-1: the start)
   Vec3 displacement;
+  // the scored part's flight: from the span's start to its landing
+  long i_land = -1;  // the step it first touched the ground after the span began, else -1: no flight
+  Vec3 flight;
 };
 
 // How MuJoCo's contacts are set for one replay (docs/export.md).
@@ -81,14 +88,16 @@ constexpr MujocoContacts kMujocoContacts[] = {
 
 // What one MuJoCo replay did.
 struct MujocoRun {
-  Vec3 displacement;  // of the centre of mass over the scored span
+  Vec3 displacement;  // of the tracked point over the scored span
+  bool landed = false;
+  Vec3 flight;  // of the scored part from the span's start to its landing, if it landed
   double min_height = 0;
   double first_second_angle_gap = 0;
   std::vector<std::string> warnings;
 };
 
 // ODE, closed loop, as evaluate_once runs the first trial: every step's
-// motor commands, and the scored span
+// motor commands, the joints the task broke, and the scored span
 Result<OdeRun> run_ode(const CreatureModel& m, const ControllerModel& controller, const SimConfig& given,
                        std::uint64_t seed, double seconds) {
   OdeRun o;
@@ -101,67 +110,99 @@ Result<OdeRun> run_ode(const CreatureModel& m, const ControllerModel& controller
   auto task = make_task(m, cfg, seed, 0);
   if (!task) return Error{task.error()};
   EvalState s(m, controller, cfg, std::move(*task), {draw.yaw, draw.lift});
+  // the scene as a replay records it: before the first step and after each
+  SceneRecord scene;
+  record_scene(m, s, scene);
+  for (const ScenePart& p : scene.parts)
+    if (p.scored && p.part >= 0 && p.part < m.n_parts()) {
+      o.scored_part = p.part;
+      o.tracked = p.name;
+      break;
+    }
+  auto tracked = [&] { return o.scored_part >= 0 ? s.world.part_pose(o.scored_part).p : s.world.centre_of_mass(); };
   o.root0 = s.world.part_pose(0);
   for (int j = 0; j < static_cast<int>(m.joints.size()); ++j)
     for (int k = 0; k < joint_dofs(m.joints[j].type); ++k) o.angles0.push_back(s.world.joint_position(j, k));
-  o.com0 = s.world.centre_of_mass();
+  o.tracked0 = tracked();
+  std::vector<bool> broken(m.joints.size(), false);
   const long max_steps =
       seconds > 0 ? static_cast<long>(std::llround(seconds / cfg.physics.dt)) : s.task->max_steps();
   std::vector<Recorded>& rec = o.rec;
   rec.reserve(static_cast<std::size_t>(std::min(max_steps, 1L << 22)));
   while (s.physics_steps < max_steps && (seconds > 0 || !s.task->done())) {
     if (!step(m, cfg, s)) return Error{"it failed in ODE: " + s.failure};
+    record_scene(m, s, scene);
     // the joints' angles over the first second, which the replay's are compared with
     std::vector<double> angles;
     if (s.world.time() <= kAngleSpan + 1e-9)
       for (int j = 0; j < static_cast<int>(m.joints.size()); ++j)
         for (int k = 0; k < joint_dofs(m.joints[j].type); ++k) angles.push_back(s.world.joint_position(j, k));
-    rec.push_back({s.motors, std::vector<double>(s.signals.begin(), s.signals.end()), s.world.centre_of_mass(),
-                   std::move(angles)});
+    // a joint the task broke in this step (before its physics: Task::act)
+    std::vector<int> breaks;
+    for (int j = 0; j < static_cast<int>(m.joints.size()); ++j)
+      if (!broken[j] && s.world.joint_broken(j)) {
+        broken[j] = true;
+        breaks.push_back(j);
+      }
+    // touching something, but no part of the creature: the ground
+    const bool landed = o.scored_part >= 0 && s.world.contact_mask(o.scored_part) != 0 &&
+                        !s.world.touches_part(o.scored_part);
+    rec.push_back({s.motors, std::vector<double>(s.signals.begin(), s.signals.end()), tracked(), std::move(angles),
+                   std::move(breaks), landed});
   }
-  if (s.world.n_props() > 0) return Error{"its task places props in the world (a target, a projectile), which MJCF does not carry"};
-  for (int j = 0; j < static_cast<int>(m.joints.size()); ++j)
-    if (s.world.joint_broken(j)) return Error{"its task broke a joint (a catapult's release), which the replay cannot"};
+  if (s.world.n_props() > 0) return Error{"its task places props in the world (a target), which MJCF does not carry"};
   // the scored span, as the task marks it
-  SceneRecord scene;
-  s.task->record(WorldObservation(m, s.world, s.front), scene);
   const long steps = static_cast<long>(rec.size());
   o.from = 0;
   o.to = static_cast<double>(steps) * cfg.physics.dt;
-  for (const SceneMarker& mk : scene.markers) {
-    if (mk.name == kScoredFrom) o.from = mk.t;
-    if (mk.name == kScoredTo) o.to = mk.t;
-  }
+  if (auto t = scene.marker(kScoredFrom)) o.from = *t;
+  if (auto t = scene.marker(kScoredTo)) o.to = *t;
   auto index_at = [&](double t) {  // the step whose end is at or after t (-1: the start)
     const long k = static_cast<long>(std::ceil(t / cfg.physics.dt - 1e-9)) - 1;
     return std::clamp(k, -1L, steps - 1);
   };
   o.i_from = index_at(o.from);
   o.i_to = index_at(o.to);
-  auto ode_com = [&](long i) { return i < 0 ? o.com0 : rec[static_cast<std::size_t>(i)].com; };
-  o.displacement = ode_com(o.i_to) - ode_com(o.i_from);
+  auto ode_at = [&](long i) { return i < 0 ? o.tracked0 : rec[static_cast<std::size_t>(i)].tracked; };
+  o.displacement = ode_at(o.i_to) - ode_at(o.i_from);
+  if (o.scored_part >= 0)
+    for (long i = o.i_from + 1; i <= o.i_to; ++i)
+      if (rec[static_cast<std::size_t>(i)].landed) {
+        o.i_land = i;
+        o.flight = ode_at(i) - ode_at(o.i_from);
+        break;
+      }
   return o;
 }
 
+// The exported body in MuJoCo with the joints broken so far left out, and
+// where each effector's, joint's and muscle's state lies in it.
+struct MjSim {
+  std::unique_ptr<mjModel, MjDeleter> model;
+  std::unique_ptr<mjData, MjDeleter> data;
+  std::vector<int> dof_of;     // each effector's degree of freedom (-1: a muscle's, or none)
+  std::vector<int> qpos_of;    // each joint dof's MuJoCo joint, in the creature's order (-1: none)
+  std::vector<int> tendon_of;  // each muscle's tendon
+  int tracked_body = -1;       // the scored part's body, else -1
+};
 
-// MuJoCo, open loop: the exported body, its actuators silenced (the motors
-// are ours), its contacts as `contacts` says
-Result<MujocoRun> run_mujoco(const CreatureModel& m, const OdeRun& o, const MujocoContacts& contacts) {
+// Loads the body with `broken` joints left out, its actuators silenced (the
+// motors are ours), its contacts as `contacts` says
+Result<MjSim> load_mujoco(const CreatureModel& m, const OdeRun& o, const MujocoContacts& contacts,
+                          const std::vector<int>& broken) {
   const SimConfig& cfg = o.cfg;
-  const std::vector<Recorded>& rec = o.rec;
-  const long steps = static_cast<long>(rec.size());
-  MujocoRun r;
+  MjSim sim;
   char err[1000] = "";
-  std::string xml = creature_mjcf(m, cfg, "creature");
+  std::string xml = creature_mjcf(m, cfg, "creature", nullptr, broken);
   std::unique_ptr<mjVFS> vfs(new mjVFS);
   mj_defaultVFS(vfs.get());
   const std::string file = "creature.xml";
   mj_makeEmptyFileVFS(vfs.get(), file.c_str(), static_cast<int>(xml.size()));
   std::copy(xml.begin(), xml.end(), static_cast<char*>(vfs->filedata[vfs->nfile - 1]));
-  std::unique_ptr<mjModel, MjDeleter> mm(mj_loadXML(file.c_str(), vfs.get(), err, sizeof err));
+  sim.model.reset(mj_loadXML(file.c_str(), vfs.get(), err, sizeof err));
   mj_deleteVFS(vfs.get());
-  if (!mm) return Error{std::string("MuJoCo refused the exported body: ") + err};
-  mjModel* M = mm.get();
+  if (!sim.model) return Error{std::string("MuJoCo refused the exported body: ") + err};
+  mjModel* M = sim.model.get();
   for (int a = 0; a < M->nu; ++a) {
     for (int k = 0; k < mjNGAIN; ++k) M->actuator_gainprm[a * mjNGAIN + k] = 0;
     for (int k = 0; k < mjNBIAS; ++k) M->actuator_biasprm[a * mjNBIAS + k] = 0;
@@ -173,44 +214,123 @@ Result<MujocoRun> run_mujoco(const CreatureModel& m, const OdeRun& o, const Mujo
   // with muscles in the tendons' too (a muscle's damper: ODE's is a soft
   // constraint, implicit)
   M->opt.integrator = m.muscles.empty() ? mjINT_EULER : mjINT_IMPLICIT;
-  std::unique_ptr<mjData, MjDeleter> dd(mj_makeData(M));
-  mjData* D = dd.get();
-  // ODE's start: the root's pose, every joint's position
-  const Quat q0 = to_quat(o.root0.R);
-  const double start[7] = {o.root0.p.x, o.root0.p.y, o.root0.p.z, q0.w, q0.x, q0.y, q0.z};
-  std::copy(start, start + 7, D->qpos);
-  // each effector's degree of freedom in MuJoCo, and each joint dof's
-  std::vector<int> dof_of(m.effectors.size(), -1), qpos_of;
-  {
-    std::size_t a = 0;
-    for (int j = 0; j < static_cast<int>(m.joints.size()); ++j)
-      for (int k = 0; k < joint_dofs(m.joints[j].type); ++k, ++a) {
-        const int id = mj_name2id(M, mjOBJ_JOINT, mjcf_joint_name(j, k).c_str());
-        qpos_of.push_back(id);
-        if (id >= 0) D->qpos[M->jnt_qposadr[id]] = o.angles0[a];
-      }
-    for (std::size_t e = 0; e < m.effectors.size(); ++e) {
-      const EffectorModel& em = m.effectors[e];
-      if (em.muscle >= 0) continue;  // a muscle's tendon, below
-      const int id = mj_name2id(M, mjOBJ_JOINT, mjcf_joint_name(em.joint, em.dof).c_str());
-      if (id >= 0) dof_of[e] = M->jnt_dofadr[id];
-    }
+  sim.data.reset(mj_makeData(M));
+  sim.dof_of.assign(m.effectors.size(), -1);
+  for (int j = 0; j < static_cast<int>(m.joints.size()); ++j)
+    for (int k = 0; k < joint_dofs(m.joints[j].type); ++k)
+      sim.qpos_of.push_back(mj_name2id(M, mjOBJ_JOINT, mjcf_joint_name(j, k).c_str()));
+  for (std::size_t e = 0; e < m.effectors.size(); ++e) {
+    const EffectorModel& em = m.effectors[e];
+    if (em.muscle >= 0) continue;  // a muscle's tendon
+    const int id = mj_name2id(M, mjOBJ_JOINT, mjcf_joint_name(em.joint, em.dof).c_str());
+    if (id >= 0) sim.dof_of[e] = M->jnt_dofadr[id];
   }
-  // each muscle's tendon, and where a brake holds it (NaN: not held)
-  std::vector<int> tendon_of(m.muscles.size(), -1);
+  sim.tendon_of.assign(m.muscles.size(), -1);
   for (std::size_t k = 0; k < m.muscles.size(); ++k) {
-    tendon_of[k] = mj_name2id(M, mjOBJ_TENDON, mjcf_muscle_name(static_cast<int>(k)).c_str());
-    if (tendon_of[k] < 0) return Error{"the exported body lacks muscle " + std::to_string(k) + "'s tendon"};
+    sim.tendon_of[k] = mj_name2id(M, mjOBJ_TENDON, mjcf_muscle_name(static_cast<int>(k)).c_str());
+    if (sim.tendon_of[k] < 0) return Error{"the exported body lacks muscle " + std::to_string(k) + "'s tendon"};
   }
+  if (o.scored_part >= 0) {
+    sim.tracked_body = mj_name2id(M, mjOBJ_BODY, ("p" + std::to_string(o.scored_part)).c_str());
+    if (sim.tracked_body < 0) return Error{"the exported body lacks part " + std::to_string(o.scored_part)};
+  }
+  return sim;
+}
+
+// Carries the state of `from` into `to`, the same body with more joints
+// broken: every joint by its name; a newly freed part's free joint from its
+// body's pose and velocity in `from` (MuJoCo's free joint: the position and
+// linear velocity in the world's frame, the angular velocity in the body's)
+void carry_state(MjSim& from, MjSim& to) {
+  const mjModel* A = from.model.get();
+  mjData* a = from.data.get();
+  mj_forward(A, a);  // its velocities at its positions now (mj_step left those of the step's start)
+  const mjModel* B = to.model.get();
+  mjData* b = to.data.get();
+  b->time = a->time;
+  for (int jb = 0; jb < B->njnt; ++jb) {
+    const char* name = mj_id2name(B, mjOBJ_JOINT, jb);
+    const int ja = name ? mj_name2id(A, mjOBJ_JOINT, name) : -1;
+    const int nq = B->jnt_type[jb] == mjJNT_FREE ? 7 : B->jnt_type[jb] == mjJNT_BALL ? 4 : 1;
+    const int nv = B->jnt_type[jb] == mjJNT_FREE ? 6 : B->jnt_type[jb] == mjJNT_BALL ? 3 : 1;
+    double* qpos = b->qpos + B->jnt_qposadr[jb];
+    double* qvel = b->qvel + B->jnt_dofadr[jb];
+    if (ja >= 0 && A->jnt_type[ja] == B->jnt_type[jb]) {
+      std::copy(a->qpos + A->jnt_qposadr[ja], a->qpos + A->jnt_qposadr[ja] + nq, qpos);
+      std::copy(a->qvel + A->jnt_dofadr[ja], a->qvel + A->jnt_dofadr[ja] + nv, qvel);
+      std::copy(a->qacc_warmstart + A->jnt_dofadr[ja], a->qacc_warmstart + A->jnt_dofadr[ja] + nv,
+                b->qacc_warmstart + B->jnt_dofadr[jb]);
+      continue;
+    }
+    if (B->jnt_type[jb] != mjJNT_FREE) continue;  // none in `from`: left at its reference
+    const char* body = mj_id2name(B, mjOBJ_BODY, B->jnt_bodyid[jb]);
+    const int ba = body ? mj_name2id(A, mjOBJ_BODY, body) : -1;
+    if (ba < 0) continue;
+    std::copy(a->xpos + 3 * ba, a->xpos + 3 * ba + 3, qpos);
+    std::copy(a->xquat + 4 * ba, a->xquat + 4 * ba + 4, qpos + 3);
+    double v[6];  // angular then linear, at the body's origin, in the world's frame
+    mj_objectVelocity(A, a, mjOBJ_BODY, ba, v, 0);
+    std::copy(v + 3, v + 6, qvel);
+    const double* R = a->xmat + 9 * ba;  // row-major: the body's axes as columns
+    for (int r = 0; r < 3; ++r) qvel[3 + r] = R[0 + r] * v[0] + R[3 + r] * v[1] + R[6 + r] * v[2];
+  }
+  mj_forward(B, b);
+}
+
+// MuJoCo, open loop: the exported body, its contacts as `contacts` says; at
+// each step where ODE's task broke a joint, the body reloaded without it and
+// the state carried over
+Result<MujocoRun> run_mujoco(const CreatureModel& m, const OdeRun& o, const MujocoContacts& contacts) {
+  const SimConfig& cfg = o.cfg;
+  const std::vector<Recorded>& rec = o.rec;
+  const long steps = static_cast<long>(rec.size());
+  MujocoRun r;
+  std::vector<int> broken;
+  auto loaded = load_mujoco(m, o, contacts, broken);
+  if (!loaded) return Error{loaded.error()};
+  MjSim sim = std::move(*loaded);
+  {
+    mjModel* M = sim.model.get();
+    mjData* D = sim.data.get();
+    // ODE's start: the root's pose, every joint's position
+    const Quat q0 = to_quat(o.root0.R);
+    const double start[7] = {o.root0.p.x, o.root0.p.y, o.root0.p.z, q0.w, q0.x, q0.y, q0.z};
+    std::copy(start, start + 7, D->qpos);
+    for (std::size_t a = 0; a < sim.qpos_of.size(); ++a)
+      if (sim.qpos_of[a] >= 0) D->qpos[M->jnt_qposadr[sim.qpos_of[a]]] = o.angles0[a];
+  }
+  // where a brake holds each muscle (NaN: not held)
   std::vector<double> muscle_hold(m.muscles.size(), std::numeric_limits<double>::quiet_NaN());
   std::vector<std::string> warnings;
   g_warnings = &warnings;
   mju_user_warning = on_warning;
-  mj_forward(M, D);
-  auto mj_com = [&] { return Vec3{D->subtree_com[3], D->subtree_com[4], D->subtree_com[5]}; };
-  const Vec3 mj_com0 = mj_com();
-  Vec3 mj_from = mj_com0, mj_to = mj_com0;
-  r.min_height = mj_com0.z;
+  struct Unhook {
+    ~Unhook() {
+      g_warnings = nullptr;
+      mju_user_warning = nullptr;
+    }
+  } unhook;
+  mj_forward(sim.model.get(), sim.data.get());
+  // the tracked point: the scored part's centre, else the centre of mass of every part
+  auto tracked = [&] {
+    const mjModel* M = sim.model.get();
+    const mjData* D = sim.data.get();
+    if (sim.tracked_body >= 0) {
+      const double* p = D->xpos + 3 * sim.tracked_body;
+      return Vec3{p[0], p[1], p[2]};
+    }
+    Vec3 c;
+    double mass = 0;
+    for (int b = 1; b < M->nbody; ++b) {
+      const double* p = D->xipos + 3 * b;
+      c = c + M->body_mass[b] * Vec3{p[0], p[1], p[2]};
+      mass += M->body_mass[b];
+    }
+    return mass > 0 ? (1.0 / mass) * c : c;
+  };
+  const Vec3 mj_start = tracked();
+  Vec3 mj_from = mj_start, mj_to = mj_start;
+  r.min_height = mj_start.z;
 
   const double dt = cfg.physics.dt;
   const double lag = motor_lag_share(dt, cfg.motor.response_time);
@@ -220,6 +340,16 @@ Result<MujocoRun> run_mujoco(const CreatureModel& m, const OdeRun& o, const Mujo
   std::vector<double> a_mat, f, v_free, base, probe, f_prev, v_prev;
   for (long i = 0; i < steps; ++i) {
     const Recorded& step_rec = rec[static_cast<std::size_t>(i)];
+    // a joint broken in this step: the body without it, from the state now
+    if (!step_rec.breaks.empty()) {
+      broken.insert(broken.end(), step_rec.breaks.begin(), step_rec.breaks.end());
+      auto next = load_mujoco(m, o, contacts, broken);
+      if (!next) return Error{next.error()};
+      carry_state(sim, *next);
+      sim = std::move(*next);
+    }
+    mjModel* M = sim.model.get();
+    mjData* D = sim.data.get();
     // the motors' laws, after their lag, then any brake (step.cpp's order)
     for (std::size_t e = 0; e < m.effectors.size(); ++e) {
       double sig = step_rec.signals[e];
@@ -229,7 +359,7 @@ Result<MujocoRun> run_mujoco(const CreatureModel& m, const OdeRun& o, const Mujo
         // times its strength toward its rest length; braked, held at its
         // length when the brake began with the brake's share of its strength
         const auto ku = static_cast<std::size_t>(k);
-        const int t = tendon_of[ku];
+        const int t = sim.tendon_of[ku];
         const MuscleModel& mm = m.muscles[ku];
         const double share = step_rec.motors == EvalState::Motors::Held ? 1
                              : step_rec.motors == EvalState::Motors::Off ? cfg.motor.off_brake
@@ -250,9 +380,10 @@ Result<MujocoRun> run_mujoco(const CreatureModel& m, const OdeRun& o, const Mujo
       // a joint's motor by the world's law (physics/motor_law.h); a PD's
       // spring from MuJoCo's angle, its damper the joint's
       const EffectorModel& em = m.effectors[e];
+      const int dof = sim.dof_of[e];
       drives[e] = motor_demand(cfg.motor, m.joints[em.joint], em, sig);
-      if (drives[e].kind == MotorDemand::Kind::Target && dof_of[e] >= 0)
-        drives[e].torque = cfg.motor.kp * (drives[e].target - D->qpos[M->jnt_qposadr[M->dof_jntid[dof_of[e]]]]);
+      if (drives[e].kind == MotorDemand::Kind::Target && dof >= 0)
+        drives[e].torque = cfg.motor.kp * (drives[e].target - D->qpos[M->jnt_qposadr[M->dof_jntid[dof]]]);
       if (step_rec.motors == EvalState::Motors::Held) drives[e] = brake_demand(cfg.motor, em, 1);
       else if (step_rec.motors == EvalState::Motors::Off && cfg.motor.off_brake > 0)
         drives[e] = brake_demand(cfg.motor, em, cfg.motor.off_brake);
@@ -263,9 +394,9 @@ Result<MujocoRun> run_mujoco(const CreatureModel& m, const OdeRun& o, const Mujo
     std::fill(D->qfrc_applied, D->qfrc_applied + M->nv, 0.0);
     vel.clear();
     for (std::size_t e = 0; e < m.effectors.size(); ++e) {
-      if (dof_of[e] < 0) continue;
+      if (sim.dof_of[e] < 0) continue;
       if (drives[e].kind == MotorDemand::Kind::Velocity) vel.push_back(static_cast<int>(e));
-      else D->qfrc_applied[dof_of[e]] += drives[e].torque;
+      else D->qfrc_applied[sim.dof_of[e]] += drives[e].torque;
     }
     if (!vel.empty()) {
       // the velocity motors' forces, solved together as ODE's motor rows are
@@ -279,7 +410,7 @@ Result<MujocoRun> run_mujoco(const CreatureModel& m, const OdeRun& o, const Mujo
       v_free.assign(n, 0.0);
       a_mat.assign(n * n, 0.0);
       v_prev.assign(n, 0.0);
-      auto dof_at = [&](std::size_t c) { return dof_of[static_cast<std::size_t>(vel[c])]; };
+      auto dof_at = [&](std::size_t c) { return sim.dof_of[static_cast<std::size_t>(vel[c])]; };
       auto forward_with = [&](const std::vector<double>& forces) {
         std::copy(base.begin(), base.end(), D->qfrc_applied);
         for (std::size_t c = 0; c < n; ++c) D->qfrc_applied[dof_at(c)] += forces[c];
@@ -333,26 +464,28 @@ Result<MujocoRun> run_mujoco(const CreatureModel& m, const OdeRun& o, const Mujo
     mj_step(M, D);
     bool finite = true;
     for (int k = 0; k < M->nq; ++k) finite = finite && std::isfinite(D->qpos[k]);
-    if (!finite) {
-      g_warnings = nullptr;
-      return Error{"MuJoCo's simulation blew up at t=" + std::to_string(D->time) + " s"};
-    }
-    mj_kinematics(M, D);  // subtree_com of the state after the step
-    mj_comPos(M, D);
-    const Vec3 c = mj_com();
+    if (!finite) return Error{"MuJoCo's simulation blew up at t=" + std::to_string(D->time) + " s"};
+    mj_kinematics(M, D);  // the positions after the step
+    const Vec3 c = tracked();
     r.min_height = std::min(r.min_height, c.z);
     // the joints' angles against ODE's, over the first second
     if (!step_rec.angles.empty())
-      for (std::size_t k = 0; k < qpos_of.size(); ++k)
-        if (qpos_of[k] >= 0)
-          r.first_second_angle_gap = std::max(r.first_second_angle_gap,
-                                              angle_gap(D->qpos[M->jnt_qposadr[qpos_of[k]]], step_rec.angles[k],
-                                                        M->jnt_type[qpos_of[k]] == mjJNT_SLIDE));
+      for (std::size_t k = 0; k < sim.qpos_of.size(); ++k)
+        if (const int id = sim.qpos_of[k]; id >= 0)
+          r.first_second_angle_gap =
+              std::max(r.first_second_angle_gap,
+                       angle_gap(D->qpos[M->jnt_qposadr[id]], step_rec.angles[k], M->jnt_type[id] == mjJNT_SLIDE));
     if (i == o.i_from) mj_from = c;
     if (i == o.i_to) mj_to = c;
+    // the scored part's first touch of the ground after the span began: its landing
+    if (o.i_land >= 0 && !r.landed && i > o.i_from && i <= o.i_to) {
+      for (int k = 0; k < D->ncon && !r.landed; ++k) {
+        const int b1 = M->geom_bodyid[D->contact[k].geom1], b2 = M->geom_bodyid[D->contact[k].geom2];
+        r.landed = (b1 == sim.tracked_body && b2 == 0) || (b2 == sim.tracked_body && b1 == 0);
+      }
+      if (r.landed) r.flight = c - mj_from;
+    }
   }
-  g_warnings = nullptr;
-  mju_user_warning = nullptr;
   r.warnings = std::move(warnings);
   r.displacement = mj_to - mj_from;
   return r;
@@ -370,9 +503,18 @@ Result<CrossSimReport> crosscheck_mujoco(const CreatureModel& m, const Controlle
   r.from = o->from;
   r.to = o->to;
   r.ode = o->displacement;
-  const Vec3 a = horizontal(r.ode);
-  const double la = norm(a);
-  std::vector<double> headings, ratios;
+  r.tracked = o->tracked;
+  r.has_flight = o->i_land >= 0;
+  r.ode_flight = o->flight;
+  r.landing = static_cast<double>(o->i_land + 1) * o->cfg.physics.dt;
+  // MuJoCo's horizontal displacement against ODE's: the angle between them, and the length ratio
+  auto compare = [](Vec3 ode, Vec3 mj, double& heading, double& ratio) {
+    const Vec3 a = horizontal(ode), b = horizontal(mj);
+    const double la = norm(a), lb = norm(b);
+    ratio = la > 0 ? lb / la : 0;
+    heading = la > 0 && lb > 0 ? std::acos(std::clamp(dot(a, b) / (la * lb), -1.0, 1.0)) : 0;
+  };
+  std::vector<double> headings, ratios, flight_headings, flight_ratios;
   for (const MujocoContacts& contacts : kMujocoContacts) {
     auto run = run_mujoco(m, *o, contacts);
     if (!run) return Error{std::string(contacts.name) + ": " + run.error()};
@@ -382,20 +524,27 @@ Result<CrossSimReport> crosscheck_mujoco(const CreatureModel& m, const Controlle
     v.min_height = run->min_height;
     v.first_second_angle_gap = run->first_second_angle_gap;
     v.warnings = std::move(run->warnings);
-    const Vec3 b = horizontal(v.displacement);
-    const double lb = norm(b);
-    v.distance_ratio = la > 0 ? lb / la : 0;
-    v.heading_difference = la > 0 && lb > 0 ? std::acos(std::clamp(dot(a, b) / (la * lb), -1.0, 1.0)) : 0;
+    compare(r.ode, v.displacement, v.heading_difference, v.distance_ratio);
     headings.push_back(v.heading_difference);
     ratios.push_back(v.distance_ratio);
+    if (r.has_flight) {
+      // one that never came down within the span flew all of it
+      v.flight = run->landed ? run->flight : run->displacement;
+      compare(r.ode_flight, v.flight, v.flight_heading_difference, v.flight_ratio);
+      flight_headings.push_back(v.flight_heading_difference);
+      flight_ratios.push_back(v.flight_ratio);
+    }
     r.variants.push_back(std::move(v));
   }
   auto median = [](std::vector<double> x) {
+    if (x.empty()) return 0.0;
     std::sort(x.begin(), x.end());
     const std::size_t n = x.size();
     return n % 2 ? x[n / 2] : 0.5 * (x[n / 2 - 1] + x[n / 2]);
   };
   r.heading_difference = median(headings);
+  r.flight_heading_difference = median(flight_headings);
+  r.flight_ratio = median(flight_ratios);
   r.distance_ratio = median(ratios);
   return r;
 }

@@ -21,16 +21,21 @@ namespace bx {
 /// One MuJoCo replay, under one setting of its contacts.
 struct CrossSimVariant {
   std::string name;   ///< "as exported", "stiffest", "elliptic cone", "stiffest, elliptic cone"
-  Vec3 displacement;  ///< the centre of mass's over the span (m)
+  Vec3 displacement;  ///< the tracked point's over the span (m): CrossSimReport::tracked
   /// Against ODE's horizontal displacement: the angle (rad, 0..pi) and the
   /// length ratio (0 when ODE's is 0).
   double heading_difference = 0, distance_ratio = 0;
-  double min_height = 0;  ///< its centre of mass's lowest (m)
+  double min_height = 0;  ///< the tracked point's lowest (m)
   /// The largest difference of any joint's angle (rad or m) from ODE's over
   /// the first second: whether the motors drive the joints alike before the
   /// two paths part.
   double first_second_angle_gap = 0;
   std::vector<std::string> warnings;  ///< what MuJoCo warned of, if anything
+  /// With CrossSimReport::has_flight: the scored part's flight here, from
+  /// the span's start to its first touch of anything (the whole span if it
+  /// never touched), and its angle and ratio against ODE's flight.
+  Vec3 flight;
+  double flight_heading_difference = 0, flight_ratio = 0;
 };
 
 /// What the two simulators did with the same motor commands.
@@ -38,7 +43,10 @@ struct CrossSimReport {
   double from = 0, to = 0;  ///< the span compared (s): the task's scored span, else the whole run
   double seconds = 0;       ///< simulated in each
   long steps = 0;           ///< physics steps in each (the same dt)
-  Vec3 ode;                 ///< ODE's centre of mass's displacement over the span (m)
+  /// What is compared: the part the task scores (ScenePart::scored: a
+  /// thrown "projectile"), else the creature's "centre of mass".
+  std::string tracked;
+  Vec3 ode;                 ///< ODE's displacement of it over the span (m)
   /// MuJoCo under each contact setting: as the MJCF export writes them
   /// (MuJoCo's defaults: a soft 0.02 s time constant, the pyramidal cone),
   /// the stiffest time constant it allows (2 steps), the elliptic cone, and both.
@@ -46,6 +54,14 @@ struct CrossSimReport {
   /// The medians over the variants: open-loop replays diverge, and which
   /// contact model is nearer ODE's is not settled, so no one of them decides.
   double heading_difference = 0, distance_ratio = 0;
+  /// A scored part's flight (a throw's): from the span's start to its
+  /// landing in ODE (`landing`, s: the first step it touches the ground and
+  /// no part), when it lands; apart from the roll after it, which soft and
+  /// hard contacts treat differently.
+  bool has_flight = false;
+  Vec3 ode_flight;
+  double landing = 0;
+  double flight_heading_difference = 0, flight_ratio = 0;  ///< medians over the variants
 };
 
 /// Evaluates the creature in ODE as `evaluate` does its first trial (the same
@@ -60,8 +76,11 @@ struct CrossSimReport {
 /// damper the joint's (implicit in MuJoCo's Euler step); a muscle its
 /// exported tendon, a spring of its activation times its strength (implicit
 /// integration); once under each of four contact settings
-/// (CrossSimReport::variants). `seconds` > 0 replaces the task's length.
-/// Refused, with the reason: a task that breaks joints or adds props (a throw).
+/// (CrossSimReport::variants). A joint the task breaks (a catapult's
+/// release) breaks at the same step in MuJoCo: the body is reloaded without
+/// it (io/mjcf.h's broken joints) and the state carried over, the freed
+/// part flying free. `seconds` > 0 replaces the task's length. Refused, with
+/// the reason: a task that adds props (a target).
 Result<CrossSimReport> crosscheck_mujoco(const CreatureModel& m, const ControllerModel& controller,
                                          const SimConfig& cfg, std::uint64_t seed, double seconds = 0);
 

@@ -258,7 +258,11 @@ json scene_record_to_json(const SceneRecord& r) {
   }
   if (!r.parts.empty()) {
     json a = json::array();
-    for (const ScenePart& p : r.parts) a.push_back({{"name", p.name}, {"part", p.part}, {"color", p.color}});
+    for (const ScenePart& p : r.parts) {
+      json o{{"name", p.name}, {"part", p.part}, {"color", p.color}};
+      if (p.scored) o["scored"] = true;  // written only when set: older replays read the same
+      a.push_back(std::move(o));
+    }
     j["parts"] = a;
   }
   if (!r.cell_kinds.empty()) {
@@ -315,9 +319,15 @@ Result<SceneRecord> scene_record_from_json(const json& j, const std::string& pat
     for (std::size_t i = 0; i < parts.size(); ++i) {
       const std::string at_ = path + ".parts[" + std::to_string(i) + "]";
       object(parts[i], at_);
-      r.parts.push_back({text(parts[i], at_, "name"),
-                         integer(parts[i], at_, "part", 0, kMaxCells, "expected a part index >= 0"),
-                         color(parts[i], at_, "color")});
+      ScenePart sp{text(parts[i], at_, "name"),
+                   integer(parts[i], at_, "part", 0, kMaxCells, "expected a part index >= 0"),
+                   color(parts[i], at_, "color")};
+      if (parts[i].contains("scored")) {
+        const json& scored = parts[i]["scored"];
+        if (!scored.is_boolean()) fail(at_ + ".scored", "expected true or false", scored);
+        sp.scored = scored.get<bool>();
+      }
+      r.parts.push_back(std::move(sp));
     }
     const json& kinds = list(j, path, "cell_kinds");
     for (std::size_t i = 0; i < kinds.size(); ++i) {

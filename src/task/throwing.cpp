@@ -51,7 +51,10 @@ void ThrowingTask::observe(const Observation& o) {
     return;
   }
   observe(t, o.part_pose(projectile_).p, o.touches_part(projectile_));
-  if (def_.start == ThrowStart::Settled && t - t_begin_ >= def_.seconds - 1e-9) done_ = true;
+  if (!done_ && def_.start == ThrowStart::Settled && t - t_begin_ >= def_.seconds - 1e-9) {
+    done_ = true;
+    t_end_ = t;
+  }
 }
 
 TaskScore ThrowingTask::score(const CreatureModel&) const {
@@ -64,7 +67,7 @@ TaskScore ThrowingTask::score(const CreatureModel&) const {
 void ThrowingTask::record(const Observation&, SceneRecord& out) {
   // what holds throughout: the projectile, the aim task's target
   if (!recorded_items_) {
-    if (projectile_ >= 0) out.parts.push_back({"projectile", projectile_, kProjectileColor});
+    if (projectile_ >= 0) out.parts.push_back({"projectile", projectile_, kProjectileColor, true});
     if (def_.fitness == ThrowFitness::Aim) out.points.push_back({"target", def_.target, kTargetSize, kTargetColor});
     recorded_items_ = true;
   }
@@ -73,9 +76,15 @@ void ThrowingTask::record(const Observation&, SceneRecord& out) {
     out.markers.push_back({"begin", t_begin_});
     recorded_begin_ = true;
   }
+  // the scored span: the projectile's path from its release to its rest
   if (released_ && !recorded_release_) {
     out.markers.push_back({"release", t_release_});
+    out.markers.push_back({std::string(kScoredFrom), t_release_});
     recorded_release_ = true;
+  }
+  if (released_ && done_ && !recorded_end_) {
+    out.markers.push_back({std::string(kScoredTo), t_end_});
+    recorded_end_ = true;
   }
   if (t_touch_end_ >= 0 && !recorded_touch_) {
     out.markers.push_back({"touch end", t_touch_end_});
@@ -96,15 +105,17 @@ void ThrowingTask::observe(double t, Vec3 projectile, bool touched) {
   if (touched && def_.touch_seconds >= 0 && t - t_release_ > def_.touch_seconds + 1e-9) {
     // a push or carry, not a throw: measured where the projectile is
     done_ = true;
-    t_touch_end_ = t;
+    t_touch_end_ = t_end_ = t;
   }
   // the path since the release, one segment per step
   miss_ = std::min(miss_, point_segment_distance(def_.target, last_, projectile));
   // at rest: barely moving, step after step, for rest_seconds
   double moved = norm(projectile - last_);
   still_steps_ = moved < def_.rest_speed * dt_ ? still_steps_ + 1 : 0;
-  if (still_steps_ > 0 && static_cast<double>(still_steps_) * dt_ >= def_.rest_seconds - 1e-9)
+  if (still_steps_ > 0 && static_cast<double>(still_steps_) * dt_ >= def_.rest_seconds - 1e-9) {
     done_ = true;
+    t_end_ = t;
+  }
   last_ = projectile;
 }
 

@@ -83,11 +83,13 @@ class ThrowingTask : public Task {
   bool done() const override { return done_; }
   TaskScore score(const CreatureModel&) const override;
   std::string note() const override;
-  /// The scene (core/scene_record.h): the part "projectile" and, for the
-  /// aim task, the point "target" on the first call; then each moment once
-  /// it has happened, at its own time: "begin" (the throw began: 0 at the
-  /// drop, or once the creature rested), "release", "touch end" (a late
-  /// touch ended the throw).
+  /// The scene (core/scene_record.h): the part "projectile" (scored) and,
+  /// for the aim task, the point "target" on the first call; then each
+  /// moment once it has happened, at its own time: "begin" (the throw began:
+  /// 0 at the drop, or once the creature rested), "release" and "scored
+  /// from" with it, "touch end" (a late touch ended the throw), "scored to"
+  /// (the throw ended after a release: at rest, a late touch, or its time
+  /// up).
   void record(const Observation&, SceneRecord& out) override;
   /// The aim task's metric (TaskScore::metrics): D_t (m), reported once the
   /// projectile was released.
@@ -136,7 +138,9 @@ class ThrowingTask : public Task {
   double miss_ = 0;
   long still_steps_ = 0;  ///< consecutive still steps of dt
   // what record() has appended
-  bool recorded_items_ = false, recorded_begin_ = false, recorded_release_ = false, recorded_touch_ = false;
+  bool recorded_items_ = false, recorded_begin_ = false, recorded_release_ = false, recorded_touch_ = false,
+       recorded_end_ = false;
+  double t_end_ = 0;  ///< s: when the throw ended (done_)
 };
 
 /// Least distance from point p to the segment [a, b].

@@ -124,5 +124,44 @@ TEST(Mjcf, AJointsAngleHasOdesSign) {
   EXPECT_GT(w.joint_position(1, 0), 0.05);
 }
 
+// A broken joint (a catapult's release) is left out: its child heads a free
+// body of its own at the top level, at its place, colliding with every part;
+// the rest of the body is as before.
+TEST(Mjcf, ABrokenJointsChildIsAFreeBodyOfItsOwn) {
+  const bxtest::DevelopedCreature c = bxtest::develop_creature("catapult");
+  ASSERT_TRUE(c.dev.viable());
+  const CreatureModel& cm = *c.dev.model;
+  ASSERT_GE(cm.release_joint, 0);
+  const int projectile = cm.joints[cm.release_joint].child;
+  const int broken[] = {cm.release_joint};
+  Loaded whole, freed;
+  load(creature_mjcf(cm, c.cfg.sim, "catapult"), whole);
+  load(creature_mjcf(cm, c.cfg.sim, "catapult", nullptr, broken), freed);
+  ASSERT_NE(whole.m, nullptr) << whole.error;
+  ASSERT_NE(freed.m, nullptr) << freed.error;
+  EXPECT_EQ(freed.m->nbody, whole.m->nbody);
+  EXPECT_EQ(freed.m->njnt, whole.m->njnt + 1);  // its free joint
+  const int b = mj_name2id(freed.m, mjOBJ_BODY, ("p" + std::to_string(projectile)).c_str());
+  ASSERT_GE(b, 0);
+  EXPECT_EQ(freed.m->body_parentid[b], 0);  // the world's
+  const int j = mj_name2id(freed.m, mjOBJ_JOINT, mjcf_free_joint_name(projectile).c_str());
+  ASSERT_GE(j, 0);
+  EXPECT_EQ(freed.m->jnt_type[j], mjJNT_FREE);
+  EXPECT_EQ(freed.m->jnt_bodyid[j], b);
+  // it collides with every part, whatever self_collision says
+  const int g = freed.m->body_geomadr[b];
+  EXPECT_EQ(freed.m->geom_contype[g] & 1, 1);
+  EXPECT_EQ(freed.m->geom_conaffinity[g] & 2, 2);
+  // at its place: where the whole body has it
+  mjData* dw = mj_makeData(whole.m);
+  mjData* df = mj_makeData(freed.m);
+  mj_forward(whole.m, dw);
+  mj_forward(freed.m, df);
+  const int bw = mj_name2id(whole.m, mjOBJ_BODY, ("p" + std::to_string(projectile)).c_str());
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(df->xpos[3 * b + k], dw->xpos[3 * bw + k], 1e-9) << k;
+  mj_deleteData(dw);
+  mj_deleteData(df);
+}
+
 }  // namespace
 }  // namespace bx

@@ -5,6 +5,7 @@
 
 #include "brain/controller.h"
 #include "io/mujoco_replay.h"
+#include "io/presets.h"
 #include "support/creatures.h"
 
 namespace bx {
@@ -42,6 +43,8 @@ TEST(MujocoReplay, ServoMotorsDriveTheJointsAsInOdeInTheAir) {
 TEST(MujocoReplay, AHingedPairSwingsAlikeAndTheSpanIsTheRun) {
   auto r = in_the_air("hinged_pair", 3, 1.0);
   ASSERT_TRUE(r.ok()) << r.error();
+  EXPECT_EQ(r->tracked, "centre of mass");  // its task scores no part
+  EXPECT_FALSE(r->has_flight);
   for (const CrossSimVariant& v : r->variants) EXPECT_LT(v.first_second_angle_gap, 0.1) << v.name;
   EXPECT_LE(r->from, r->to);
   EXPECT_LE(r->to, r->seconds + 1e-9);
@@ -94,18 +97,47 @@ TEST(MujocoReplay, MusclesSwingTheLimbsAsInOdeInTheAir) {
   for (const CrossSimVariant& v : r->variants) EXPECT_LT(v.first_second_angle_gap, 0.1) << v.name;
 }
 
-// What MJCF cannot carry is refused with the reason, not replayed wrong: a
-// catapult's release breaks a joint.
-TEST(MujocoReplay, AThrowIsRefusedWithTheReason) {
-  auto g = load_genome(std::string(BESTIARY_SOURCE_DIR) + "/creatures/catapult.json");
-  ASSERT_TRUE(g.ok()) << g.error();
+// catapult_thrower under the preset it was evolved in (its step, motors and
+// throw), crosschecked from seed `seed`
+Result<CrossSimReport> thrower(std::uint64_t seed) {
+  auto g = load_genome(std::string(BESTIARY_SOURCE_DIR) + "/creatures/catapult_thrower.json");
+  if (!g) return Error{g.error()};
   const Development dev = develop(*g);
-  ASSERT_TRUE(dev.viable()) << dev.reason;
-  const SimConfig cfg = default_sim_config(*g);
+  if (!dev.viable()) return Error{dev.reason};
+  const Preset* preset = find_preset("chaumont2007-catapult-small");
+  if (!preset) return Error{"no preset chaumont2007-catapult-small"};
+  auto run_cfg = read_run_config(preset->text, preset->name);
+  if (!run_cfg) return Error{run_cfg.error()};
   const CreatureModel& m = *dev.model;
-  auto r = crosscheck_mujoco(m, GraphBrain(m.brain), cfg, 1);
-  ASSERT_FALSE(r.ok());
-  EXPECT_NE(r.error().find("broke a joint"), std::string::npos) << r.error();
+  return crosscheck_mujoco(m, GraphBrain(m.brain), run_cfg->sim, seed);
+}
+
+// A catapult's release breaks its joint in MuJoCo at ODE's step (the body
+// reloaded without it, the state carried over) and the part compared is the
+// task's scored projectile over the throw's span, from the release to its
+// rest. Its flight, to its landing, is compared apart from its roll after:
+// catapult_thrower's block flies 3.31 m in ODE and 2.56-2.90 m in MuJoCo
+// (its arm swings a little slower there), 6-14 degrees off; its roll
+// differs more (the whole throw 0.67-1.49 of ODE's). A release that dropped the block's velocity in the carry would
+// leave it a few centimetres from the arm; one that put it back where it
+// started, metres off.
+TEST(MujocoReplay, AThrowsReleaseCarriesTheBlockOnAndItsFlightIsComparedApart) {
+  auto r = thrower(1);
+  ASSERT_TRUE(r.ok()) << r.error();
+  EXPECT_EQ(r->tracked, "projectile");
+  EXPECT_NEAR(r->from, 0.5, 0.01);  // the release, the throw's scored span's start
+  ASSERT_TRUE(r->has_flight);
+  EXPECT_GT(r->landing, r->from);
+  EXPECT_LE(r->landing, r->to);
+  const double flight = std::hypot(r->ode_flight.x, r->ode_flight.y);
+  EXPECT_GT(flight, 2.0);
+  EXPECT_LE(flight, std::hypot(r->ode.x, r->ode.y) + 1e-9);
+  for (const CrossSimVariant& v : r->variants) {
+    EXPECT_GT(v.first_second_angle_gap, 0) << v.name;
+    EXPECT_GT(v.flight_ratio, 0.6) << v.name;
+    EXPECT_LT(v.flight_ratio, 1.2) << v.name;
+    EXPECT_LT(v.flight_heading_difference, 20 * kPi / 180) << v.name;
+  }
 }
 
 }  // namespace

@@ -174,15 +174,24 @@ TEST(ReplayFile, ACatapultsSceneNamesItsProjectileAndMarksItsRelease) {
   Written w = simulate("catapult.json", 3);
   const json& rec = w.j["scene"]["record"];
   EXPECT_FALSE(w.j.contains("throw"));  // its fields are the record's now
-  EXPECT_EQ(rec["parts"], json::parse(R"([{"name": "projectile", "part": 2, "color": "#ffc61a"}])"));
+  // the projectile, whose path the task scores
+  EXPECT_EQ(rec["parts"], json::parse(R"([{"name": "projectile", "part": 2, "color": "#ffc61a", "scored": true}])"));
   ASSERT_TRUE(w.res.marker("release"));
-  bool release = false;
-  for (const json& m : rec["markers"])
+  bool release = false, from = false;
+  for (const json& m : rec["markers"]) {
     if (m["name"] == "release") {
       release = true;
       EXPECT_NEAR(m["t"].get<double>(), *w.res.marker("release"), 1e-6);
     }
+    // the scored span: from the release to the projectile's rest
+    if (m["name"] == "scored from") {
+      from = true;
+      EXPECT_NEAR(m["t"].get<double>(), *w.res.marker("release"), 1e-6);
+    }
+    if (m["name"] == "scored to") EXPECT_GT(m["t"].get<double>(), *w.res.marker("release"));
+  }
   EXPECT_TRUE(release) << rec;
+  EXPECT_TRUE(from) << rec;
   EXPECT_FALSE(rec.contains("events"));
   // nor has its result a field of its own: the distance is the task's, D_p
   EXPECT_FALSE(w.j["result"].contains("throw_distance"));

@@ -118,7 +118,7 @@ TEST(Throwing, ItsSceneNamesTheProjectileTheTargetAndEachMomentOnce) {
   SceneRecord scene;
   t.record(Nowhere{}, scene);
   ASSERT_EQ(scene.parts.size(), 1u);
-  EXPECT_EQ(scene.parts[0], (ScenePart{"projectile", 2, "#ffc61a"}));
+  EXPECT_EQ(scene.parts[0], (ScenePart{"projectile", 2, "#ffc61a", true}));  // its path is scored
   ASSERT_EQ(scene.points.size(), 1u);
   EXPECT_EQ(scene.points[0], (ScenePoint{"target", {3, 1, 0.075}, 0.12, "#d6336c"}));
   // at the drop the throw begins at 0; nothing is released yet
@@ -128,7 +128,16 @@ TEST(Throwing, ItsSceneNamesTheProjectileTheTargetAndEachMomentOnce) {
   t.observe(0.51, {0.1, 0, 1});
   t.record(Nowhere{}, scene);
   t.record(Nowhere{}, scene);
-  EXPECT_EQ(scene.markers, (std::vector<SceneMarker>{{"begin", 0}, {"release", 0.5}}));
+  // the scored span begins with the release
+  EXPECT_EQ(scene.markers, (std::vector<SceneMarker>{{"begin", 0}, {"release", 0.5}, {"scored from", 0.5}}));
+  // and ends when the projectile rests (rest_seconds of stillness)
+  for (int k = 2; k <= 60 && !t.done(); ++k) t.observe(0.5 + k * 0.01, {0.1, 0, 1});
+  ASSERT_TRUE(t.done());
+  t.record(Nowhere{}, scene);
+  t.record(Nowhere{}, scene);
+  ASSERT_EQ(scene.markers.size(), 4u);
+  EXPECT_EQ(scene.markers[3].name, "scored to");
+  EXPECT_NEAR(scene.markers[3].t, 0.51 + def.rest_seconds, 0.011);
   EXPECT_EQ(scene.parts.size(), 1u);
   EXPECT_EQ(scene.points.size(), 1u);
   EXPECT_TRUE(scene.events.empty());
