@@ -117,7 +117,7 @@ const Golden kGolden[] = {
      "--set evolution.population=10 --set evolution.evaluations=40 --set task.seconds=10",
      "5eef55f87affd293", "7280ee0b58e30015"},
     {"chaumont2007-catapult-small", "--set evolution.population=10 --set evolution.generations=3",
-     "4624cb87364d4351", "c38b7e0df98a6c54"},
+     "4624cb87364d4351", "4b3fe8b250aa4a19"},
     {"sims1994-walker", "--set evolution.population=10 --set evolution.generations=3",
      "92f2a4617151841c", "6e6495f193eaf71a"},
 };
