@@ -13,6 +13,7 @@
 #include "core/math.h"
 #include "develop/creature_model.h"
 #include "physics/physics_def.h"
+#include "physics/world_edits.h"
 
 namespace bx {
 
@@ -47,35 +48,9 @@ struct RayHit {
   WorldEntity entity;   ///< what it struck
 };
 
-/// A point light (lessin2015 III-D). A photoreceptor facing it from d metres
-/// reads strength / (1 + (d / range)^2), times the cosine of the angle
-/// between its direction and the light's, 0 behind it or when any body is in
-/// the way; several lights add, and the reading is held to [0, 1].
-struct Light {
-  Vec3 position;
-  double strength = 1;
-  double range = 1;  ///< m: where its reading has halved
-  friend bool operator==(const Light&, const Light&) = default;
-};
-
-/// A solid the world holds beside the creature and the ground (lessin2015's
-/// targets): shaped as a part is (a cylinder's or capsule's axis along its
-/// pose's x axis, length size.x and diameter size.y), fixed where it is
-/// placed, or turning about the world's vertical through its centre at
-/// `spin` rad/s (counterclockwise seen from above), which nothing the
-/// creature does can slow: it is kinematic, of unlimited mass. Parts collide
-/// with it (with the world's friction), rays hit it; it touches neither the
-/// ground nor other props.
-struct Prop {
-  Shape shape = Shape::Box;
-  Vec3 size{1, 1, 1};
-  Pose pose;
-  double spin = 0;  ///< rad/s about the vertical
-  friend bool operator==(const Prop&, const Prop&) = default;
-};
-
 /// A simulated world holding one creature. Not copyable; one per evaluation.
-class World {
+/// What a task may change in it (WorldEdits) it changes in ODE.
+class World : public WorldEdits {
  public:
   explicit World(const PhysicsDef& def);
   ~World();
@@ -96,7 +71,7 @@ class World {
   /// child part flies free and from then on collides with every part,
   /// whatever self_collision says (it no longer belongs to the creature).
   /// Breaking a broken joint does nothing.
-  void break_joint(int j);
+  void break_joint(int j) override;
   /// Whether joint j has been broken.
   bool joint_broken(int j) const;
 
@@ -154,7 +129,7 @@ class World {
 
   /// Adds a prop (at any time: a task places its props when it needs them)
   /// and returns its index, from 0 in the order they were added.
-  int add_prop(const Prop& p);
+  int add_prop(const Prop& p) override;
   int n_props() const;
   /// Where prop k is now (a spinning one has turned spin x time since it was added).
   Pose prop_pose(int k) const;
@@ -162,7 +137,7 @@ class World {
   bool prop_touched(int k) const;
 
   /// The lights photoreceptors see from now on (a task may move them each step).
-  void set_lights(std::vector<Light> lights);
+  void set_lights(std::vector<Light> lights) override;
   const std::vector<Light>& lights() const;
 
   /// Simulated time (s).

@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "core/text.h"
-#include "physics/world.h"
+#include "physics/world_edits.h"
 
 namespace bx {
 
@@ -32,7 +32,7 @@ std::string FightOrFlightTask::describe() const {
   return std::string(dangerous_ ? "dangerous" : "vulnerable") + " target at " + g_number(inner_.bearing()) + " degrees";
 }
 
-void FightOrFlightTask::act(const CreatureModel& m, std::span<const double> out, World& w, const Observation& o) {
+void FightOrFlightTask::act(const CreatureModel& m, std::span<const double> out, WorldEdits& w, const Observation& o) {
   inner_.act(m, out, w, o);
   const auto light = inner_.light();
   if (!light || !prop_ids_.empty()) return;

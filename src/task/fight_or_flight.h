@@ -64,7 +64,7 @@ class FightOrFlightTask : public Task {
   long max_steps() const override { return inner_.max_steps(); }
   void begin(const Observation& o) override { inner_.begin(o); }
   /// The light (the inner task's), then the target under it once it is on.
-  void act(const CreatureModel& m, std::span<const double> out, World& w, const Observation& o) override;
+  void act(const CreatureModel& m, std::span<const double> out, WorldEdits& w, const Observation& o) override;
   void observe(const Observation& o) override;
   bool controller_on() const override { return inner_.controller_on(); }
   /// The inner task is done, or the creature was destroyed.

@@ -46,7 +46,7 @@ void LightTask::begin_measure(const Observation& o) {
   meter_.start(o.time(), c.z);
 }
 
-void LightTask::act(const CreatureModel&, std::span<const double>, World& w, const Observation&) {
+void LightTask::act(const CreatureModel&, std::span<const double>, WorldEdits& w, const Observation&) {
   if (!measuring() || placed_ || dark_) return;
   w.set_lights({Light{light_, def_.strength, def_.range}});
   placed_ = true;

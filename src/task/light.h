@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "core/math.h"
-#include "physics/world.h"
+#include "physics/world_edits.h"
 #include "task/locomotion.h"
 #include "task/settled.h"
 #include "task/strike.h"
@@ -150,7 +150,7 @@ class LightTask : public SettledTask {
   LightTask(const LightDef& def, const StrikeDef& strike, double dt, int n_parts, int trial);
 
   /// Places the light once measuring has begun (dark until then).
-  void act(const CreatureModel&, std::span<const double>, World& w, const Observation&) override;
+  void act(const CreatureModel&, std::span<const double>, WorldEdits& w, const Observation&) override;
   /// The measured span is over, or (attack) the first strike came.
   bool done() const override { return SettledTask::done() || (def_.goal == LightGoal::Attack && struck()); }
   /// Fitness (LightDef); distance: the end's d (m); metrics: bearing (deg,

@@ -15,7 +15,7 @@
 
 namespace bx {
 
-class World;
+class WorldEdits;
 struct CreatureModel;
 
 /// An axis of the creature's root part's frame: which way is its front
@@ -149,8 +149,9 @@ class Task {
   /// coming step (the creature as one rigid body), whatever the controller.
   virtual bool joints_held() const { return false; }
   /// Before each step: what the controller's task outputs (its last step's,
-  /// ControllerState::task_outputs, n_outputs() of them) do to the world.
-  virtual void act(const CreatureModel&, std::span<const double> outputs, World&, const Observation&) {}
+  /// ControllerState::task_outputs, n_outputs() of them) do to the world
+  /// (physics/world_edits.h: ODE's World, or a replay's in MuJoCo).
+  virtual void act(const CreatureModel&, std::span<const double> outputs, WorldEdits&, const Observation&) {}
   /// After each step.
   virtual void observe(const Observation& o) = 0;
   /// True once the evaluation is over.

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "physics/world.h"
+#include "physics/world_edits.h"
 
 namespace bx {
 
@@ -30,7 +30,7 @@ void ThrowingTask::begin(const Observation& o) {
   stillness_.start(parts_);
 }
 
-void ThrowingTask::act(const CreatureModel&, std::span<const double> outputs, World& w, const Observation& o) {
+void ThrowingTask::act(const CreatureModel&, std::span<const double> outputs, WorldEdits& w, const Observation& o) {
   if (settling_ || released_ || outputs[0] < kFires) return;
   w.break_joint(release_joint_);
   release(o.time(), o.part_pose(projectile_).p);

@@ -75,7 +75,7 @@ class ThrowingTask : public Task {
   int n_outputs() const override { return 1; }
   /// The release breaks the arm-projectile joint before the first step its
   /// output is at least kFires.
-  void act(const CreatureModel& m, std::span<const double> outputs, World& w, const Observation& o) override;
+  void act(const CreatureModel& m, std::span<const double> outputs, WorldEdits& w, const Observation& o) override;
   static constexpr double kFires = 0.5;
   void observe(const Observation& o) override;
   /// True once the projectile has come to rest after its release, the

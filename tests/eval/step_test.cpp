@@ -43,7 +43,7 @@ struct ScriptedTask : Task {
   bool controller_on() const override { return observed() >= off; }
   bool joints_held() const override { return held && observed() < off; }
   bool brain_on() const override { return !wait || observed() >= off; }
-  void act(const CreatureModel&, std::span<const double>, World&, const Observation&) override { log.push_back('a'); }
+  void act(const CreatureModel&, std::span<const double>, WorldEdits&, const Observation&) override { log.push_back('a'); }
   void observe(const Observation& o) override {
     log.push_back('o');
     times.push_back(o.time());
@@ -202,7 +202,7 @@ struct FrequencyTask : ScriptedTask {
   int n_inputs() const override { return 1; }
   void inputs(const Observation&, std::span<double> out) const override { out[0] = hz; }
   int n_outputs() const override { return 1; }
-  void act(const CreatureModel&, std::span<const double> out, World&, const Observation&) override {
+  void act(const CreatureModel&, std::span<const double> out, WorldEdits&, const Observation&) override {
     outputs.push_back(out[0]);
   }
 };

@@ -13,6 +13,7 @@
 #include "eval/task_table.h"
 #include "io/config.h"
 #include "support/creatures.h"
+#include "physics/world.h"
 #include "task/light.h"
 
 namespace bx {

@@ -3,6 +3,7 @@
 // observation; then the config's keys and rules, and once end to end with
 // real physics: lessin_eyes under the four headings, its eyes seeing the
 // light once it is on.
+#include "physics/world.h"
 #include "task/light.h"
 
 #include <gtest/gtest.h>

@@ -67,7 +67,7 @@ void RiverTask::inputs(const Observation& o, std::span<double> out) const {
   }
 }
 
-void RiverTask::act(const CreatureModel&, std::span<const double> outputs, World&, const Observation&) {
+void RiverTask::act(const CreatureModel&, std::span<const double> outputs, WorldEdits&, const Observation&) {
   world_.act(outputs[0]);
   refresh_codes();
 }

@@ -50,7 +50,7 @@ class RiverTask : public Task {
   /// Output 0: the action (RiverController's task output).
   int n_outputs() const override { return 1; }
   /// The action on the agent's cell, then the death test (GridWorld::act).
-  void act(const CreatureModel&, std::span<const double> outputs, World&, const Observation&) override;
+  void act(const CreatureModel&, std::span<const double> outputs, WorldEdits&, const Observation&) override;
   void observe(const Observation& o) override;
   /// Over once the agent died (or the time is up: max_steps).
   bool done() const override { return !world_.alive(); }
