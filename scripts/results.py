@@ -46,8 +46,11 @@ For every run but the river crossing's also `bestiary crosscheck` of its
 best (docs/export.md): its ODE evaluation's motor commands replayed open loop
 in MuJoCo under four contact settings, each as its distance's ratio to ODE's
 and how many degrees its heading is off, their medians and the verdict (the
-same way: within 45 degrees and 0.5-2x); a creature MuJoCo cannot replay
-(muscles, a throw's projectile) says why.
+same way: within 45 degrees and 0.5-2x); for a throw the projectile's, from
+its release to its rest, and its flight to its landing in a table of its own;
+and the task's score in ODE and (the median) in MuJoCo, the same task scoring
+the replay;
+a creature MuJoCo cannot replay (a task's props) says why.
 
 For a run of several stages (an ESP syllabus) instead: per stage, its
 generations, its best in its first and last generation, and `bestiary check`
@@ -166,19 +169,36 @@ def cross_row(preset, seed, run_dir):
     r = sh(["crosscheck", run_dir, "--json"])
     if r.returncode != 0:
         why = r.stderr.strip().split(": cannot replay it in MuJoCo: ")[-1]
-        return f"| {preset} | {seed} | - | - | - | - | - | - | not replayed: {why} |"
+        return f"| {preset} | {seed} | - | - | - | - | - | - | - | not replayed: {why} |", None
     c = json.loads(r.stdout)
     ode = math.hypot(c["ode"][0], c["ode"][1])
     heading = math.degrees(math.atan2(c["ode"][1], c["ode"][0]))
     cells = [f"{v['distance_ratio']:.2f} / {v['heading_difference_deg']:.0f}" for v in c["variants"]]
     verdict = ("moves less than a tenth of its length" if not c["moved"] else
                "the same way" if c["agrees"] else "NOT the same way")
-    return (f"| {preset} | {seed} | {ode:.2f} m at {heading:.0f} | " + " | ".join(cells) +
-            f" | {c['distance_ratio']:.2f} / {c['heading_difference_deg']:.0f} | {verdict} |")
+    score = f"{c['ode_fitness']:.4g} / {c['mujoco_fitness']:.4g}"
+    row = (f"| {preset} | {seed} | {ode:.2f} m at {heading:.0f} | " + " | ".join(cells) +
+           f" | {c['distance_ratio']:.2f} / {c['heading_difference_deg']:.0f} | {score} | {verdict} |")
+    return row, flight_row(preset, seed, c)
+
+
+def flight_row(preset, seed, c):
+    """A thrown part's flight, from its release to its landing, in ODE and in
+    MuJoCo under each contact setting (None when the task scores no part)."""
+    if "ode_flight" not in c:
+        return None
+    f = c["ode_flight"]
+    cells = [f"{v['flight_ratio']:.2f} / {v['flight_heading_difference_deg']:.0f}" for v in c["variants"]]
+    return (f"| {preset} | {seed} | {math.hypot(f[0], f[1]):.2f} m at "
+            f"{math.degrees(math.atan2(f[1], f[0])):.0f}, landing at {c['landing']:.2f} s | " + " | ".join(cells) +
+            f" | {c['flight_ratio']:.2f} / {c['flight_heading_difference_deg']:.0f} |")
 
 
 CROSS_HEADER = ("\n| preset | seed | ODE: distance at heading (deg) | MuJoCo as exported: ratio / degrees off "
-                "| stiffest | elliptic cone | stiffest, elliptic cone | median | MuJoCo |\n|" + "---|" * 9)
+                "| stiffest | elliptic cone | stiffest, elliptic cone | median | task score: ODE / MuJoCo (median) "
+                "| MuJoCo |\n|" + "---|" * 10)
+FLIGHT_HEADER = ("\n| preset | seed | ODE: flight at heading (deg) | MuJoCo as exported: ratio / degrees off "
+                 "| stiffest | elliptic cone | stiffest, elliptic cone | median |\n|" + "---|" * 8)
 
 
 def stage_rows(preset, seed, run_dir, staged, check_set=()):
@@ -444,7 +464,7 @@ def main():
             print(checks[-1], flush=True)
             if not is_river(run_dir):
                 crosses.append(cross_row(preset, seed, run_dir))
-                print(crosses[-1], flush=True)
+                print("\n".join(r for r in crosses[-1] if r), flush=True)
             if is_river(run_dir):
                 rivers.append(river_row(preset, seed, run_dir))
                 print(rivers[-1][0], flush=True)
@@ -477,7 +497,11 @@ def main():
         print("\n".join(checks))
     if crosses:
         print(CROSS_HEADER)
-        print("\n".join(crosses))
+        print("\n".join(row for row, _ in crosses))
+        flights = [f for _, f in crosses if f]
+        if flights:
+            print(FLIGHT_HEADER)
+            print("\n".join(flights))
     if syllabus:
         print("\n| preset | seed | stage | generations | best, first generation | best, last | its id "
               "| other seeds (median) | check |")

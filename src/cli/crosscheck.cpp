@@ -31,6 +31,9 @@ double heading_deg(Vec3 v) { return degrees(std::atan2(v.y, v.x)); }
 
 double planar(Vec3 v) { return std::hypot(v.x, v.y); }
 
+// MuJoCo's score over ODE's (null when ODE's is 0)
+nlohmann::json fitness_ratio(double mujoco, double ode) { return ode != 0 ? nlohmann::json(mujoco / ode) : nlohmann::json(); }
+
 int cmd_crosscheck(const CrosscheckArgs& a) {
   auto subject = resolve_creature(a.target, a.flags);
   if (!subject) return fail(subject.error());
@@ -54,6 +57,10 @@ int cmd_crosscheck(const CrosscheckArgs& a) {
     out["seconds"] = r->seconds;
     out["steps"] = r->steps;
     out["tracked"] = r->tracked;
+    out["ode_fitness"] = r->ode_fitness;
+    out["ode_muscle_work"] = r->ode_muscle_work;
+    out["mujoco_fitness"] = r->mujoco_fitness;
+    out["fitness_ratio"] = fitness_ratio(r->mujoco_fitness, r->ode_fitness);
     out["ode"] = {r->ode.x, r->ode.y, r->ode.z};
     nlohmann::json variants = nlohmann::json::array();
     for (const CrossSimVariant& v : r->variants)
@@ -63,6 +70,11 @@ int cmd_crosscheck(const CrosscheckArgs& a) {
                           {"distance_ratio", v.distance_ratio},
                           {"min_height", v.min_height},
                           {"first_second_angle_gap", v.first_second_angle_gap},
+                          {"fitness", v.fitness},
+                          {"muscle_work", v.muscle_work},
+                          {"fitness_ratio", fitness_ratio(v.fitness, r->ode_fitness)},
+                          {"from", v.from},
+                          {"to", v.to},
                           {"flight", r->has_flight ? nlohmann::json{v.flight.x, v.flight.y, v.flight.z} : nlohmann::json()},
                           {"flight_heading_difference_deg", degrees(v.flight_heading_difference)},
                           {"flight_ratio", v.flight_ratio},
@@ -82,25 +94,30 @@ int cmd_crosscheck(const CrosscheckArgs& a) {
     return 0;
   }
   std::printf("%s, seed %llu\n", subject->label.c_str(), static_cast<unsigned long long>(subject->seed));
-  std::printf("compared over %.2f-%.2f s of %.2f s (%ld steps of %.6g s; the task's scored span)\n", r->from, r->to,
-              r->seconds, r->steps, sim.physics.dt);
-  std::printf("compared: the %s's horizontal displacement\n", r->tracked.c_str());
-  std::printf("ODE, closed loop: %.3f m at heading %.1f deg\n", planar(r->ode), heading_deg(r->ode));
-  std::printf("MuJoCo, ODE's motor commands open loop, by its contacts:\n");
+  std::printf("ODE, closed loop: %.2f s (%ld steps of %.6g s); task score %.6g; over the task's scored span "
+              "(%.2f-%.2f s) its %s moved %.3f m at heading %.1f deg\n",
+              r->seconds, r->steps, sim.physics.dt, r->ode_fitness, r->from, r->to, r->tracked.c_str(),
+              planar(r->ode), heading_deg(r->ode));
+  if (!creature->body->muscles.empty()) std::printf("  its muscles' work: %.4g J\n", r->ode_muscle_work);
+  if (r->has_flight)
+    std::printf("  its flight, until it first touches the ground (%.2f s): %.3f m at heading %.1f deg\n", r->landing,
+                planar(r->ode_flight), heading_deg(r->ode_flight));
+  std::printf("MuJoCo, ODE's motor commands open loop, the same task scoring it, by its contacts:\n");
   for (const CrossSimVariant& v : r->variants) {
-    std::printf("  %-24s %6.3f m at heading %6.1f deg: %5.1f deg off, ratio %.2f; joints %.3f rad apart in 1 s\n",
-                v.name.c_str(), planar(v.displacement), heading_deg(v.displacement), degrees(v.heading_difference),
-                v.distance_ratio, v.first_second_angle_gap);
+    std::printf("  %s: task score %.6g, scored %.2f-%.2f s", v.name.c_str(), v.fitness, v.from, v.to);
+    if (!creature->body->muscles.empty()) std::printf("; its muscles' work %.4g J", v.muscle_work);
+    std::printf("\n");
+    std::printf("    %6.3f m at heading %6.1f deg: %5.1f deg off, ratio %.2f; joints %.3f rad apart in 1 s\n",
+                planar(v.displacement), heading_deg(v.displacement), degrees(v.heading_difference), v.distance_ratio,
+                v.first_second_angle_gap);
     if (r->has_flight)
-      std::printf("  %-24s flight %6.3f m at heading %6.1f deg: %5.1f deg off, ratio %.2f\n", "", planar(v.flight),
+      std::printf("    flight %.3f m at heading %.1f deg: %.1f deg off, ratio %.2f\n", planar(v.flight),
                   heading_deg(v.flight), degrees(v.flight_heading_difference), v.flight_ratio);
     for (const std::string& w : v.warnings) std::printf("    MuJoCo warned: %s\n", w.c_str());
   }
+  std::printf("task score: %.6g in ODE, median %.6g in MuJoCo\n", r->ode_fitness, r->mujoco_fitness);
   if (r->has_flight)
-    std::printf("its flight (until the %s first touches the ground: %.2f s in ODE): %.3f m at heading %.1f deg in ODE; "
-                "median %.1f deg off, ratio %.2f\n",
-                r->tracked.c_str(), r->landing, planar(r->ode_flight), heading_deg(r->ode_flight),
-                degrees(r->flight_heading_difference), r->flight_ratio);
+    std::printf("flight: median %.1f deg off, ratio %.2f\n", degrees(r->flight_heading_difference), r->flight_ratio);
   if (!moved) {
     std::printf("it moves less than a tenth of its length (%.3f m) in ODE over that span: nothing to compare\n",
                 creature->body->body_length());

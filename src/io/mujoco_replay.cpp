@@ -28,8 +28,8 @@ struct Recorded {
   std::vector<double> signals;
   Vec3 tracked;  // the scored part's centre, else the creature's centre of mass
   std::vector<double> angles;  // every joint's dofs in turn, over the first kAngleSpan (else empty)
-  std::vector<int> breaks;     // the joints the task broke before this step's physics
-  bool landed = false;         // the scored part touched the ground, and no part, in this step
+  std::vector<double> outputs;  // the controller's task outputs the task acted on before the step
+  bool landed = false;          // the scored part touched the ground, and no part, in this step
 };
 
 struct MjDeleter {
@@ -59,6 +59,11 @@ double angle_gap(double a, double b, bool linear) {
 // What the ODE evaluation left for the replay.
 struct OdeRun {
   SimConfig cfg;  // as evaluated (the seed's motor lag drawn)
+  std::uint64_t seed = 0;
+  Vec3 front;     // the creature's front in its root's frame
+  bool cut = false;  // stopped at a given length, not where the task ends
+  double fitness = 0;  // the task's score
+  double muscle_work = 0;  // J
   std::vector<Recorded> rec;
   Pose root0;
   std::vector<double> angles0;
@@ -88,6 +93,9 @@ constexpr MujocoContacts kMujocoContacts[] = {
 
 // What one MuJoCo replay did.
 struct MujocoRun {
+  double fitness = 0;  // the task's score of the replay
+  double muscle_work = 0;  // J
+  double from = 0, to = 0;  // the scored span its task marked (s)
   Vec3 displacement;  // of the tracked point over the scored span
   bool landed = false;
   Vec3 flight;  // of the scored part from the span's start to its landing, if it landed
@@ -110,6 +118,9 @@ Result<OdeRun> run_ode(const CreatureModel& m, const ControllerModel& controller
   auto task = make_task(m, cfg, seed, 0);
   if (!task) return Error{task.error()};
   EvalState s(m, controller, cfg, std::move(*task), {draw.yaw, draw.lift});
+  o.seed = seed;
+  o.front = s.front;
+  o.cut = seconds > 0;
   // the scene as a replay records it: before the first step and after each
   SceneRecord scene;
   record_scene(m, s, scene);
@@ -124,7 +135,6 @@ Result<OdeRun> run_ode(const CreatureModel& m, const ControllerModel& controller
   for (int j = 0; j < static_cast<int>(m.joints.size()); ++j)
     for (int k = 0; k < joint_dofs(m.joints[j].type); ++k) o.angles0.push_back(s.world.joint_position(j, k));
   o.tracked0 = tracked();
-  std::vector<bool> broken(m.joints.size(), false);
   const long max_steps =
       seconds > 0 ? static_cast<long>(std::llround(seconds / cfg.physics.dt)) : s.task->max_steps();
   std::vector<Recorded>& rec = o.rec;
@@ -137,20 +147,16 @@ Result<OdeRun> run_ode(const CreatureModel& m, const ControllerModel& controller
     if (s.world.time() <= kAngleSpan + 1e-9)
       for (int j = 0; j < static_cast<int>(m.joints.size()); ++j)
         for (int k = 0; k < joint_dofs(m.joints[j].type); ++k) angles.push_back(s.world.joint_position(j, k));
-    // a joint the task broke in this step (before its physics: Task::act)
-    std::vector<int> breaks;
-    for (int j = 0; j < static_cast<int>(m.joints.size()); ++j)
-      if (!broken[j] && s.world.joint_broken(j)) {
-        broken[j] = true;
-        breaks.push_back(j);
-      }
     // touching something, but no part of the creature: the ground
     const bool landed = o.scored_part >= 0 && s.world.contact_mask(o.scored_part) != 0 &&
                         !s.world.touches_part(o.scored_part);
+    const std::span<const double> outputs = s.controller->task_outputs();
     rec.push_back({s.motors, std::vector<double>(s.signals.begin(), s.signals.end()), tracked(), std::move(angles),
-                   std::move(breaks), landed});
+                   std::vector<double>(outputs.begin(), outputs.end()), landed});
   }
   if (s.world.n_props() > 0) return Error{"its task places props in the world (a target), which MJCF does not carry"};
+  o.fitness = s.task->score(m).fitness;
+  o.muscle_work = s.world.muscle_work();
   // the scored span, as the task marks it
   const long steps = static_cast<long>(rec.size());
   o.from = 0;
@@ -183,6 +189,7 @@ struct MjSim {
   std::vector<int> dof_of;     // each effector's degree of freedom (-1: a muscle's, or none)
   std::vector<int> qpos_of;    // each joint dof's MuJoCo joint, in the creature's order (-1: none)
   std::vector<int> tendon_of;  // each muscle's tendon
+  std::vector<int> body_of;    // each part's body
   int tracked_body = -1;       // the scored part's body, else -1
 };
 
@@ -230,10 +237,11 @@ Result<MjSim> load_mujoco(const CreatureModel& m, const OdeRun& o, const MujocoC
     sim.tendon_of[k] = mj_name2id(M, mjOBJ_TENDON, mjcf_muscle_name(static_cast<int>(k)).c_str());
     if (sim.tendon_of[k] < 0) return Error{"the exported body lacks muscle " + std::to_string(k) + "'s tendon"};
   }
-  if (o.scored_part >= 0) {
-    sim.tracked_body = mj_name2id(M, mjOBJ_BODY, ("p" + std::to_string(o.scored_part)).c_str());
-    if (sim.tracked_body < 0) return Error{"the exported body lacks part " + std::to_string(o.scored_part)};
+  for (int i = 0; i < m.n_parts(); ++i) {
+    sim.body_of.push_back(mj_name2id(M, mjOBJ_BODY, ("p" + std::to_string(i)).c_str()));
+    if (sim.body_of.back() < 0) return Error{"the exported body lacks part " + std::to_string(i)};
   }
+  if (o.scored_part >= 0) sim.tracked_body = sim.body_of[static_cast<std::size_t>(o.scored_part)];
   return sim;
 }
 
@@ -277,16 +285,88 @@ void carry_state(MjSim& from, MjSim& to) {
   mj_forward(B, b);
 }
 
-// MuJoCo, open loop: the exported body, its contacts as `contacts` says; at
-// each step where ODE's task broke a joint, the body reloaded without it and
-// the state carried over
+// What the task reads of MuJoCo's world (Task's Observation), as
+// WorldObservation reads ODE's: the body of each part by its name "p<i>".
+class MujocoObservation : public Observation {
+ public:
+  MujocoObservation(const CreatureModel& m, const MjSim& sim, Vec3 front, const double& muscle_work)
+      : m_(m), sim_(sim), front_(front), muscle_work_(muscle_work) {}
+  double time() const override { return sim_.data->time; }
+  Vec3 centre_of_mass() const override {
+    const mjModel* M = sim_.model.get();
+    const mjData* D = sim_.data.get();
+    Vec3 c;
+    double mass = 0;
+    for (int b = 1; b < M->nbody; ++b) {
+      const double* p = D->xipos + 3 * b;
+      c = c + M->body_mass[b] * Vec3{p[0], p[1], p[2]};
+      mass += M->body_mass[b];
+    }
+    return mass > 0 ? (1.0 / mass) * c : c;
+  }
+  int n_parts() const override { return m_.n_parts(); }
+  Pose part_pose(int i) const override {
+    const int b = sim_.body_of[static_cast<std::size_t>(i)];
+    const double* p = sim_.data->xpos + 3 * b;
+    const double* R = sim_.data->xmat + 9 * b;
+    Pose pose;
+    pose.p = {p[0], p[1], p[2]};
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) pose.R.m[r][c] = R[3 * r + c];
+    return pose;
+  }
+  // part i against any other part of the creature in the last step
+  bool touches_part(int i) const override {
+    const mjModel* M = sim_.model.get();
+    const mjData* D = sim_.data.get();
+    const int b = sim_.body_of[static_cast<std::size_t>(i)];
+    for (int k = 0; k < D->ncon; ++k) {
+      const int b1 = M->geom_bodyid[D->contact[k].geom1], b2 = M->geom_bodyid[D->contact[k].geom2];
+      if ((b1 == b && b2 != 0 && b2 != b) || (b2 == b && b1 != 0 && b1 != b)) return true;
+    }
+    return false;
+  }
+  double muscle_work() const override { return muscle_work_; }
+  Vec3 front() const override { return front_; }
+
+ private:
+  const CreatureModel& m_;
+  const MjSim& sim_;
+  Vec3 front_;
+  const double& muscle_work_;
+};
+
+// What the task changes in MuJoCo's world: a broken joint waits for the
+// replay to reload the body without it; props are not carried (refused);
+// lights matter to photoreceptors only, which an open-loop replay does not read.
+class MujocoEdits : public WorldEdits {
+ public:
+  void break_joint(int j) override {
+    if (std::find(broken.begin(), broken.end(), j) == broken.end()) {
+      broken.push_back(j);
+      pending = true;
+    }
+  }
+  int add_prop(const Prop&) override { return props++; }
+  void set_lights(std::vector<Light>) override {}
+  std::vector<int> broken;
+  bool pending = false;
+  int props = 0;
+};
+
+// MuJoCo, open loop: the exported body, its contacts as `contacts` says,
+// ODE's motor commands step by step, and the same task (made from the same
+// seed) acting on ODE's task outputs and scoring what MuJoCo does: a joint
+// it breaks is left out of a body reloaded then, the state carried over.
+// Past ODE's last step, while MuJoCo's task has not ended (a block still
+// rolling), the last step's commands go on, up to the task's length.
 Result<MujocoRun> run_mujoco(const CreatureModel& m, const OdeRun& o, const MujocoContacts& contacts) {
   const SimConfig& cfg = o.cfg;
   const std::vector<Recorded>& rec = o.rec;
-  const long steps = static_cast<long>(rec.size());
+  const long recorded = static_cast<long>(rec.size());
   MujocoRun r;
-  std::vector<int> broken;
-  auto loaded = load_mujoco(m, o, contacts, broken);
+  MujocoEdits edits;
+  auto loaded = load_mujoco(m, o, contacts, edits.broken);
   if (!loaded) return Error{loaded.error()};
   MjSim sim = std::move(*loaded);
   {
@@ -311,39 +391,37 @@ Result<MujocoRun> run_mujoco(const CreatureModel& m, const OdeRun& o, const Mujo
     }
   } unhook;
   mj_forward(sim.model.get(), sim.data.get());
-  // the tracked point: the scored part's centre, else the centre of mass of every part
-  auto tracked = [&] {
-    const mjModel* M = sim.model.get();
-    const mjData* D = sim.data.get();
-    if (sim.tracked_body >= 0) {
-      const double* p = D->xpos + 3 * sim.tracked_body;
-      return Vec3{p[0], p[1], p[2]};
-    }
-    Vec3 c;
-    double mass = 0;
-    for (int b = 1; b < M->nbody; ++b) {
-      const double* p = D->xipos + 3 * b;
-      c = c + M->body_mass[b] * Vec3{p[0], p[1], p[2]};
-      mass += M->body_mass[b];
-    }
-    return mass > 0 ? (1.0 / mass) * c : c;
-  };
-  const Vec3 mj_start = tracked();
-  Vec3 mj_from = mj_start, mj_to = mj_start;
-  r.min_height = mj_start.z;
+  double muscle_work = 0;
+  const MujocoObservation obs(m, sim, o.front, muscle_work);
+  auto task = make_task(m, cfg, o.seed, 0);
+  if (!task) return Error{task.error()};
+  Task& t = **task;
+  t.begin(obs);
+  SceneRecord scene;
+  t.record(obs, scene);
+  // the tracked point after each step (at [0]: the start)
+  auto tracked = [&] { return sim.tracked_body >= 0 ? obs.part_pose(o.scored_part).p : obs.centre_of_mass(); };
+  std::vector<Vec3> path{tracked()};
+  std::vector<bool> landed{false};
+  r.min_height = path[0].z;
 
   const double dt = cfg.physics.dt;
   const double lag = motor_lag_share(dt, cfg.motor.response_time);
+  const long longest = o.cut || recorded == 0 ? recorded : std::max(recorded, t.max_steps());
   std::vector<double> lagged(m.effectors.size(), 0.0);
   std::vector<MotorDemand> drives(m.effectors.size());
   std::vector<int> vel;  // effectors driven as velocity motors this step
   std::vector<double> a_mat, f, v_free, base, probe, f_prev, v_prev;
-  for (long i = 0; i < steps; ++i) {
-    const Recorded& step_rec = rec[static_cast<std::size_t>(i)];
-    // a joint broken in this step: the body without it, from the state now
-    if (!step_rec.breaks.empty()) {
-      broken.insert(broken.end(), step_rec.breaks.begin(), step_rec.breaks.end());
-      auto next = load_mujoco(m, o, contacts, broken);
+  for (long i = 0; i < longest && (i < recorded || !t.done()); ++i) {
+    // ODE's commands of this step, or past ODE's end its last
+    const Recorded& step_rec = rec[static_cast<std::size_t>(std::min(i, recorded - 1))];
+    // what the task does with the task outputs ODE's controller gave; a
+    // joint it broke: the body without it, from the state now
+    t.act(m, step_rec.outputs, edits, obs);
+    if (edits.props > 0) return Error{"its task places props in the world (a target), which MJCF does not carry"};
+    if (edits.pending) {
+      edits.pending = false;
+      auto next = load_mujoco(m, o, contacts, edits.broken);
       if (!next) return Error{next.error()};
       carry_state(sim, *next);
       sim = std::move(*next);
@@ -466,28 +544,58 @@ Result<MujocoRun> run_mujoco(const CreatureModel& m, const OdeRun& o, const Mujo
     for (int k = 0; k < M->nq; ++k) finite = finite && std::isfinite(D->qpos[k]);
     if (!finite) return Error{"MuJoCo's simulation blew up at t=" + std::to_string(D->time) + " s"};
     mj_kinematics(M, D);  // the positions after the step
+    // the muscles' work (World::muscle_work): each tendon's spring and
+    // damper force times its rate, |power| x dt
+    if (!sim.tendon_of.empty()) {
+      mj_comPos(M, D);
+      mj_tendon(M, D);
+      mj_transmission(M, D);
+      mj_fwdVelocity(M, D);
+    }
+    for (std::size_t k = 0; k < sim.tendon_of.size(); ++k) {
+      const int tn = sim.tendon_of[k];
+      const double force = -M->tendon_stiffness[tn] * (D->ten_length[tn] - M->tendon_lengthspring[tn]) -
+                           M->tendon_damping[tn] * D->ten_velocity[tn];
+      muscle_work += std::abs(force * D->ten_velocity[tn]) * dt;
+    }
+    if (!t.done()) t.observe(obs);
+    t.record(obs, scene);
     const Vec3 c = tracked();
+    path.push_back(c);
     r.min_height = std::min(r.min_height, c.z);
+    // the scored part on the ground and touching no part
+    bool down = false;
+    if (sim.tracked_body >= 0 && !obs.touches_part(o.scored_part))
+      for (int k = 0; k < D->ncon && !down; ++k) {
+        const int b1 = M->geom_bodyid[D->contact[k].geom1], b2 = M->geom_bodyid[D->contact[k].geom2];
+        down = (b1 == sim.tracked_body && b2 == 0) || (b2 == sim.tracked_body && b1 == 0);
+      }
+    landed.push_back(down);
     // the joints' angles against ODE's, over the first second
-    if (!step_rec.angles.empty())
+    if (i < recorded && !step_rec.angles.empty())
       for (std::size_t k = 0; k < sim.qpos_of.size(); ++k)
         if (const int id = sim.qpos_of[k]; id >= 0)
           r.first_second_angle_gap =
               std::max(r.first_second_angle_gap,
                        angle_gap(D->qpos[M->jnt_qposadr[id]], step_rec.angles[k], M->jnt_type[id] == mjJNT_SLIDE));
-    if (i == o.i_from) mj_from = c;
-    if (i == o.i_to) mj_to = c;
-    // the scored part's first touch of the ground after the span began: its landing
-    if (o.i_land >= 0 && !r.landed && i > o.i_from && i <= o.i_to) {
-      for (int k = 0; k < D->ncon && !r.landed; ++k) {
-        const int b1 = M->geom_bodyid[D->contact[k].geom1], b2 = M->geom_bodyid[D->contact[k].geom2];
-        r.landed = (b1 == sim.tracked_body && b2 == 0) || (b2 == sim.tracked_body && b1 == 0);
-      }
-      if (r.landed) r.flight = c - mj_from;
-    }
   }
+  r.fitness = t.score(m).fitness;
+  r.muscle_work = muscle_work;
+  // the span MuJoCo's task scored, by its own markers, and the flight in it
+  const long steps = static_cast<long>(path.size()) - 1;
+  r.from = scene.marker(kScoredFrom).value_or(0);
+  r.to = scene.marker(kScoredTo).value_or(static_cast<double>(steps) * dt);
+  auto index_at = [&](double time) {  // the path's entry at or after `time` ([0]: the start)
+    return std::clamp(static_cast<long>(std::ceil(time / dt - 1e-9)), 0L, steps);
+  };
+  const long i_from = index_at(r.from), i_to = index_at(r.to);
+  r.displacement = path[static_cast<std::size_t>(i_to)] - path[static_cast<std::size_t>(i_from)];
+  for (long k = i_from + 1; k <= i_to && !r.landed; ++k)
+    if (landed[static_cast<std::size_t>(k)]) {
+      r.landed = true;
+      r.flight = path[static_cast<std::size_t>(k)] - path[static_cast<std::size_t>(i_from)];
+    }
   r.warnings = std::move(warnings);
-  r.displacement = mj_to - mj_from;
   return r;
 }
 
@@ -504,6 +612,8 @@ Result<CrossSimReport> crosscheck_mujoco(const CreatureModel& m, const Controlle
   r.to = o->to;
   r.ode = o->displacement;
   r.tracked = o->tracked;
+  r.ode_fitness = o->fitness;
+  r.ode_muscle_work = o->muscle_work;
   r.has_flight = o->i_land >= 0;
   r.ode_flight = o->flight;
   r.landing = static_cast<double>(o->i_land + 1) * o->cfg.physics.dt;
@@ -514,13 +624,18 @@ Result<CrossSimReport> crosscheck_mujoco(const CreatureModel& m, const Controlle
     ratio = la > 0 ? lb / la : 0;
     heading = la > 0 && lb > 0 ? std::acos(std::clamp(dot(a, b) / (la * lb), -1.0, 1.0)) : 0;
   };
-  std::vector<double> headings, ratios, flight_headings, flight_ratios;
+  std::vector<double> headings, ratios, flight_headings, flight_ratios, fitnesses;
   for (const MujocoContacts& contacts : kMujocoContacts) {
     auto run = run_mujoco(m, *o, contacts);
     if (!run) return Error{std::string(contacts.name) + ": " + run.error()};
     CrossSimVariant v;
     v.name = contacts.name;
     v.displacement = run->displacement;
+    v.fitness = run->fitness;
+    v.muscle_work = run->muscle_work;
+    v.from = run->from;
+    v.to = run->to;
+    fitnesses.push_back(v.fitness);
     v.min_height = run->min_height;
     v.first_second_angle_gap = run->first_second_angle_gap;
     v.warnings = std::move(run->warnings);
@@ -543,6 +658,7 @@ Result<CrossSimReport> crosscheck_mujoco(const CreatureModel& m, const Controlle
     return n % 2 ? x[n / 2] : 0.5 * (x[n / 2 - 1] + x[n / 2]);
   };
   r.heading_difference = median(headings);
+  r.mujoco_fitness = median(fitnesses);
   r.flight_heading_difference = median(flight_headings);
   r.flight_ratio = median(flight_ratios);
   r.distance_ratio = median(ratios);

@@ -21,6 +21,13 @@ namespace bx {
 /// One MuJoCo replay, under one setting of its contacts.
 struct CrossSimVariant {
   std::string name;   ///< "as exported", "stiffest", "elliptic cone", "stiffest, elliptic cone"
+  /// The task's score of what the creature did in MuJoCo (the same task,
+  /// made from the same seed, reading MuJoCo's world), and the span it
+  /// scored there (s: its own markers, else the whole replay).
+  double fitness = 0, from = 0, to = 0;
+  /// The work its muscles did (J, as World::muscle_work: |power| x dt of
+  /// each tendon's spring and damper), which lessin2015's efficiency prices.
+  double muscle_work = 0;
   Vec3 displacement;  ///< the tracked point's over the span (m): CrossSimReport::tracked
   /// Against ODE's horizontal displacement: the angle (rad, 0..pi) and the
   /// length ratio (0 when ODE's is 0).
@@ -47,6 +54,10 @@ struct CrossSimReport {
   /// thrown "projectile"), else the creature's "centre of mass".
   std::string tracked;
   Vec3 ode;                 ///< ODE's displacement of it over the span (m)
+  /// The task's score in ODE (its first trial's), and the median of its
+  /// scores in MuJoCo (CrossSimVariant::fitness).
+  double ode_fitness = 0, mujoco_fitness = 0;
+  double ode_muscle_work = 0;  ///< J, in ODE (World::muscle_work)
   /// MuJoCo under each contact setting: as the MJCF export writes them
   /// (MuJoCo's defaults: a soft 0.02 s time constant, the pyramidal cone),
   /// the stiffest time constant it allows (2 steps), the elliptic cone, and both.
