@@ -408,16 +408,35 @@ Result<MujocoRun> run_mujoco(const CreatureModel& m, const OdeRun& o, const Mujo
   const double dt = cfg.physics.dt;
   const double lag = motor_lag_share(dt, cfg.motor.response_time);
   const long longest = o.cut || recorded == 0 ? recorded : std::max(recorded, t.max_steps());
+  // the steps ODE's controller drove the motors in: MuJoCo's task decides
+  // when its own do (after its own settling), and each takes the next of
+  // ODE's, so the gait starts from rest in both
+  std::vector<long> driven;
+  for (long i = 0; i < recorded; ++i)
+    if (rec[static_cast<std::size_t>(i)].motors == EvalState::Motors::Driven) driven.push_back(i);
+  std::size_t cursor = 0;
+  const std::vector<double> zeros(m.effectors.size(), 0.0);
   std::vector<double> lagged(m.effectors.size(), 0.0);
   std::vector<MotorDemand> drives(m.effectors.size());
   std::vector<int> vel;  // effectors driven as velocity motors this step
   std::vector<double> a_mat, f, v_free, base, probe, f_prev, v_prev;
-  for (long i = 0; i < longest && (i < recorded || !t.done()); ++i) {
-    // ODE's commands of this step, or past ODE's end its last
-    const Recorded& step_rec = rec[static_cast<std::size_t>(std::min(i, recorded - 1))];
-    // what the task does with the task outputs ODE's controller gave; a
-    // joint it broke: the body without it, from the state now
-    t.act(m, step_rec.outputs, edits, obs);
+  for (long i = 0; i < longest && (o.cut || !t.done()); ++i) {
+    // the motors as the task has them now (step.cpp: held, off, or driven
+    // by ODE's next driven step's signals), and the task outputs then
+    const bool on = t.controller_on(), held = t.joints_held();
+    const EvalState::Motors mode = held ? EvalState::Motors::Held : on ? EvalState::Motors::Driven
+                                                                       : EvalState::Motors::Off;
+    const Recorded* from_ode = nullptr;  // the ODE step whose signals drive this one
+    if (on && !driven.empty()) {
+      from_ode = &rec[static_cast<std::size_t>(driven[std::min(cursor, driven.size() - 1)])];
+      ++cursor;
+    }
+    const Recorded* last = !driven.empty() && cursor > 0
+                                ? &rec[static_cast<std::size_t>(driven[std::min(cursor, driven.size()) - 1])]
+                                : &rec[0];
+    const std::vector<double>& signals = mode == EvalState::Motors::Driven && from_ode ? from_ode->signals : zeros;
+    const Recorded* step_rec = i < recorded ? &rec[static_cast<std::size_t>(i)] : nullptr;  // for the angles
+    t.act(m, last->outputs, edits, obs);
     if (edits.props > 0) return Error{"its task places props in the world (a target), which MJCF does not carry"};
     if (edits.pending) {
       edits.pending = false;
@@ -430,7 +449,7 @@ Result<MujocoRun> run_mujoco(const CreatureModel& m, const OdeRun& o, const Mujo
     mjData* D = sim.data.get();
     // the motors' laws, after their lag, then any brake (step.cpp's order)
     for (std::size_t e = 0; e < m.effectors.size(); ++e) {
-      double sig = step_rec.signals[e];
+      double sig = signals[e];
       if (lag > 0) sig = lagged[e] += lag * (sig - lagged[e]);
       if (const int k = m.effectors[e].muscle; k >= 0) {
         // a muscle (physics/actuators.cpp's row): a spring of its activation
@@ -439,8 +458,8 @@ Result<MujocoRun> run_mujoco(const CreatureModel& m, const OdeRun& o, const Mujo
         const auto ku = static_cast<std::size_t>(k);
         const int t = sim.tendon_of[ku];
         const MuscleModel& mm = m.muscles[ku];
-        const double share = step_rec.motors == EvalState::Motors::Held ? 1
-                             : step_rec.motors == EvalState::Motors::Off ? cfg.motor.off_brake
+        const double share = mode == EvalState::Motors::Held ? 1
+                             : mode == EvalState::Motors::Off ? cfg.motor.off_brake
                                                                           : 0;
         if (share > 0) {
           if (std::isnan(muscle_hold[ku])) muscle_hold[ku] = D->ten_length[t];
@@ -462,8 +481,8 @@ Result<MujocoRun> run_mujoco(const CreatureModel& m, const OdeRun& o, const Mujo
       drives[e] = motor_demand(cfg.motor, m.joints[em.joint], em, sig);
       if (drives[e].kind == MotorDemand::Kind::Target && dof >= 0)
         drives[e].torque = cfg.motor.kp * (drives[e].target - D->qpos[M->jnt_qposadr[M->dof_jntid[dof]]]);
-      if (step_rec.motors == EvalState::Motors::Held) drives[e] = brake_demand(cfg.motor, em, 1);
-      else if (step_rec.motors == EvalState::Motors::Off && cfg.motor.off_brake > 0)
+      if (mode == EvalState::Motors::Held) drives[e] = brake_demand(cfg.motor, em, 1);
+      else if (mode == EvalState::Motors::Off && cfg.motor.off_brake > 0)
         drives[e] = brake_demand(cfg.motor, em, cfg.motor.off_brake);
     }
     // torques first; then the velocity motors' forces, solved together
@@ -572,12 +591,12 @@ Result<MujocoRun> run_mujoco(const CreatureModel& m, const OdeRun& o, const Mujo
       }
     landed.push_back(down);
     // the joints' angles against ODE's, over the first second
-    if (i < recorded && !step_rec.angles.empty())
+    if (step_rec && !step_rec->angles.empty())
       for (std::size_t k = 0; k < sim.qpos_of.size(); ++k)
         if (const int id = sim.qpos_of[k]; id >= 0)
           r.first_second_angle_gap =
               std::max(r.first_second_angle_gap,
-                       angle_gap(D->qpos[M->jnt_qposadr[id]], step_rec.angles[k], M->jnt_type[id] == mjJNT_SLIDE));
+                       angle_gap(D->qpos[M->jnt_qposadr[id]], step_rec->angles[k], M->jnt_type[id] == mjJNT_SLIDE));
   }
   r.fitness = t.score(m).fitness;
   r.muscle_work = muscle_work;
