@@ -50,7 +50,7 @@ same way: within 45 degrees and 0.5-2x); for a throw the projectile's, from
 its release to its rest, and its flight to its landing in a table of its own;
 and the task's score in ODE and (the median) in MuJoCo, the same task scoring
 the replay;
-a creature MuJoCo cannot replay (a task's props) says why.
+a creature MuJoCo cannot replay says why.
 
 For a run of several stages (an ESP syllabus) instead: per stage, its
 generations, its best in its first and last generation, and `bestiary check`

@@ -57,6 +57,17 @@ std::string mjcf_muscle_name(int muscle) {
   return mn;
 }
 
+std::string mjcf_prop_body(const Prop& p, int k) {
+  PartModel shape;  // geom() writes a part's shape; a mocap body's mass does not count
+  shape.shape = p.shape;
+  shape.size = p.size;
+  shape.mass = 1;
+  std::string g = geom(shape, k, "contype=\"4\" conaffinity=\"3\" ");
+  g.replace(g.find("name=\"g"), 7, "name=\"q");  // the prop's geom "q<k>", apart from the parts' "g<i>"
+  return "    <body name=\"prop" + std::to_string(k) + "\" mocap=\"true\" pos=\"" + vec(p.pose.p) + "\" quat=\"" +
+         quat(p.pose.R) + "\">\n      " + g + "\n    </body>\n";
+}
+
 std::string mjcf_free_joint_name(int part) {
   if (part == 0) return "root";
   std::string fn = "free";  // in steps, as mjcf_joint_name

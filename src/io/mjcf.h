@@ -11,6 +11,7 @@
 
 #include "develop/creature_model.h"
 #include "eval/sim_config.h"
+#include "physics/world_edits.h"
 
 namespace bx {
 
@@ -36,6 +37,13 @@ struct MjcfNotes {
 /// its own at the top level, free ("free<part>"), colliding with every part.
 std::string creature_mjcf(const CreatureModel& m, const SimConfig& cfg, const std::string& name,
                           MjcfNotes* notes = nullptr, std::span<const int> broken_joints = {});
+
+/// A prop (physics/world_edits.h: a lessin2015 target) as an MJCF body
+/// "prop<k>" for creature_mjcf's worldbody: a mocap body (kinematic: moved by
+/// setting its pose, of unlimited mass to the contacts) at its pose, its
+/// geom colliding with every part (contype 4, conaffinity 3), not the floor
+/// (MuJoCo leaves two static bodies' geoms alone).
+std::string mjcf_prop_body(const Prop& p, int k);
 
 /// The MuJoCo joint creature_mjcf names for degree of freedom `dof` of joint `joint`.
 std::string mjcf_joint_name(int joint, int dof);

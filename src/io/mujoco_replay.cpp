@@ -154,7 +154,6 @@ Result<OdeRun> run_ode(const CreatureModel& m, const ControllerModel& controller
     rec.push_back({s.motors, std::vector<double>(s.signals.begin(), s.signals.end()), tracked(), std::move(angles),
                    std::vector<double>(outputs.begin(), outputs.end()), landed});
   }
-  if (s.world.n_props() > 0) return Error{"its task places props in the world (a target), which MJCF does not carry"};
   o.fitness = s.task->score(m).fitness;
   o.muscle_work = s.world.muscle_work();
   // the scored span, as the task marks it
@@ -190,17 +189,21 @@ struct MjSim {
   std::vector<int> qpos_of;    // each joint dof's MuJoCo joint, in the creature's order (-1: none)
   std::vector<int> tendon_of;  // each muscle's tendon
   std::vector<int> body_of;    // each part's body
+  std::vector<int> prop_body;  // each prop's (mocap) body
   int tracked_body = -1;       // the scored part's body, else -1
 };
 
 // Loads the body with `broken` joints left out, its actuators silenced (the
 // motors are ours), its contacts as `contacts` says
 Result<MjSim> load_mujoco(const CreatureModel& m, const OdeRun& o, const MujocoContacts& contacts,
-                          const std::vector<int>& broken) {
+                          const std::vector<int>& broken, const std::vector<Prop>& props) {
   const SimConfig& cfg = o.cfg;
   MjSim sim;
   char err[1000] = "";
   std::string xml = creature_mjcf(m, cfg, "creature", nullptr, broken);
+  std::string prop_bodies;
+  for (std::size_t k = 0; k < props.size(); ++k) prop_bodies += mjcf_prop_body(props[k], static_cast<int>(k));
+  xml.insert(xml.rfind("  </worldbody>"), prop_bodies);
   std::unique_ptr<mjVFS> vfs(new mjVFS);
   mj_defaultVFS(vfs.get());
   const std::string file = "creature.xml";
@@ -242,6 +245,8 @@ Result<MjSim> load_mujoco(const CreatureModel& m, const OdeRun& o, const MujocoC
     if (sim.body_of.back() < 0) return Error{"the exported body lacks part " + std::to_string(i)};
   }
   if (o.scored_part >= 0) sim.tracked_body = sim.body_of[static_cast<std::size_t>(o.scored_part)];
+  for (std::size_t k = 0; k < props.size(); ++k)
+    sim.prop_body.push_back(mj_name2id(M, mjOBJ_BODY, ("prop" + std::to_string(k)).c_str()));
   return sim;
 }
 
@@ -328,6 +333,18 @@ class MujocoObservation : public Observation {
   }
   double muscle_work() const override { return muscle_work_; }
   Vec3 front() const override { return front_; }
+  // any part against prop k in the last step
+  bool touches_prop(int k) const override {
+    if (k < 0 || k >= static_cast<int>(sim_.prop_body.size())) return false;
+    const mjModel* M = sim_.model.get();
+    const mjData* D = sim_.data.get();
+    const int p = sim_.prop_body[static_cast<std::size_t>(k)];
+    for (int c = 0; c < D->ncon; ++c) {
+      const int b1 = M->geom_bodyid[D->contact[c].geom1], b2 = M->geom_bodyid[D->contact[c].geom2];
+      if ((b1 == p && b2 != 0) || (b2 == p && b1 != 0)) return true;
+    }
+    return false;
+  }
 
  private:
   const CreatureModel& m_;
@@ -336,22 +353,33 @@ class MujocoObservation : public Observation {
   const double& muscle_work_;
 };
 
-// What the task changes in MuJoCo's world: a broken joint waits for the
-// replay to reload the body without it; props are not carried (refused);
-// lights matter to photoreceptors only, which an open-loop replay does not read.
+// What the task changes in MuJoCo's world: a broken joint or a new prop
+// waits for the replay to reload the body with it (each prop's time of
+// placing kept for its spin); lights matter to photoreceptors only, which an
+// open-loop replay does not read.
 class MujocoEdits : public WorldEdits {
  public:
+  explicit MujocoEdits(const double& time) : time_(time) {}
   void break_joint(int j) override {
     if (std::find(broken.begin(), broken.end(), j) == broken.end()) {
       broken.push_back(j);
       pending = true;
     }
   }
-  int add_prop(const Prop&) override { return props++; }
+  int add_prop(const Prop& p) override {
+    props.push_back(p);
+    placed.push_back(time_);
+    pending = true;
+    return static_cast<int>(props.size()) - 1;
+  }
   void set_lights(std::vector<Light>) override {}
   std::vector<int> broken;
+  std::vector<Prop> props;
+  std::vector<double> placed;  // s
   bool pending = false;
-  int props = 0;
+
+ private:
+  const double& time_;
 };
 
 // MuJoCo, open loop: the exported body, its contacts as `contacts` says,
@@ -365,8 +393,9 @@ Result<MujocoRun> run_mujoco(const CreatureModel& m, const OdeRun& o, const Mujo
   const std::vector<Recorded>& rec = o.rec;
   const long recorded = static_cast<long>(rec.size());
   MujocoRun r;
-  MujocoEdits edits;
-  auto loaded = load_mujoco(m, o, contacts, edits.broken);
+  double now = 0;  // MuJoCo's time, for the props' placing
+  MujocoEdits edits(now);
+  auto loaded = load_mujoco(m, o, contacts, edits.broken, edits.props);
   if (!loaded) return Error{loaded.error()};
   MjSim sim = std::move(*loaded);
   {
@@ -436,17 +465,25 @@ Result<MujocoRun> run_mujoco(const CreatureModel& m, const OdeRun& o, const Mujo
                                 : &rec[0];
     const std::vector<double>& signals = mode == EvalState::Motors::Driven && from_ode ? from_ode->signals : zeros;
     const Recorded* step_rec = i < recorded ? &rec[static_cast<std::size_t>(i)] : nullptr;  // for the angles
+    now = sim.data->time;
     t.act(m, last->outputs, edits, obs);
-    if (edits.props > 0) return Error{"its task places props in the world (a target), which MJCF does not carry"};
     if (edits.pending) {
       edits.pending = false;
-      auto next = load_mujoco(m, o, contacts, edits.broken);
+      auto next = load_mujoco(m, o, contacts, edits.broken, edits.props);
       if (!next) return Error{next.error()};
       carry_state(sim, *next);
       sim = std::move(*next);
     }
     mjModel* M = sim.model.get();
     mjData* D = sim.data.get();
+    // a spinning prop turned about the vertical by spin x the time since it was placed
+    for (std::size_t k = 0; k < edits.props.size(); ++k)
+      if (const Prop& p = edits.props[k]; p.spin != 0) {
+        const Quat q = to_quat(Mat3::rotation({0, 0, 1}, p.spin * (D->time - edits.placed[k])) * p.pose.R);
+        const int id = M->body_mocapid[sim.prop_body[k]];
+        const double wxyz[4] = {q.w, q.x, q.y, q.z};
+        std::copy(wxyz, wxyz + 4, D->mocap_quat + 4 * id);
+      }
     // the motors' laws, after their lag, then any brake (step.cpp's order)
     for (std::size_t e = 0; e < m.effectors.size(); ++e) {
       double sig = signals[e];

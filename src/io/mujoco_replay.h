@@ -87,11 +87,14 @@ struct CrossSimReport {
 /// damper the joint's (implicit in MuJoCo's Euler step); a muscle its
 /// exported tendon, a spring of its activation times its strength (implicit
 /// integration); once under each of four contact settings
-/// (CrossSimReport::variants). A joint the task breaks (a catapult's
-/// release) breaks at the same step in MuJoCo: the body is reloaded without
-/// it (io/mjcf.h's broken joints) and the state carried over, the freed
-/// part flying free. `seconds` > 0 replaces the task's length. Refused, with
-/// the reason: a task that adds props (a target).
+/// (CrossSimReport::variants). The same task, made from the same seed,
+/// scores each replay, reading MuJoCo's world and acting on ODE's task
+/// outputs; it holds or drives the motors by its own rules (a settling),
+/// each driven step taking ODE's next driven step's commands. A joint it
+/// breaks (a catapult's release) is left out of a body reloaded then
+/// (io/mjcf.h's broken joints), the state carried over, the freed part
+/// flying free; a prop it places (a target) is a mocap body there, turned
+/// each step as it spins. `seconds` > 0 replaces the task's length.
 Result<CrossSimReport> crosscheck_mujoco(const CreatureModel& m, const ControllerModel& controller,
                                          const SimConfig& cfg, std::uint64_t seed, double seconds = 0);
 

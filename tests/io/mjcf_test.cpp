@@ -163,5 +163,37 @@ TEST(Mjcf, ABrokenJointsChildIsAFreeBodyOfItsOwn) {
   mj_deleteData(df);
 }
 
+// A prop (a lessin2015 target) as a mocap body: the creature lands on it and
+// rests there; it never touches the floor it stands in.
+TEST(Mjcf, APropIsAKinematicBodyThePartsLandOn) {
+  const bxtest::DevelopedCreature c = bxtest::develop_creature("hinged_pair");
+  ASSERT_TRUE(c.dev.viable());
+  const CreatureModel& cm = *c.dev.model;
+  Prop slab;  // 0.3 m thick, 4 m across, standing on the floor under the creature
+  slab.size = {4, 4, 0.3};
+  slab.pose.p = {0, 0, 0.15};
+  auto rest_height = [&](bool with_slab) {
+    std::string xml = creature_mjcf(cm, c.cfg.sim, "pair");
+    if (with_slab) xml.insert(xml.rfind("  </worldbody>"), mjcf_prop_body(slab, 0));
+    Loaded l;
+    load(xml, l);
+    EXPECT_NE(l.m, nullptr) << l.error;
+    if (!l.m) return 0.0;
+    mjData* d = mj_makeData(l.m);
+    d->qpos[2] += 0.5;  // dropped from above the slab's top
+    for (int i = 0; i < static_cast<int>(std::lround(2 / l.m->opt.timestep)); ++i) mj_step(l.m, d);
+    const int prop = mj_name2id(l.m, mjOBJ_BODY, "prop0");
+    for (int k = 0; k < d->ncon; ++k) {
+      const int b1 = l.m->geom_bodyid[d->contact[k].geom1], b2 = l.m->geom_bodyid[d->contact[k].geom2];
+      EXPECT_FALSE((b1 == prop && b2 == 0) || (b1 == 0 && b2 == prop)) << "the prop touches the floor";
+    }
+    const double z = d->qpos[2];
+    mj_deleteData(d);
+    return z;
+  };
+  const double on_floor = rest_height(false), on_slab = rest_height(true);
+  EXPECT_NEAR(on_slab - on_floor, 0.3, 0.02);  // it rests on the slab's top
+}
+
 }  // namespace
 }  // namespace bx

@@ -130,6 +130,22 @@ TEST(MujocoReplay, TheTaskSettlesInMujocoByItsOwnRuleBeforeTheGaitStarts) {
   }
 }
 
+// A task that places props (fight-or-flight's target, when its light comes
+// on) has them in MuJoCo too: replayed, not refused, and scored there.
+TEST(MujocoReplay, ATaskThatPlacesATargetIsReplayedWithIt) {
+  const Genome g = bxtest::load_creature("lessin_crawler.json");
+  const Development dev = develop(g);
+  ASSERT_TRUE(dev.viable()) << dev.reason;
+  auto run_cfg = read_run_config(
+      "[genome]\ndialect = \"lessin2015\"\n[task]\nkind = \"fight_or_flight\"\ntrials = 8\n[light]\ndistance = 1\n", "test");
+  ASSERT_TRUE(run_cfg.ok()) << run_cfg.error();
+  const CreatureModel& m = *dev.model;
+  auto r = crosscheck_mujoco(m, GraphBrain(m.brain), run_cfg->sim, 1);
+  ASSERT_TRUE(r.ok()) << r.error();
+  EXPECT_GT(r->ode_fitness, 0);
+  for (const CrossSimVariant& v : r->variants) EXPECT_GT(v.to, 1.0) << v.name;
+}
+
 // catapult_thrower under the preset it was evolved in (its step, motors and
 // throw), crosschecked from seed `seed`
 Result<CrossSimReport> thrower(std::uint64_t seed) {
