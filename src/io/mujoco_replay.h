@@ -47,9 +47,9 @@ struct CrossSimVariant {
 
 /// What the two simulators did with the same motor commands.
 struct CrossSimReport {
-  double from = 0, to = 0;  ///< the span compared (s): the task's scored span, else the whole run
-  double seconds = 0;       ///< simulated in each
-  long steps = 0;           ///< physics steps in each (the same dt)
+  double from = 0, to = 0;  ///< ODE's span compared (s): the task's scored span, else the whole run
+  double seconds = 0;       ///< simulated in ODE
+  long steps = 0;           ///< physics steps in ODE (MuJoCo steps at the same dt)
   /// What is compared: the part the task scores (ScenePart::scored: a
   /// thrown "projectile"), else the creature's "centre of mass".
   std::string tracked;
