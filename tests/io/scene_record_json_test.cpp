@@ -21,7 +21,7 @@ SceneRecord everything() {
   const Mat3 up = from_quat({0.707107, 0, -0.707107, 0});
   r.props = {{"disc", "cylinder", {0.02, 0.6, 0.6}, {{2, 0, 0.01}, up}, 0, 2, "#3b82c4"},
              {"stack", "box", {0.1, 0.1, 0.3}, {{2, 0, 0.17}, Mat3::identity()}, 2, 2, "#e8590c"}};
-  r.parts = {{"projectile", 2, "#ffc61a"}};
+  r.parts = {{"projectile", 2, "#ffc61a", true}, {"arm", 1, "#3b82c4"}};  // the first scored
   r.cell_kinds = {{"grass", "#a3c98a", false}, {"stone", "#7c838b", true}};
   r.add(0, SceneGrid{{-0.05, 1.5, 0}, 0.1, 3, 2, {0, 1, 0, 0, 0, 1}});
   r.add(0, SceneCounter{"level", 1, {}});
@@ -105,6 +105,7 @@ TEST(SceneRecordJson, ABadRecordNamesTheFieldAndWhatWasWrong) {
   EXPECT_EQ(error_with("/props/1/pose", json::parse("[0, 0, 0, 0.5, 0, 0, 0]")),
             "scene.record.props[1].pose: expected [x, y, z, qw, qx, qy, qz] with a unit quaternion, got [0,0,0,0.5,0,0,0]");
   EXPECT_EQ(error_with("/parts/0/part", -1), "scene.record.parts[0].part: expected a part index >= 0, got -1");
+  EXPECT_EQ(error_with("/parts/1/scored", 1), "scene.record.parts[1].scored: expected true or false, got 1");
   EXPECT_EQ(error_with("/cell_kinds/1/item", 1), "scene.record.cell_kinds[1].item: expected true or false, got 1");
   EXPECT_EQ(error_with("/events/0/grid/cells/4", 2),
             "scene.record.events[0].grid.cells[4]: no such cell kind (the record has 2), got 2");
