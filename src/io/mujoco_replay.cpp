@@ -26,11 +26,45 @@ namespace {
 struct Recorded {
   EvalState::Motors motors;
   std::vector<double> signals;
-  Vec3 tracked;  // the scored part's centre, else the creature's centre of mass
   std::vector<double> angles;  // every joint's dofs in turn, over the first kAngleSpan (else empty)
   std::vector<double> outputs;  // the controller's task outputs the task acted on before the step
-  bool landed = false;          // the scored part touched the ground, and no part, in this step
 };
+
+// Where the tracked point was: at [0] the start, then after each step, and
+// whether the scored part was down then (on the ground, touching no part).
+struct Path {
+  std::vector<Vec3> at;
+  std::vector<bool> down;
+  void add(Vec3 p, bool landed) {
+    at.push_back(p);
+    down.push_back(landed);
+  }
+};
+
+// What a path did over a task's scored span [from, to] (s; steps of dt).
+struct SpanMeasure {
+  Vec3 displacement;
+  bool landed = false;
+  double landing = 0;  // s: the first step the scored part was down after `from`
+  Vec3 flight;         // from `from` to the landing
+};
+SpanMeasure measure_span(const Path& path, double from, double to, double dt) {
+  const long steps = static_cast<long>(path.at.size()) - 1;
+  auto index_at = [&](double time) {  // the entry at or after `time` ([0]: the start)
+    return std::clamp(static_cast<long>(std::ceil(time / dt - 1e-9)), 0L, steps);
+  };
+  const auto i_from = static_cast<std::size_t>(index_at(from)), i_to = static_cast<std::size_t>(index_at(to));
+  SpanMeasure m;
+  m.displacement = path.at[i_to] - path.at[i_from];
+  for (std::size_t k = i_from + 1; k <= i_to; ++k)
+    if (path.down[k]) {
+      m.landed = true;
+      m.landing = static_cast<double>(k) * dt;
+      m.flight = path.at[k] - path.at[i_from];
+      break;
+    }
+  return m;
+}
 
 struct MjDeleter {
   void operator()(mjModel* m) const { mj_deleteModel(m); }
@@ -69,13 +103,8 @@ struct OdeRun {
   std::vector<double> angles0;
   int scored_part = -1;  // the part the task scores (ScenePart::scored), else -1: the centre of mass
   std::string tracked = "centre of mass";
-  Vec3 tracked0;
   double from = 0, to = 0;  // the scored span (s)
-  long i_from = -1, i_to = -1;  // the steps at its ends (-1: the start)
-  Vec3 displacement;
-  // the scored part's flight: from the span's start to its landing
-  long i_land = -1;  // the step it first touched the ground after the span began, else -1: no flight
-  Vec3 flight;
+  SpanMeasure span;         // what the tracked point did over it
 };
 
 // How MuJoCo's contacts are set for one replay (docs/export.md).
@@ -96,9 +125,7 @@ struct MujocoRun {
   double fitness = 0;  // the task's score of the replay
   double muscle_work = 0;  // J
   double from = 0, to = 0;  // the scored span its task marked (s)
-  Vec3 displacement;  // of the tracked point over the scored span
-  bool landed = false;
-  Vec3 flight;  // of the scored part from the span's start to its landing, if it landed
+  SpanMeasure span;         // what the tracked point did over it
   double min_height = 0;
   double first_second_angle_gap = 0;
   std::vector<std::string> warnings;
@@ -134,7 +161,8 @@ Result<OdeRun> run_ode(const CreatureModel& m, const ControllerModel& controller
   o.root0 = s.world.part_pose(0);
   for (int j = 0; j < static_cast<int>(m.joints.size()); ++j)
     for (int k = 0; k < joint_dofs(m.joints[j].type); ++k) o.angles0.push_back(s.world.joint_position(j, k));
-  o.tracked0 = tracked();
+  Path path;
+  path.add(tracked(), false);
   const long max_steps =
       seconds > 0 ? static_cast<long>(std::llround(seconds / cfg.physics.dt)) : s.task->max_steps();
   std::vector<Recorded>& rec = o.rec;
@@ -151,32 +179,16 @@ Result<OdeRun> run_ode(const CreatureModel& m, const ControllerModel& controller
     const bool landed = o.scored_part >= 0 && s.world.contact_mask(o.scored_part) != 0 &&
                         !s.world.touches_part(o.scored_part);
     const std::span<const double> outputs = s.controller->task_outputs();
-    rec.push_back({s.motors, std::vector<double>(s.signals.begin(), s.signals.end()), tracked(), std::move(angles),
-                   std::vector<double>(outputs.begin(), outputs.end()), landed});
+    rec.push_back({s.motors, std::vector<double>(s.signals.begin(), s.signals.end()), std::move(angles),
+                   std::vector<double>(outputs.begin(), outputs.end())});
+    path.add(tracked(), landed);
   }
   o.fitness = s.task->score(m).fitness;
   o.muscle_work = s.world.muscle_work();
   // the scored span, as the task marks it
-  const long steps = static_cast<long>(rec.size());
-  o.from = 0;
-  o.to = static_cast<double>(steps) * cfg.physics.dt;
-  if (auto t = scene.marker(kScoredFrom)) o.from = *t;
-  if (auto t = scene.marker(kScoredTo)) o.to = *t;
-  auto index_at = [&](double t) {  // the step whose end is at or after t (-1: the start)
-    const long k = static_cast<long>(std::ceil(t / cfg.physics.dt - 1e-9)) - 1;
-    return std::clamp(k, -1L, steps - 1);
-  };
-  o.i_from = index_at(o.from);
-  o.i_to = index_at(o.to);
-  auto ode_at = [&](long i) { return i < 0 ? o.tracked0 : rec[static_cast<std::size_t>(i)].tracked; };
-  o.displacement = ode_at(o.i_to) - ode_at(o.i_from);
-  if (o.scored_part >= 0)
-    for (long i = o.i_from + 1; i <= o.i_to; ++i)
-      if (rec[static_cast<std::size_t>(i)].landed) {
-        o.i_land = i;
-        o.flight = ode_at(i) - ode_at(o.i_from);
-        break;
-      }
+  o.from = scene.marker(kScoredFrom).value_or(0);
+  o.to = scene.marker(kScoredTo).value_or(static_cast<double>(rec.size()) * cfg.physics.dt);
+  o.span = measure_span(path, o.from, o.to, cfg.physics.dt);
   return o;
 }
 
@@ -290,6 +302,19 @@ void carry_state(MjSim& from, MjSim& to) {
   mj_forward(B, b);
 }
 
+// Whether body `body` touched, in MuJoCo's last step, a body that `other`
+// accepts (0: the world's floor)
+template <class Other>
+bool touches(const MjSim& sim, int body, Other other) {
+  const mjModel* M = sim.model.get();
+  const mjData* D = sim.data.get();
+  for (int k = 0; k < D->ncon; ++k) {
+    const int b1 = M->geom_bodyid[D->contact[k].geom1], b2 = M->geom_bodyid[D->contact[k].geom2];
+    if ((b1 == body && other(b2)) || (b2 == body && other(b1))) return true;
+  }
+  return false;
+}
+
 // What the task reads of MuJoCo's world (Task's Observation), as
 // WorldObservation reads ODE's: the body of each part by its name "p<i>".
 class MujocoObservation : public Observation {
@@ -322,31 +347,21 @@ class MujocoObservation : public Observation {
   }
   // part i against any other part of the creature in the last step
   bool touches_part(int i) const override {
-    const mjModel* M = sim_.model.get();
-    const mjData* D = sim_.data.get();
     const int b = sim_.body_of[static_cast<std::size_t>(i)];
-    for (int k = 0; k < D->ncon; ++k) {
-      const int b1 = M->geom_bodyid[D->contact[k].geom1], b2 = M->geom_bodyid[D->contact[k].geom2];
-      if ((b1 == b && b2 != 0 && b2 != b) || (b2 == b && b1 != 0 && b1 != b)) return true;
-    }
-    return false;
+    return touches(sim_, b, [&](int other) { return other != 0 && other != b && !is_prop(other); });
   }
   double muscle_work() const override { return muscle_work_; }
   Vec3 front() const override { return front_; }
   // any part against prop k in the last step
   bool touches_prop(int k) const override {
     if (k < 0 || k >= static_cast<int>(sim_.prop_body.size())) return false;
-    const mjModel* M = sim_.model.get();
-    const mjData* D = sim_.data.get();
-    const int p = sim_.prop_body[static_cast<std::size_t>(k)];
-    for (int c = 0; c < D->ncon; ++c) {
-      const int b1 = M->geom_bodyid[D->contact[c].geom1], b2 = M->geom_bodyid[D->contact[c].geom2];
-      if ((b1 == p && b2 != 0) || (b2 == p && b1 != 0)) return true;
-    }
-    return false;
+    return touches(sim_, sim_.prop_body[static_cast<std::size_t>(k)], [](int other) { return other != 0; });
   }
 
  private:
+  bool is_prop(int body) const {
+    return std::find(sim_.prop_body.begin(), sim_.prop_body.end(), body) != sim_.prop_body.end();
+  }
   const CreatureModel& m_;
   const MjSim& sim_;
   Vec3 front_;
@@ -359,7 +374,6 @@ class MujocoObservation : public Observation {
 // open-loop replay does not read.
 class MujocoEdits : public WorldEdits {
  public:
-  explicit MujocoEdits(const double& time) : time_(time) {}
   void break_joint(int j) override {
     if (std::find(broken.begin(), broken.end(), j) == broken.end()) {
       broken.push_back(j);
@@ -368,7 +382,7 @@ class MujocoEdits : public WorldEdits {
   }
   int add_prop(const Prop& p) override {
     props.push_back(p);
-    placed.push_back(time_);
+    placed.push_back(now);
     pending = true;
     return static_cast<int>(props.size()) - 1;
   }
@@ -376,10 +390,8 @@ class MujocoEdits : public WorldEdits {
   std::vector<int> broken;
   std::vector<Prop> props;
   std::vector<double> placed;  // s
+  double now = 0;              // MuJoCo's time, set before the task acts
   bool pending = false;
-
- private:
-  const double& time_;
 };
 
 // MuJoCo, open loop: the exported body, its contacts as `contacts` says,
@@ -393,8 +405,7 @@ Result<MujocoRun> run_mujoco(const CreatureModel& m, const OdeRun& o, const Mujo
   const std::vector<Recorded>& rec = o.rec;
   const long recorded = static_cast<long>(rec.size());
   MujocoRun r;
-  double now = 0;  // MuJoCo's time, for the props' placing
-  MujocoEdits edits(now);
+  MujocoEdits edits;
   auto loaded = load_mujoco(m, o, contacts, edits.broken, edits.props);
   if (!loaded) return Error{loaded.error()};
   MjSim sim = std::move(*loaded);
@@ -430,9 +441,9 @@ Result<MujocoRun> run_mujoco(const CreatureModel& m, const OdeRun& o, const Mujo
   t.record(obs, scene);
   // the tracked point after each step (at [0]: the start)
   auto tracked = [&] { return sim.tracked_body >= 0 ? obs.part_pose(o.scored_part).p : obs.centre_of_mass(); };
-  std::vector<Vec3> path{tracked()};
-  std::vector<bool> landed{false};
-  r.min_height = path[0].z;
+  Path path;
+  path.add(tracked(), false);
+  r.min_height = path.at[0].z;
 
   const double dt = cfg.physics.dt;
   const double lag = motor_lag_share(dt, cfg.motor.response_time);
@@ -465,7 +476,7 @@ Result<MujocoRun> run_mujoco(const CreatureModel& m, const OdeRun& o, const Mujo
                                 : &rec[0];
     const std::vector<double>& signals = mode == EvalState::Motors::Driven && from_ode ? from_ode->signals : zeros;
     const Recorded* step_rec = i < recorded ? &rec[static_cast<std::size_t>(i)] : nullptr;  // for the angles
-    now = sim.data->time;
+    edits.now = sim.data->time;
     t.act(m, last->outputs, edits, obs);
     if (edits.pending) {
       edits.pending = false;
@@ -617,16 +628,10 @@ Result<MujocoRun> run_mujoco(const CreatureModel& m, const OdeRun& o, const Mujo
     if (!t.done()) t.observe(obs);
     t.record(obs, scene);
     const Vec3 c = tracked();
-    path.push_back(c);
     r.min_height = std::min(r.min_height, c.z);
     // the scored part on the ground and touching no part
-    bool down = false;
-    if (sim.tracked_body >= 0 && !obs.touches_part(o.scored_part))
-      for (int k = 0; k < D->ncon && !down; ++k) {
-        const int b1 = M->geom_bodyid[D->contact[k].geom1], b2 = M->geom_bodyid[D->contact[k].geom2];
-        down = (b1 == sim.tracked_body && b2 == 0) || (b2 == sim.tracked_body && b1 == 0);
-      }
-    landed.push_back(down);
+    path.add(c, sim.tracked_body >= 0 && !obs.touches_part(o.scored_part) &&
+                    touches(sim, sim.tracked_body, [](int other) { return other == 0; }));
     // the joints' angles against ODE's, over the first second
     if (step_rec && !step_rec->angles.empty())
       for (std::size_t k = 0; k < sim.qpos_of.size(); ++k)
@@ -638,19 +643,9 @@ Result<MujocoRun> run_mujoco(const CreatureModel& m, const OdeRun& o, const Mujo
   r.fitness = t.score(m).fitness;
   r.muscle_work = muscle_work;
   // the span MuJoCo's task scored, by its own markers, and the flight in it
-  const long steps = static_cast<long>(path.size()) - 1;
   r.from = scene.marker(kScoredFrom).value_or(0);
-  r.to = scene.marker(kScoredTo).value_or(static_cast<double>(steps) * dt);
-  auto index_at = [&](double time) {  // the path's entry at or after `time` ([0]: the start)
-    return std::clamp(static_cast<long>(std::ceil(time / dt - 1e-9)), 0L, steps);
-  };
-  const long i_from = index_at(r.from), i_to = index_at(r.to);
-  r.displacement = path[static_cast<std::size_t>(i_to)] - path[static_cast<std::size_t>(i_from)];
-  for (long k = i_from + 1; k <= i_to && !r.landed; ++k)
-    if (landed[static_cast<std::size_t>(k)]) {
-      r.landed = true;
-      r.flight = path[static_cast<std::size_t>(k)] - path[static_cast<std::size_t>(i_from)];
-    }
+  r.to = scene.marker(kScoredTo).value_or(static_cast<double>(path.at.size() - 1) * dt);
+  r.span = measure_span(path, r.from, r.to, dt);
   r.warnings = std::move(warnings);
   return r;
 }
@@ -666,13 +661,13 @@ Result<CrossSimReport> crosscheck_mujoco(const CreatureModel& m, const Controlle
   r.seconds = static_cast<double>(r.steps) * o->cfg.physics.dt;
   r.from = o->from;
   r.to = o->to;
-  r.ode = o->displacement;
+  r.ode = o->span.displacement;
   r.tracked = o->tracked;
   r.ode_fitness = o->fitness;
   r.ode_muscle_work = o->muscle_work;
-  r.has_flight = o->i_land >= 0;
-  r.ode_flight = o->flight;
-  r.landing = static_cast<double>(o->i_land + 1) * o->cfg.physics.dt;
+  r.has_flight = o->scored_part >= 0 && o->span.landed;
+  r.ode_flight = o->span.flight;
+  r.landing = o->span.landing;
   // MuJoCo's horizontal displacement against ODE's: the angle between them, and the length ratio
   auto compare = [](Vec3 ode, Vec3 mj, double& heading, double& ratio) {
     const Vec3 a = horizontal(ode), b = horizontal(mj);
@@ -686,7 +681,7 @@ Result<CrossSimReport> crosscheck_mujoco(const CreatureModel& m, const Controlle
     if (!run) return Error{std::string(contacts.name) + ": " + run.error()};
     CrossSimVariant v;
     v.name = contacts.name;
-    v.displacement = run->displacement;
+    v.displacement = run->span.displacement;
     v.fitness = run->fitness;
     v.muscle_work = run->muscle_work;
     v.from = run->from;
@@ -700,7 +695,7 @@ Result<CrossSimReport> crosscheck_mujoco(const CreatureModel& m, const Controlle
     ratios.push_back(v.distance_ratio);
     if (r.has_flight) {
       // one that never came down within the span flew all of it
-      v.flight = run->landed ? run->flight : run->displacement;
+      v.flight = run->span.landed ? run->span.flight : run->span.displacement;
       compare(r.ode_flight, v.flight, v.flight_heading_difference, v.flight_ratio);
       flight_headings.push_back(v.flight_heading_difference);
       flight_ratios.push_back(v.flight_ratio);
