@@ -42,6 +42,7 @@ std::vector<SimField> river_fields() {
       {"river", "seconds", SimField::Real, 0, 1e6, {}, [](SimConfig& c) -> void* { return &c.river.task.seconds; }, "river crossing: evaluation length (s; the paper: 10 minutes)"},
       {"river", "drop_height", SimField::Real, 0, 1e3, {}, [](SimConfig& c) -> void* { return &c.river.task.drop_height; }, "river crossing: gap between the feet and the ground at the start (m)"},
       {"river", "first_level", SimField::Int, 1, 6, {}, [](SimConfig& c) -> void* { return &c.river.task.first_level; }, "river crossing: the level an evaluation starts on (1: food)"},
+      {"river", "approach", SimField::Real, 0, 1e6, {}, [](SimConfig& c) -> void* { return &c.river.task.approach; }, "river crossing: points for getting closer to each level's resource, approach * (1 - d_min / d_0) a level (d the torso centre's distance to the resource cell in cells, d_0 at the level's start, d_min the least since; a completed level gives all of it); 0, the paper's fitness"},
   };
 }
 

@@ -48,6 +48,18 @@ void RiverTask::place_grid(Vec3 torso) {
   const CellIndex s = world_.agent();
   origin_ = {torso.x - (s.x + 0.5) * def_.cell, torso.y - (s.y + 0.5) * def_.cell, 0};
   levels_seen_ = world_.levels_completed();
+  level_d0_ = level_dmin_ = to_resource(torso);
+}
+
+double RiverTask::to_resource(Vec3 torso) const {
+  const GridPoint g = to_grid(torso);
+  const CellIndex r = world_.layout().resource;
+  return std::hypot(g.x - (r.x + 0.5), g.y - (r.y + 0.5));
+}
+
+double RiverTask::approach() const {
+  const double current = level_d0_ > 0 ? std::max(0.0, 1 - level_dmin_ / level_d0_) : 0;
+  return world_.levels_completed() + current;
 }
 
 void RiverTask::begin(const Observation& o) {
@@ -79,7 +91,10 @@ void RiverTask::observe(const Observation& o) {
   world_.enter(cell_under(g.x, g.y));
   refresh_codes();
   // a resource reached: the next level's grid is laid with its start under the walker
-  if (world_.levels_completed() != levels_seen_) place_grid(torso);
+  if (world_.levels_completed() != levels_seen_)
+    place_grid(torso);
+  else if (world_.alive())
+    level_dmin_ = std::min(level_dmin_, to_resource(torso));
 }
 
 void RiverTask::record(const Observation& o, SceneRecord& out) {
@@ -88,7 +103,7 @@ void RiverTask::record(const Observation& o, SceneRecord& out) {
 
 TaskScore RiverTask::score(const CreatureModel&) const {
   TaskScore s;
-  s.fitness = world_.score();
+  s.fitness = world_.score() + def_.approach * approach();
   s.distance = std::hypot(last_.x - start_.x, last_.y - start_.y);
   const std::optional<Cell> killer = world_.killed_by();
   s.metrics = {{"level", static_cast<double>(world_.level())},
@@ -98,6 +113,7 @@ TaskScore RiverTask::score(const CreatureModel&) const {
                {"killed by", killer ? static_cast<double>(river_cell_code(*killer)) : 0.0}};
   for (int level = 1; level <= kRiverLevels; ++level)
     s.metrics.push_back({"level " + std::to_string(level) + " completed", static_cast<double>(world_.completions(level))});
+  s.metrics.push_back({"approach", approach()});
   return s;
 }
 

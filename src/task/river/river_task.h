@@ -28,6 +28,13 @@ struct RiverTaskDef {
   double drop_height = 0.05;
   /// The level an evaluation starts on (1..6): 1, the paper's.
   int first_level = 1;
+  /// Points for getting closer to the level's resource (0: the paper's
+  /// fitness). Each level adds approach * (1 - d_min / d_0), d the torso
+  /// centre's distance to the resource cell's centre in cells, d_0 when the
+  /// level began, d_min the least since: a level completed gives all of it.
+  /// A bootstrap for runs too short for the paper's food level to select
+  /// walkers (rivercrossing-small; docs/rivercrossing.md).
+  double approach = 0;
   friend bool operator==(const RiverTaskDef&, const RiverTaskDef&) = default;
 };
 
@@ -54,11 +61,14 @@ class RiverTask : public Task {
   void observe(const Observation& o) override;
   /// Over once the agent died (or the time is up: max_steps).
   bool done() const override { return !world_.alive(); }
-  /// Fitness: +100 per resource reached, +1 per food eaten (the paper);
+  /// Fitness: +100 per resource reached, +1 per food eaten (the paper),
+  /// plus the approach credit (RiverTaskDef::approach);
   /// distance: the torso's travel in the ground plane from its start to its
   /// last position (m);
   /// metrics: the level reached, levels completed, food eaten, whether it
-  /// died (1) and of what (cell codes: 3 water, 4 trap).
+  /// died (1) and of what (cell codes: 3 water, 4 trap), the approach: the
+  /// levels' progress toward their resources (each completed level 1, the
+  /// current one 1 - d_min / d_0).
   TaskScore score(const CreatureModel&) const override;
   /// The world as a replay shows it (RiverScene): its grid as each level
   /// lays it, the cells that change, the stone carried (on the torso), and
@@ -72,6 +82,10 @@ class RiverTask : public Task {
  private:
   // places the grid so the torso's centre is over the start cell's middle
   void place_grid(Vec3 torso);
+  // the torso's distance to the level's resource cell's centre (cells)
+  double to_resource(Vec3 torso) const;
+  // the levels' progress toward their resources (score()'s "approach")
+  double approach() const;
   // the cells' codes as inputs, made again only when the cells changed
   void refresh_codes();
 
@@ -84,6 +98,8 @@ class RiverTask : public Task {
   Vec3 origin_;  ///< the world point (m) of the grid's corner (0, 0)
   Vec3 start_, last_;  ///< the torso's centre at the start and after the last step (m)
   int levels_seen_ = 0;
+  double level_d0_ = 0;     ///< to_resource when the level began
+  double level_dmin_ = 0;   ///< the least to_resource since
   RiverScene scene_;
   std::vector<double> codes_;  ///< river_cell_code of every cell, row-major
   long codes_changes_ = -1;    ///< world_.changes() when codes_ was made

@@ -129,6 +129,42 @@ TEST(RiverTask, FoodAndTheResourceScoreAndTheNextLevelStartsUnderTheWalker) {
   EXPECT_DOUBLE_EQ(score.distance, std::hypot(goal.x - start.x, goal.y - start.y));
 }
 
+TEST(RiverTask, TheApproachCreditIsTheShareOfTheWayToTheResourceAtItsClosest) {
+  for (double cell : {1.0, 0.1}) {
+    RiverTaskDef d = def(cell, 2);  // the dash: nothing on the way
+    d.approach = 10;
+    RiverTask task(d, 0.01, 5, 0, kSensors);
+    Torso torso;
+    task.begin(torso);
+    const CellIndex start = task.world().layout().start, goal = task.world().layout().resource;
+    const double d0 = std::hypot(goal.x - start.x, goal.y - start.y);
+    EXPECT_EQ(task.score(CreatureModel{}).fitness, 0);  // not moved: nothing
+    // along the start row to the resource's column, then back to the start: the closest counts
+    for (int x = start.x + 1; x <= goal.x; ++x) walk_to(task, torso, {x, start.y}, cell);
+    const double closest = std::abs(goal.y - start.y);
+    for (int x = goal.x - 1; x >= start.x; --x) walk_to(task, torso, {x, start.y}, cell);
+    TaskScore s = task.score(CreatureModel{});
+    EXPECT_NEAR(s.fitness, 10 * (1 - closest / d0), 1e-9) << cell;
+    EXPECT_EQ(s.metrics.back().name, "approach");
+    EXPECT_NEAR(s.metrics.back().value, 1 - closest / d0, 1e-9);
+    // the resource reached: 100 and the whole credit of level 2; level 3 begins at its start, d_0 again
+    for (int x = start.x + 1; x <= goal.x; ++x) walk_to(task, torso, {x, start.y}, cell);
+    const int dy = goal.y > start.y ? 1 : -1;
+    for (int y = start.y + dy; y != goal.y + dy && task.world().level() == 2; y += dy) walk_to(task, torso, {goal.x, y}, cell);
+    ASSERT_EQ(task.world().level(), 3);
+    s = task.score(CreatureModel{});
+    EXPECT_NEAR(s.fitness, 100 + 10, 1e-9);
+    EXPECT_NEAR(s.metrics.back().value, 1, 1e-9);
+  }
+  // 0, the paper's: the score is the rules' alone
+  RiverTask paper(def(1, 2), 0.01, 5, 0, kSensors);
+  Torso torso;
+  paper.begin(torso);
+  walk_to(paper, torso, {5, paper.world().layout().start.y});
+  EXPECT_EQ(paper.score(CreatureModel{}).fitness, 0);
+  EXPECT_GT(paper.score(CreatureModel{}).metrics.back().value, 0);
+}
+
 TEST(RiverTask, WaterKillsAtTheNextActionAndEndsTheTask) {
   RiverTask task(def(1, 4), 0.01, 9, 0, kSensors);  // level 4: a river at column 14
   Torso torso;
