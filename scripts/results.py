@@ -60,7 +60,8 @@ For a river crossing run (Stanton & Channon 2015) instead of distances: its
 tournaments, best fitness, and per level the share of its final 1000
 tournaments' evaluations that completed the level (the generation_metric
 table), food eaten and the torso's travel in its first and last report
-interval (whether evolution got going), its Fig. 5 curve (`bestiary plot RUN --metric completed`, written as
+interval (whether evolution got going), the mean progress toward the
+resources (metric 'approach') in them, its Fig. 5 curve (`bestiary plot RUN --metric completed`, written as
 RUN/levels.svg); then over all its seeds the paper's Table 1: per level, the
 share of runs with more than 0% and at least 20/40/60/80% of those
 evaluations completing it, beside the paper's.
@@ -279,7 +280,11 @@ def river_row(preset, seed, run_dir):
     def travel(g):
         v = con.execute("select avg(distance) from individual where gen = ? and evaluations > 0", (g,)).fetchone()
         return v[0] or 0
-    start = (f"{food(first):.1f}% → {food(last):.1f}% | {100 * travel(first):.1f} → {100 * travel(last):.1f}")
+    def approach(g):
+        v = con.execute("select mean from generation_metric where gen = ? and name = 'approach'", (g,)).fetchone()
+        return f"{100 * v[0]:.1f}%" if v else "-"
+    start = (f"{food(first):.1f}% → {food(last):.1f}% | {approach(first)} → {approach(last)} | "
+             f"{100 * travel(first):.1f} → {100 * travel(last):.1f}")
     return (f"| {preset} | {seed} | {state['next_id'] - pop} | {evals} | {best:.4g} | {start} | {cells} | {svg} |",
             shares, span)
 
@@ -287,10 +292,12 @@ def river_row(preset, seed, run_dir):
 def river_tables(rows):
     out = [f"\nLevel k: the share (%) of the final {rows[0][2]} tournaments' evaluations that completed level k.",
            "Food: the share of evaluations that ate any, in the first and the last report interval; travel: "
-           "the torso's mean travel (cm) per evaluation of the individuals born in them (their latest evaluation).",
-           "\n| preset | seed | tournaments | evaluations | best fitness | food | travel (cm) | "
+           "the torso's mean travel (cm) per evaluation of the individuals born in them (their latest evaluation); "
+           "approach: the mean, over those evaluations, of the levels' progress toward their resources (metric "
+           "'approach': a completed level 1, the current one 1 - closest / start distance; runs made before it: -).",
+           "\n| preset | seed | tournaments | evaluations | best fitness | food | approach | travel (cm) | "
            + " | ".join(f"level {k}" for k in range(1, RIVER_LEVELS + 1)) + " | Fig. 5 curve |",
-           "|" + "---|" * (8 + RIVER_LEVELS)]
+           "|" + "---|" * (9 + RIVER_LEVELS)]
     out += [r[0] for r in rows]
     span = rows[0][2]
     out.append(f"\nTable 1 over these {len(rows)} runs (share of runs whose final {span} tournaments' evaluations "
