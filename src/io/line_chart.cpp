@@ -43,8 +43,10 @@ std::string line_chart_svg(const LineChart& chart, int width, int height) {
   const int per_row = std::clamp(static_cast<int>(pw / slot), 1, 4);
   const int n_series = static_cast<int>(chart.series.size());
   const int rows = (n_series + per_row - 1) / per_row;
-  // a legend wider than the space beside the title goes below it
-  const bool below = per_row < 4 && rows > 0 && slot * std::min(per_row, n_series) > pw - 220;
+  // a legend wider than the space beside the title (16 px text: about 8.8 px
+  // a character) goes below it
+  const double title_width = 10 + 8.8 * static_cast<double>(chart.title.size());
+  const bool below = rows > 0 && slot * std::min(per_row, n_series) > pw - std::max(220.0, title_width);
   const double top = 40 + 18.0 * std::max(0, rows - 1) + (below ? 18.0 : 0), ph = height - top - bottom;
   const std::vector<double>& xs = chart.xs;
   double x0 = xs.empty() ? 0 : xs.front(), x1 = xs.empty() ? 1 : xs.back();
