@@ -86,8 +86,17 @@ def stages(run_dir):
     """A run of several stages (a syllabus): [(name, generations)] in order;
     [] for a run of one."""
     cfg = tomllib.loads(open(os.path.join(run_dir, "config.toml")).read())
-    gens = cfg.get("evolution", {}).get("generations", 0)
-    return [(st["name"], st.get("evolution", {}).get("generations", gens)) for st in cfg.get("stage", [])]
+    base = cfg.get("evolution", {})
+    out = []
+    for st in cfg.get("stage", []):
+        e = dict(base, **st.get("evolution", {}))
+        if e.get("algorithm", "generational") == "generational":
+            out.append((st["name"], e.get("generations", 0)))
+        else:
+            # a steady state stores its first generation, then one per report interval
+            every = e.get("report_every") or e.get("population", 1)
+            out.append((st["name"], 1 + math.ceil(e.get("evaluations", 0) / every)))
+    return out
 
 
 def finished(run_dir):
@@ -285,7 +294,9 @@ def river_row(preset, seed, run_dir):
         return f"{100 * v[0]:.1f}%" if v else "-"
     start = (f"{food(first):.1f}% → {food(last):.1f}% | {approach(first)} → {approach(last)} | "
              f"{100 * travel(first):.1f} → {100 * travel(last):.1f}")
-    return (f"| {preset} | {seed} | {state['next_id'] - pop} | {evals} | {best:.4g} | {start} | {cells} | {svg} |",
+    # every stage's first generation is a population of its own (random, or the last stage's copied)
+    tournaments = state['next_id'] - pop * max(1, len(stages(run_dir)))
+    return (f"| {preset} | {seed} | {tournaments} | {evals} | {best:.4g} | {start} | {cells} | {svg} |",
             shares, span)
 
 
@@ -466,6 +477,10 @@ def main():
                 rows_of_run = stage_rows(preset, seed, run_dir, staged, a.check_set)
                 syllabus.extend(rows_of_run)
                 print("\n".join(rows_of_run), flush=True)
+                if is_river(run_dir):
+                    # its last stage's statistics (Table 1 over its final report intervals)
+                    rivers.append(river_row(preset, seed, run_dir))
+                    print(rivers[-1][0], flush=True)
                 continue
             checks.append(check_row(preset, seed, run_dir, a.check_set))
             print(checks[-1], flush=True)

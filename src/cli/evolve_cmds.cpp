@@ -408,16 +408,24 @@ int cmd_presets() {
                              : grouped(e.population) + ", " + grouped(e.evaluations) +
                                    (e.tournament_evaluates == TournamentEvaluates::All ? " tournaments" : " evaluations");
     if (syl->staged()) {
-      // the stages' populations (their range, when they differ) over every stage's generations
-      long generations = 0;
+      // the stages' populations (their range, when they differ) over every stage's generations,
+      // or a steady state's tournaments (evaluations) over every stage
+      long generations = 0, evaluations = 0;
       int least = e.population, most = e.population;
+      bool generational = true;
       for (const StageDef& st : syl->stages) {
         generations += total_generations(st.cfg.evolution);
+        evaluations += st.cfg.evolution.evaluations;
+        generational = generational && st.cfg.evolution.algorithm == Algorithm::Generational;
         least = std::min(least, st.cfg.evolution.population);
         most = std::max(most, st.cfg.evolution.population);
       }
-      budget = grouped(least) + (most > least ? "-" + grouped(most) : "") + " x " + grouped(generations) +
-               " generations in " + std::to_string(syl->stages.size()) + " stages";
+      const std::string pops = grouped(least) + (most > least ? "-" + grouped(most) : "");
+      const std::string stages = " in " + std::to_string(syl->stages.size()) + " stages";
+      budget = generational ? pops + " x " + grouped(generations) + " generations" + stages
+                            : pops + ", " + grouped(evaluations) +
+                                  (e.tournament_evaluates == TournamentEvaluates::All ? " tournaments" : " evaluations") +
+                                  stages;
     }
     rows.push_back({p.name, paper_of(cfg), budget, preset_time(p), preset_summary(p)});
   }

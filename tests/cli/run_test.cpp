@@ -461,6 +461,8 @@ TEST_F(RunCli, PresetsAreListedOneLineEach) {
   }
   // a steady state that evaluates a tournament's three counts tournaments (evolution.evaluations)
   EXPECT_NE(line_of("rivercrossing-small").find(" tournaments "), std::string::npos) << r.out;
+  // over a run of stages too: a steady state's tournaments summed over them
+  EXPECT_NE(line_of("rivercrossing-small").find("150, 3,300 tournaments in 2 stages"), std::string::npos) << r.out;
   EXPECT_NE(line_of("miconi2006-small").find(" evaluations "), std::string::npos) << r.out;
   // a run of stages (an ESP syllabus): its stages' generations, with the range of their populations
   EXPECT_NE(line_of("lessin2015-fast-small").find("Lessin et al. 2015"), std::string::npos) << r.out;

@@ -23,9 +23,41 @@ TEST(Presets, EveryPresetReadsAndDocumentsItself) {
   }
 }
 
+TEST(Presets, RiverSmallGrowsWalkersOnTwoMinutesThenTakesThePapersTen) {
+  // rivercrossing-small: a walk stage of short evaluations from random weights, then the
+  // paper's 10 minutes from its population; both with the approach credit, the rest the paper's
+  const Preset* p = find_preset("rivercrossing-small");
+  ASSERT_NE(p, nullptr);
+  auto syl = read_syllabus(p->text, p->name);
+  ASSERT_TRUE(syl.ok()) << syl.error();
+  ASSERT_EQ(syl->stages.size(), 2u);
+  const StageDef& walk = syl->stages[0];
+  const StageDef& levels = syl->stages[1];
+  EXPECT_EQ(walk.name, "walk");
+  EXPECT_EQ(walk.start, StageStart::Random);
+  EXPECT_EQ(walk.cfg.sim.river.task.seconds, 120);
+  EXPECT_EQ(walk.cfg.evolution.evaluations, 3000);
+  EXPECT_EQ(levels.name, "levels");
+  EXPECT_EQ(levels.start, StageStart::Population);
+  EXPECT_EQ(levels.cfg.sim.river.task.seconds, 600);
+  EXPECT_EQ(levels.cfg.evolution.evaluations, 300);
+  for (const StageDef& st : syl->stages) {
+    EXPECT_EQ(st.cfg.sim.river.task.approach, 10) << st.name;
+    EXPECT_EQ(st.cfg.evolution.population, 150) << st.name;
+    EXPECT_EQ(st.cfg.evolution.algorithm, Algorithm::SteadyState) << st.name;
+    EXPECT_EQ(st.cfg.evolution.tournament_evaluates, TournamentEvaluates::All) << st.name;
+    EXPECT_EQ(st.cfg.sim.motif, found_motif()) << st.name;
+  }
+  // the paper's preset scores by the paper's fitness alone
+  auto full = read_syllabus(find_preset("rivercrossing")->text, "rivercrossing");
+  ASSERT_TRUE(full.ok());
+  EXPECT_EQ(full->stages.front().cfg.sim.river.task.approach, 0);
+}
+
 TEST(Presets, PaperPresetsCarryThePapersConstants) {
   auto find = [](const std::string& name) {
-    if (const Preset* p = find_preset(name)) return *read_run_config(p->text, name);
+    // a plain config, or a run of stages' first stage
+    if (const Preset* p = find_preset(name)) return read_syllabus(p->text, name)->stages.front().cfg;
     ADD_FAILURE() << name;
     return RunConfig{};
   };
