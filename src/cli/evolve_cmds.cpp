@@ -403,10 +403,11 @@ int cmd_presets() {
     if (!syl) return fail(syl.error());  // a broken built-in preset: the build's tests catch it
     const RunConfig& cfg = syl->stages.front().cfg;
     const EvolutionDef& e = cfg.evolution;
+    // a steady state counts tournaments when each evaluates its three, else evaluations
+    const std::string births = e.tournament_evaluates == TournamentEvaluates::All ? " tournaments" : " evaluations";
     std::string budget = e.algorithm == Algorithm::Generational
                              ? grouped(e.population) + " x " + grouped(e.generations) + " generations"
-                             : grouped(e.population) + ", " + grouped(e.evaluations) +
-                                   (e.tournament_evaluates == TournamentEvaluates::All ? " tournaments" : " evaluations");
+                             : grouped(e.population) + ", " + grouped(e.evaluations) + births;
     if (syl->staged()) {
       // the stages' populations (their range, when they differ) over every stage's generations,
       // or a steady state's tournaments (evaluations) over every stage
@@ -423,9 +424,7 @@ int cmd_presets() {
       const std::string pops = grouped(least) + (most > least ? "-" + grouped(most) : "");
       const std::string stages = " in " + std::to_string(syl->stages.size()) + " stages";
       budget = generational ? pops + " x " + grouped(generations) + " generations" + stages
-                            : pops + ", " + grouped(evaluations) +
-                                  (e.tournament_evaluates == TournamentEvaluates::All ? " tournaments" : " evaluations") +
-                                  stages;
+                            : pops + ", " + grouped(evaluations) + births + stages;
     }
     rows.push_back({p.name, paper_of(cfg), budget, preset_time(p), preset_summary(p)});
   }
