@@ -15,6 +15,8 @@ BrainState make_brain_state(const BrainModel& m) {
   s.next.assign(m.n_values(), 0.0);
   s.state.assign(m.state_begin.empty() ? 0 : m.state_begin.back(), 0.0);
   s.effector_out.assign(m.n_effectors(), 0.0);
+  s.task_output_signal.assign(m.n_task_outputs(), 0.0);
+  s.task_out.assign(m.n_task_outputs(), 0.0);
   s.t = 0;
   return s;
 }
@@ -29,6 +31,9 @@ void brain_step(const BrainModel& m, BrainState& s, double dt) {
   assert(static_cast<int>(m.state_begin.size()) == n_neurons + 1 || n_neurons == 0);
   assert(static_cast<int>(m.input_begin.size()) == n_neurons + 1 || n_neurons == 0);
   assert(static_cast<int>(s.effector_out.size()) == m.n_effectors());
+  assert(static_cast<int>(s.task_out.size()) == m.n_task_outputs());
+  assert(m.n_task_outputs() == 0 || m.task_output_input_begin.size() == m.task_output_floor.size() + 1);
+  assert(m.task_output_threshold.size() == m.task_output_floor.size());
 
   const std::vector<NeuronFnSpec>& fns = all_neuron_fns();
   const NeuronClock clock{s.t, dt};
@@ -106,16 +111,19 @@ void brain_step(const BrainModel& m, BrainState& s, double dt) {
     s.effector_out[e] = effector_signal(m.set, sum);
   }
 
-  // the release effector: the delay line or the network, whichever is higher
-  if (m.release_delay_src >= 0) {
+  // task outputs: the clamped network sum or the floor, whichever is higher,
+  // latched at the threshold
+  for (int k = 0; k < m.n_task_outputs(); ++k) {
     double sum = 0;
-    for (std::size_t j = 0; j < m.release_input_src.size(); ++j) {
-      const std::int32_t src = m.release_input_src[j];
-      if (src >= 0) sum += m.release_input_weight[j] * values[src];
+    for (std::uint32_t j = m.task_output_input_begin[k]; j < m.task_output_input_begin[k + 1]; ++j) {
+      const std::int32_t src = m.task_output_input_src[j];
+      if (src >= 0) sum += m.task_output_input_weight[j] * values[src];
     }
     sum = sum < -1 ? -1 : (sum > 1 ? 1 : sum);
-    const double delay = values[m.release_delay_src];
-    s.release_out = delay > sum ? delay : sum;
+    const std::int32_t floor = m.task_output_floor[k];
+    const double signal = floor >= 0 && values[floor] > sum ? values[floor] : sum;
+    s.task_output_signal[k] = signal;
+    if (signal >= m.task_output_threshold[k]) s.task_out[k] = 1;
   }
 
   s.t += dt;

@@ -45,14 +45,17 @@ struct BrainModel {
   std::vector<double> effector_input_weight;
   std::vector<std::int32_t> effector_input_gate;  ///< as input_gate, for effector inputs
 
-  // a catapult's release effector (chaumont2007 4.1, Fig. 4): its signal is
-  // the larger of the delay neuron's output and the clamped weighted sum of
-  // its inputs from the body's network; the task fires the release from 0.5 on
-  std::int32_t release_delay_src = -1;  ///< value slot of the delay; -1: no release effector
-  /// The release fires at the first brain step its signal reaches this.
-  static constexpr double kReleaseThreshold = 0.5;
-  std::vector<std::int32_t> release_input_src;
-  std::vector<double> release_input_weight;
+  // task outputs (ControllerState::task_outputs: what the brain asks of the
+  // task beside its effectors, e.g. a catapult's release, chaumont2007 4.1,
+  // Fig. 4). Each is a latch: 0 until the first brain step its signal reaches
+  // its threshold, 1 from then on. Its signal is the weighted sum of its
+  // inputs clamped to [-1, 1], or the value of its floor slot when that is
+  // higher (-1: no floor), computed from the same values as the effectors.
+  std::vector<std::int32_t> task_output_floor;
+  std::vector<double> task_output_threshold;
+  std::vector<std::uint32_t> task_output_input_begin;  ///< size n_task_outputs + 1 (empty: none)
+  std::vector<std::int32_t> task_output_input_src;
+  std::vector<double> task_output_input_weight;
 
   /// Owning part of each neuron (-1: global), for viewers and lesion studies.
   std::vector<std::int32_t> neuron_part;
@@ -61,7 +64,7 @@ struct BrainModel {
   int n_effectors() const { return static_cast<int>(effector_bias.size()); }
   int n_groups() const { return group_begin.empty() ? 0 : static_cast<int>(group_begin.size()) - 1; }
   int n_values() const { return n_sensors + n_neurons(); }
-  bool has_release() const { return release_delay_src >= 0; }
+  int n_task_outputs() const { return static_cast<int>(task_output_floor.size()); }
 };
 
 /// What changes in a brain during one evaluation.
@@ -70,7 +73,8 @@ struct BrainState {
   std::vector<double> next;    ///< scratch for the synchronous update
   std::vector<double> state;   ///< per-neuron internal state
   std::vector<double> effector_out;  ///< last effector signals, in [-1,1]
-  double release_out = 0;            ///< the release effector's last signal, in [-1,1]
+  std::vector<double> task_output_signal;  ///< each task output's last signal
+  std::vector<double> task_out;            ///< each task output: 0, or 1 once fired
   double t = 0;                ///< brain time (s)
 };
 

@@ -10,16 +10,15 @@ namespace {
 class GraphBrainState : public ControllerState {
  public:
   explicit GraphBrainState(const BrainModel& m)
-      : m_(m), s_(make_brain_state(m)), outputs_(m.has_release() ? 1 : 0, 0.0) {}
+      : m_(m), s_(make_brain_state(m)) {}
 
   void step(std::span<const double> sensors, std::span<const double>, double dt) override {
     assert(static_cast<int>(sensors.size()) == m_.n_sensors);
     std::copy(sensors.begin(), sensors.end(), s_.values.begin());
     brain_step(m_, s_, dt);
-    if (m_.has_release() && s_.release_out >= BrainModel::kReleaseThreshold) outputs_[0] = 1;
   }
   std::span<const double> effectors() const override { return s_.effector_out; }
-  std::span<const double> task_outputs() const override { return outputs_; }
+  std::span<const double> task_outputs() const override { return s_.task_out; }
   std::span<const double> sensors() const override {
     return std::span<const double>(s_.values).first(static_cast<std::size_t>(m_.n_sensors));
   }
@@ -30,7 +29,6 @@ class GraphBrainState : public ControllerState {
  private:
   const BrainModel& m_;
   BrainState s_;
-  std::vector<double> outputs_;  ///< the release, fired (1) or not (0)
 };
 
 }  // namespace

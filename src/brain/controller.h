@@ -57,17 +57,16 @@ class ControllerModel {
 };
 
 /// Sims' graph brain (brain_model.h) as a controller: each step writes the
-/// readings into its sensor slots and runs brain_step. A catapult's release
-/// effector is its one task output: 0 until the brain step whose release
-/// signal reaches BrainModel::kReleaseThreshold, 1 from then on (the release
-/// fires once, chaumont2007 4.1).
+/// readings into its sensor slots and runs brain_step. Its task outputs are
+/// the brain's latches (BrainModel::task_output_*: a catapult's release,
+/// which fires once, chaumont2007 4.1).
 /// Holds a reference to the brain, which must outlive it and its states.
 class GraphBrain : public ControllerModel {
  public:
   explicit GraphBrain(const BrainModel& m) : m_(m) {}
   int n_sensors() const override { return m_.n_sensors; }
   int n_effectors() const override { return m_.n_effectors(); }
-  int n_task_outputs() const override { return m_.has_release() ? 1 : 0; }
+  int n_task_outputs() const override { return m_.n_task_outputs(); }
   std::unique_ptr<ControllerState> make_state() const override;
 
  private:

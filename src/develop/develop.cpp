@@ -596,15 +596,19 @@ Development develop(const Genome& g, const DevelopDef& def) {
         m.projectile = i;
         m.release_joint = joint_of[i];
       }
+    // the release effector: the brain's one task output, the delay line its floor
     int cst = add_mechanism_neuron(brain, "cst", {1.0}, {});
-    brain.release_delay_src =
-        add_mechanism_neuron(brain, "mem", {static_cast<double>(cat.release.delay_steps - 1)}, {cst});
+    brain.task_output_floor.push_back(
+        add_mechanism_neuron(brain, "mem", {static_cast<double>(cat.release.delay_steps - 1)}, {cst}));
+    brain.task_output_threshold.push_back(ReleaseGene::kFiringThreshold);
+    brain.task_output_input_begin = {0};
     for (std::size_t k = 0; k < cat.release.inputs.size(); ++k) {
       const InputGene& in = cat.release.inputs[k];
-      brain.release_input_src.push_back(
+      brain.task_output_input_src.push_back(
           wiring.slot(0, in, "catapult.release.inputs[" + std::to_string(k) + "]"));
-      brain.release_input_weight.push_back(in.weight);
+      brain.task_output_input_weight.push_back(in.weight);
     }
+    brain.task_output_input_begin.push_back(static_cast<std::uint32_t>(brain.task_output_input_src.size()));
   }
 
   // effectors of every part that has a joint

@@ -225,7 +225,7 @@ struct NodeGene {
 /// network, read as from the arm's part) reaches the firing threshold.
 struct ReleaseGene {
   /// The weighted sum of `inputs` fires the release from this value on.
-  static constexpr double kFiringThreshold = BrainModel::kReleaseThreshold;
+  static constexpr double kFiringThreshold = 0.5;
   int delay_steps = 30;  ///< chaumont2007 4.1: 30 steps (0.5 s at 60 Hz)
   std::vector<InputGene> inputs;
   friend bool operator==(const ReleaseGene&, const ReleaseGene&) = default;

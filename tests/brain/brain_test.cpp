@@ -80,6 +80,18 @@ struct Builder {
     m.effector_input_begin.push_back(static_cast<std::uint32_t>(m.effector_input_src.size()));
     return m.n_effectors() - 1;
   }
+  /// Adds a task output (a latch at `threshold`, `floor` a slot or -1); returns its index.
+  int task_output(std::vector<std::pair<int, double>> inputs, int floor, double threshold) {
+    if (m.task_output_input_begin.empty()) m.task_output_input_begin = {0};
+    m.task_output_floor.push_back(floor);
+    m.task_output_threshold.push_back(threshold);
+    for (auto [src, w] : inputs) {
+      m.task_output_input_src.push_back(src);
+      m.task_output_input_weight.push_back(w);
+    }
+    m.task_output_input_begin.push_back(static_cast<std::uint32_t>(m.task_output_input_src.size()));
+    return m.n_task_outputs() - 1;
+  }
 };
 
 // 2 sensors, a recurrent pair n0 <-> n1, a mem delay of 2 steps, 1 effector:
@@ -219,6 +231,38 @@ TEST(Brain, NeuronlessEffectorFollowsSensorAtOnce) {
   s.values[1] = 1.0;
   brain_step(b.m, s, 0.01);
   EXPECT_EQ(s.effector_out[0], 1.0);  // 2.5 clamped
+}
+
+// A task output (a catapult's release): its signal is the clamped weighted
+// sum of its inputs or its floor slot, whichever is higher; it reads 0 until
+// the first step its signal reaches the threshold and 1 from then on, even
+// when the signal falls again.
+TEST(Brain, ATaskOutputLatchesAtItsThresholdOnTheLargerOfItsSumAndItsFloor) {
+  Builder b(NeuronSetId::Chaumont2007, 2);
+  b.task_output({{0, 2.0}, {-1, 9.0}}, -1, 0.5);  // sensor 0 alone, no floor
+  b.task_output({{0, -1.0}}, 1, 0.5);             // floor: sensor 1
+  BrainState s = make_brain_state(b.m);
+  ASSERT_EQ(s.task_out.size(), 2u);
+  EXPECT_EQ(s.task_out[0], 0.0);
+  s.values[0] = 0.2;  // sum 0.4; the second's -0.2 under its floor 0.3
+  s.values[1] = 0.3;
+  brain_step(b.m, s, 0.01);
+  EXPECT_DOUBLE_EQ(s.task_output_signal[0], 0.4);
+  EXPECT_DOUBLE_EQ(s.task_output_signal[1], 0.3);
+  EXPECT_EQ(s.task_out[0], 0.0);
+  EXPECT_EQ(s.task_out[1], 0.0);
+  s.values[0] = 0.8;  // sum 1.6 clamped to 1: the first fires
+  brain_step(b.m, s, 0.01);
+  EXPECT_EQ(s.task_output_signal[0], 1.0);
+  EXPECT_EQ(s.task_out[0], 1.0);
+  EXPECT_EQ(s.task_out[1], 0.0);
+  s.values[0] = -0.8;  // the first's signal falls, its latch holds; the floor fires the second
+  s.values[1] = 0.5;
+  brain_step(b.m, s, 0.01);
+  EXPECT_EQ(s.task_output_signal[0], -1.0);
+  EXPECT_EQ(s.task_out[0], 1.0);
+  EXPECT_DOUBLE_EQ(s.task_output_signal[1], 0.8);  // the sum 0.8 over the floor 0.5
+  EXPECT_EQ(s.task_out[1], 1.0);
 }
 
 // a busy brain with every kind of state, driven by a fixed sensor sequence
