@@ -256,7 +256,12 @@ def final_shares(run_dir, tournaments=1000):
     cfg = open(os.path.join(run_dir, "config.toml")).read()
     every = int(re.search(r"^report_every = (\d+)", cfg, re.M).group(1)) or \
         int(re.search(r"^population = (\d+)", cfg, re.M).group(1))
-    gens = [g for (g,) in con.execute("select gen from generation where gen > 0 order by gen desc")]
+    # a run of stages: its last stage's tournaments only (an earlier stage's
+    # evaluations may be too short to complete a level, rivercrossing-small's walk)
+    first = 0
+    if stages(run_dir):
+        first = con.execute("select first_gen from stage order by first_gen desc limit 1").fetchone()[0]
+    gens = [g for (g,) in con.execute("select gen from generation where gen > ? order by gen desc", (first,))]
     take = gens[:max(1, math.ceil(tournaments / every))]
     evals = dict(con.execute("select gen, evaluations - lag(evaluations) over (order by gen) from generation"))
     shares = {}
