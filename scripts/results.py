@@ -167,7 +167,7 @@ def check_row(preset, seed, run_dir, check_set=()):
     sustained = f"{c['sustained']['ratio']:.2f}" if "sustained" in c else "-"
     # the fitness selection saw: under elite_evaluations the mean (or least) of several evaluations
     scored = c.get("scored_fitness", c["fitness"])
-    return (f"| {preset} | {seed} | {scored:.4g} | {c['median_other_seeds']:.2f} | {cell('dt/2')} | "
+    return (f"| {preset} | {seed} | {scored:.4g} | {c['other_seeds']:.2f} | {cell('dt/2')} | "
             f"{cell('dt/4')} | {cell('lag')} | {cell('half rate')} | {cell('clamped')} | {cell('held')} | "
             f"{sustained} | {len(active)}/{len(c['effector_sd'])} | {hz or '-'} | {100 * c['max_joint_gap']:.1f} | "
             f"{verdict} |")
@@ -231,7 +231,7 @@ def stage_rows(preset, seed, run_dir, staged, check_set=()):
         c = json.loads(r.stdout)
         verdict = "pass" if c["passed"] else "FAIL: " + "; ".join(c["failures"])
         out.append(f"| {preset} | {seed} | {k + 1} {name} | {g1 - g0 + 1} | {b0:.4g} | {b1:.4g} | {best_id} | "
-                   f"{c['median_other_seeds']:.2f} | {verdict} |")
+                   f"{c['other_seeds']:.2f} | {verdict} |")
     return out
 
 
@@ -253,16 +253,21 @@ def final_shares(run_dir, tournaments=1000):
     that completed it: the last report intervals covering them, weighted by
     their evaluations."""
     con = sqlite3.connect(os.path.join(run_dir, "run.sqlite"))
-    cfg = open(os.path.join(run_dir, "config.toml")).read()
-    every = int(re.search(r"^report_every = (\d+)", cfg, re.M).group(1)) or \
-        int(re.search(r"^population = (\d+)", cfg, re.M).group(1))
     # a run of stages: its last stage's tournaments only (an earlier stage's
-    # evaluations may be too short to complete a level, rivercrossing-small's walk)
-    first = 0
+    # evaluations may be too short to complete a level, rivercrossing-small's
+    # walk); a tournament births one child, so each interval's births count them
+    first_gen = first_id = 0
     if stages(run_dir):
-        first = con.execute("select first_gen from stage order by first_gen desc limit 1").fetchone()[0]
-    gens = [g for (g,) in con.execute("select gen from generation where gen > ? order by gen desc", (first,))]
-    take = gens[:max(1, math.ceil(tournaments / every))]
+        first_gen, first_id = con.execute(
+            "select first_gen, first_id from stage order by first_gen desc limit 1").fetchone()
+    born = con.execute("select gen, count(*) from individual where id >= ? and gen > ? group by gen order by gen desc",
+                       (first_id, first_gen)).fetchall()
+    take, span = [], 0
+    for g, n in born:
+        if span >= tournaments:
+            break
+        take.append(g)
+        span += n
     evals = dict(con.execute("select gen, evaluations - lag(evaluations) over (order by gen) from generation"))
     shares = {}
     for level in range(1, RIVER_LEVELS + 1):
@@ -274,7 +279,7 @@ def final_shares(run_dir, tournaments=1000):
             num += (v[0] if v else 0) * w
             den += w
         shares[level] = 100 * num / den if den else 0
-    return shares, len(take) * every
+    return shares, span
 
 
 def river_row(preset, seed, run_dir):

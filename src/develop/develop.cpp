@@ -601,7 +601,8 @@ Development develop(const Genome& g, const DevelopDef& def) {
     brain.task_output_floor.push_back(
         add_mechanism_neuron(brain, "mem", {static_cast<double>(cat.release.delay_steps - 1)}, {cst}));
     brain.task_output_threshold.push_back(ReleaseGene::kFiringThreshold);
-    brain.task_output_input_begin = {0};
+    // a row of the table: its inputs follow any rows before it
+    if (brain.task_output_input_begin.empty()) brain.task_output_input_begin = {0};
     for (std::size_t k = 0; k < cat.release.inputs.size(); ++k) {
       const InputGene& in = cat.release.inputs[k];
       brain.task_output_input_src.push_back(
