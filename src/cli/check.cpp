@@ -70,7 +70,8 @@ int cmd_check(const CheckArgs& a) {
       out["variants"].push_back({{"name", v.name}, {"fitness", v.result.fitness}, {"ratio", v.ratio},
                                  {"gate", v.gate}, {"failed", v.result.failed}, {"failure", v.result.failure},
                                  {"seed_fitness", v.seed_fitness}});
-    out["median_other_seeds"] = rep.median_other_seeds;
+    out["other_seeds"] = rep.other_seeds;  // the ratio, their median or mean:
+    out["other_seeds_statistic"] = subject->cfg.check.other_seeds_statistic == SeedStatistic::Mean ? "mean" : "median";
     // ratios of the gain over doing nothing, where doing nothing scores
     out["idle"] = rep.basis.idle_scores ? nlohmann::json(rep.idle) : nlohmann::json(nullptr);
     out["posture"] = rep.basis.posture;
@@ -120,7 +121,9 @@ int cmd_check(const CheckArgs& a) {
     std::printf("\n");
   }
   if (subject->cfg.check.other_seeds > 0)
-    std::printf("  other seeds: median ratio %s\n", ratio_text(rep.median_other_seeds).c_str());
+    std::printf("  other seeds: %s ratio %s\n",
+                subject->cfg.check.other_seeds_statistic == SeedStatistic::Mean ? "mean" : "median",
+                ratio_text(rep.other_seeds).c_str());
   else
     std::printf("  other seeds: none (check.other_seeds = 0)\n");
   if (rep.sustained >= 0)

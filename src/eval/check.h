@@ -16,11 +16,21 @@
 
 namespace bx {
 
+/// How a check combines its other seeds' ratios (CheckDef::other_seeds_statistic).
+enum class SeedStatistic { Median, Mean };
+
 /// The gates of a check, as fractions of the scored fitness (config section
 /// [check]). Defaults: issue 11's.
 struct CheckDef {
   int other_seeds = 5;            ///< physics seeds besides the scored one
-  double min_other_seeds = 0.75;  ///< their median must keep this much
+  /// How the other seeds' ratios combine: their median, so one lucky or
+  /// unlucky seed does not decide (a throw), or their mean, for a task whose
+  /// outcomes over seeds are a rare large score among small ones (a river
+  /// level: 100 in a third of layouts, about 9 in the rest), where the
+  /// median misses the rare score that a mean fitness (task.trial_score)
+  /// counts; with enough seeds (other_seeds) to estimate it.
+  SeedStatistic other_seeds_statistic = SeedStatistic::Median;
+  double min_other_seeds = 0.75;  ///< their median (mean) must keep this much
   double min_converged = 0.75;    ///< dt/2, dt/4 and twice the iterations each keep this much
   /// ... and keep at most this much: a fitness that rises by more than the
   /// gate as the step shrinks was not converged either (docs/physics.md cause 27)
@@ -89,7 +99,9 @@ struct CheckReport {
   /// Under several evaluations: each one's fitness, the own seed's first.
   std::vector<double> scored_by_seed;
   std::vector<CheckVariant> variants;
-  double median_other_seeds = 0;  ///< ratio
+  /// The other seeds' ratios combined (CheckDef::other_seeds_statistic:
+  /// their median or mean).
+  double other_seeds = 0;
   /// The clamped run's centre of mass: how far it moved in the plane over the
   /// last CheckDef::rest_seconds of the run, as a share of the body length
   /// (-1: not measured: rest_seconds is 0 or longer than the run).

@@ -420,6 +420,39 @@ TEST_P(CheckElite, AnEliteScoredOverSeveralEvaluationsIsCheckedAndSimulatedAsSco
 INSTANTIATE_TEST_SUITE_P(Scores, CheckElite, ::testing::Values("mean", "min"),
                          [](const auto& info) { return info.param == "min" ? "Least" : "Mean"; });
 
+// The other seeds combine by their median, or by their mean
+// (check.other_seeds_statistic = mean: a task whose rare large score a
+// mean fitness counts, such as a river level); the report names which.
+TEST(Check, TheOtherSeedsCombineByTheirMedianOrTheirMean) {
+  const std::string args = creature("snake.json") +
+                           " --set check.other_seeds=4 --set check.converge_seeds=1 --set check.motor_lag=0"
+                           " --set check.min_half_rate=0 --set check.min_sustained=0";
+  std::map<std::string, nlohmann::json> by;
+  for (std::string statistic : {"median", "mean"}) {
+    Outcome r = bestiary("check " + args + " --set check.other_seeds_statistic=" + statistic + " --json");
+    ASSERT_TRUE(r.code == 0 || r.code == 1) << r.err;
+    by[statistic] = nlohmann::json::parse(r.out);
+    EXPECT_EQ(by[statistic]["other_seeds_statistic"], statistic);
+  }
+  std::vector<double> seeds;
+  for (const auto& v : by["mean"]["variants"])
+    if (v["name"].get<std::string>().rfind("seed ", 0) == 0) {
+      seeds.push_back(v["ratio"].get<double>());
+      EXPECT_EQ(v["gate"], "their mean >= 0.75");
+    }
+  ASSERT_EQ(seeds.size(), 4u);
+  double sum = 0;
+  for (double x : seeds) sum += x;
+  std::sort(seeds.begin(), seeds.end());
+  EXPECT_DOUBLE_EQ(by["mean"]["other_seeds"].get<double>(), sum / 4);
+  EXPECT_DOUBLE_EQ(by["median"]["other_seeds"].get<double>(), 0.5 * (seeds[1] + seeds[2]));
+  // the seeds differ, so the two statistics do
+  EXPECT_NE(by["mean"]["other_seeds"].get<double>(), by["median"]["other_seeds"].get<double>());
+  Outcome bad = bestiary("check " + args + " --set check.other_seeds_statistic=mode");
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.err.find("other_seeds_statistic"), std::string::npos) << bad.err;
+}
+
 TEST(Check, BadInputIsOneLineAndExitCodeTwo) {
   Outcome r = bestiary("check /nonexistent/genome.json");
   EXPECT_EQ(r.code, 2);
