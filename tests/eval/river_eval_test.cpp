@@ -22,6 +22,7 @@
 #include "genome/float_vector.h"
 #include "io/config.h"
 #include "task/river/grid.h"
+#include <nlohmann/json.hpp>
 
 namespace bx {
 namespace {
@@ -113,6 +114,39 @@ TEST(RiverEval, ARandomControllerWalksTheGridOnRealPhysicsAndReportsItsMetrics) 
   EXPECT_EQ(again.result.fitness, r.fitness);
   EXPECT_EQ(again.result.metrics, r.metrics);
   EXPECT_EQ(again.result.steps, r.steps);
+}
+
+// The scale of the body decides whether an evolved gait is the solver's or
+// the step's (docs/rivercrossing.md, "Unit and density"): under the paper's
+// CFM a foot slips at CFM times its friction force, which in cell widths
+// goes as 1 / unit^2. creatures/river_walker.json, a 1 Hz walker evolved in
+// 0.1 m cells at 0.01 s (rivercrossing-small seed 1's best before the
+// default became 1 m), walks a minute 39% farther at 0.005 s than at 0.01 s
+// in 0.1 m cells of water's density; in the default 1 m cells it walks
+// farther still, and as far at 0.005 s and 0.0025 s as at 0.01 s.
+TEST(RiverEval, InTheDefaultCellsAnEvolvedGaitConvergesWithTheStepWhereInTenCentimetreCellsItDidNot) {
+  std::ifstream in(std::string(BESTIARY_SOURCE_DIR) + "/creatures/river_walker.json");
+  const FloatVector g(nlohmann::json::parse(in)["genes"].get<std::vector<double>>());
+  // the torso's travel in cell widths over a minute at dt / div
+  auto travel = [&](const QuadrupedDef& body, int div) {
+    SimConfig cfg;
+    cfg.river.body = body;
+    apply_creature_kind(cfg, CreatureKind::River);  // the physics scaled to this body's unit
+    cfg.river.task.seconds = 60;
+    cfg.physics.dt /= div;
+    const EvalOutcome out = evaluate_genotype(g, cfg, 101);
+    EXPECT_TRUE(out.viable) << out.reason;
+    EXPECT_FALSE(out.result.failed) << out.result.failure;
+    return out.result.distance / body.unit;
+  };
+  const QuadrupedDef small{0.1, 1000};  // the same weight product, 0.1 kg m
+  ASSERT_EQ(QuadrupedDef{}.density * std::pow(QuadrupedDef{}.unit, 4), 0.1);
+  const double small_dt = travel(small, 1), small_half = travel(small, 2);
+  EXPECT_GT(small_half / small_dt, 1.25) << small_dt << " " << small_half;
+  const double at_dt = travel(QuadrupedDef{}, 1), half = travel(QuadrupedDef{}, 2), quarter = travel(QuadrupedDef{}, 4);
+  EXPECT_GT(at_dt, 1.5 * small_dt);
+  EXPECT_NEAR(half / at_dt, 1, 0.1) << at_dt << " " << half;
+  EXPECT_NEAR(quarter / at_dt, 1, 0.1) << at_dt << " " << quarter;
 }
 
 // A replay's scene: the task lays its grid under the torso at the start with

@@ -301,7 +301,7 @@ TEST(Config, ACreatureKindBringsItsDefaultsBeforeTheConfigsKeys) {
   EXPECT_EQ(c->sim.physics.friction, 10);
   EXPECT_EQ(c->sim.physics.cfm, 5e-5);
   EXPECT_EQ(c->sim.physics.powered_stops, PoweredStops::Separate);
-  EXPECT_DOUBLE_EQ(c->sim.physics.max_joint_gap, 0.005);  // per 0.1 m cell
+  EXPECT_DOUBLE_EQ(c->sim.physics.max_joint_gap, 0.05);  // per 1 m cell
   EXPECT_EQ(c->sim.brain_hz, 100);  // the pattern generator's Euler step: the paper's 0.01 s
   auto mine = read_run_config("[genotype]\nkind = \"river\"\n[physics]\nfriction = 2\n", "r.toml",
                               {"motor.kd=0.2"});

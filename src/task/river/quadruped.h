@@ -29,13 +29,16 @@ namespace bx {
 /// still hold the torso up; at 0.3 kg m it sags, at 0.4 kg m it sinks onto its
 /// limbs. The limbs' inertia (density x unit^5) no longer matters for
 /// stability: World's PD damps implicitly, stable for any inertia. The
-/// defaults: a 0.1 m cell of water's density (0.1 kg m; a body of 0.36 kg,
-/// its torso 10 cm square). What the size still changes: under the paper's
-/// CFM its feet creep, 3e-4 cell widths/s standing (ODE's friction rows carry
-/// the world's CFM; the creep in cell widths goes as 1 / unit^2).
+/// defaults: a 1 m cell at 0.1 kg/m^3 (0.1 kg m; a body of 0.036 kg, its
+/// torso 1 m square). What the size changes: under the paper's CFM the feet
+/// creep (ODE's friction rows carry the world's CFM; in cell widths the creep
+/// goes as 1 / unit^2), and at 0.1 m (water's density) that slip made evolved
+/// gaits depend on the step: their speed changed by 40-80% from 0.01 s to
+/// 0.005 s, where in 1 m cells the same controllers' speeds agree within 10%
+/// from 0.01 s to 0.0025 s (docs/rivercrossing.md, "Unit and density").
 struct QuadrupedDef {
-  double unit = 0.1;       ///< metres per cell width
-  double density = 1000;   ///< kg/m^3 of every part
+  double unit = 1;         ///< metres per cell width
+  double density = 0.1;    ///< kg/m^3 of every part
   friend bool operator==(const QuadrupedDef&, const QuadrupedDef&) = default;
 };
 

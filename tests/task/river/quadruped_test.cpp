@@ -175,12 +175,12 @@ TEST(Quadruped, PhysicsAndMotorsAreThePapers) {
   EXPECT_EQ(m.kp, 0.25);
   EXPECT_EQ(m.kd, 0.175);
   EXPECT_EQ(m.response_time, 0);
-  // the defaults: a 0.1 m cell of water's density, 0.1 kg m of weight
-  // product (QuadrupedDef), a body of 0.36 kg
-  EXPECT_EQ(def.unit, 0.1);
-  EXPECT_EQ(def.density, 1000);
+  // the defaults: a 1 m cell at 0.1 kg/m^3, 0.1 kg m of weight product
+  // (QuadrupedDef), a body of 0.036 kg
+  EXPECT_EQ(def.unit, 1);
+  EXPECT_EQ(def.density, 0.1);
   EXPECT_NEAR(def.density * std::pow(def.unit, 4), 0.1, 1e-12);
-  EXPECT_NEAR(make_quadruped(def).total_mass(), 0.36, 1e-12);
+  EXPECT_NEAR(make_quadruped(def).total_mass(), 0.036, 1e-12);
 }
 
 // ---- in physics ----------------------------------------------------------
@@ -495,18 +495,21 @@ TEST(QuadrupedScale, TheLimbsInertiaNoLongerMatters) {
 TEST(QuadrupedScale, ItCreepsAtTheWorldsCFMTimesItsFrictionForce) {
   // ODE gives a contact's friction rows the world's CFM: each slips at CFM
   // times the force it carries (m/s per N), a viscous creep under a standing
-  // body's weight. At the defaults (3.5 N; the paper's CFM 5e-5) the torso
-  // sinks 3e-4 u/s (3e-5 m/s; measured over 600 s: from 0.485 to 0.331 u). A
-  // tenth of the CFM creeps a tenth as fast; so does the same weight product
-  // in a cell 3.2 times larger (measured 3e-6 u/s at 1 m, 3e-8 at 10 m: the
-  // creep in u/s goes as CFM x density x unit^2 x g)
-  const QuadrupedDef def;
+  // body's weight. In 0.1 m cells of water's density (3.5 N; the paper's CFM
+  // 5e-5) the torso sinks 3e-4 u/s (3e-5 m/s; measured over 600 s: from
+  // 0.485 to 0.331 u). A tenth of the CFM creeps a tenth as fast; so does the
+  // same weight product in a cell 3.2 times larger: the creep in u/s goes as
+  // CFM x density x unit^2 x g, so the default 1 m cell at 0.1 kg/m^3
+  // creeps a hundredth as fast (measured 3e-6 u/s; 3e-8 at 10 m)
+  const QuadrupedDef def{0.1, 1000};
   const Outcome paper = drop(def, river_physics(def), all(0));
   PhysicsDef stiffer = river_physics(def);
   stiffer.cfm /= 10;
   const Outcome tenth = drop(def, stiffer, all(0));
   EXPECT_GT(paper.speed, 1e-4);                       // measured 3.0e-4 u/s
   EXPECT_NEAR(tenth.speed / paper.speed, 0.1, 0.02);  // measured 0.100
+  const Outcome metre = drop(QuadrupedDef{}, river_physics(QuadrupedDef{}), all(0));
+  EXPECT_NEAR(metre.speed / paper.speed, 0.01, 0.003);  // measured 3.0e-6 u/s
 }
 
 }  // namespace
