@@ -596,10 +596,42 @@ Result<std::string> config_value(const std::string& text, const std::string& key
 
 int write_plot(const WatchArgs& a, const std::string& ext, const std::string& svg, const std::string& what);
 
-// several runs on one chart, each condition its median and interquartile band
+// Every recorded metric of `runs` whose name contains one of `wants`, in the
+// task's order; an error names what they have when none does.
+Result<std::vector<std::string>> matched_metrics(const std::vector<const std::vector<GenerationStats>*>& runs,
+                                                 const std::vector<std::string>& wants, const std::string& where) {
+  std::vector<std::string> names, known;
+  for (const auto* gens : runs)
+    for (const auto& g : *gens)
+      for (const MetricStat& m : g.metrics)
+        if (std::find(known.begin(), known.end(), m.name) == known.end()) known.push_back(m.name);
+  for (const std::string& k : known)
+    for (const std::string& want : wants)
+      if (k.find(want) != std::string::npos) {
+        names.push_back(k);
+        break;
+      }
+  if (names.empty()) {
+    std::string list;
+    for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
+    return Error{"--metric: no metric of " + where + " matches \"" + wants.front() + "\" (it has: " +
+                 (list.empty() ? std::string("none") : list) + ")"};
+  }
+  return names;
+}
+
+// A run's x per report: a steady state's tournaments per report interval
+// (its first stage's), else 1 generation.
+double per_report(const EvolutionDef& e) {
+  if (e.algorithm != Algorithm::SteadyState) return 1.0;
+  return static_cast<double>(e.report_every > 0 ? e.report_every : e.population);
+}
+
+// several runs on one chart, each condition its median and interquartile
+// band: their fitness, or with --metric their task's metrics
 int cmd_plot_runs(const WatchArgs& a, std::string& svg, std::string& what) {
-  if (!a.metrics.empty()) return fail("--metric: one run at a time (several runs compare their fitness)");
   std::vector<std::string> dirs{a.genome};
+  std::optional<double> per;
   dirs.insert(dirs.end(), a.more_runs.begin(), a.more_runs.end());
   std::vector<PlottedRun> runs;
   bool steady = false, generational = false;
@@ -614,6 +646,12 @@ int cmd_plot_runs(const WatchArgs& a, std::string& svg, std::string& what) {
     auto syl = read_syllabus(*text, run_db_path(dir) + " (its config)");
     if (!syl) return fail(syl.error());
     (syl->stages.front().cfg.evolution.algorithm == Algorithm::SteadyState ? steady : generational) = true;
+    const double p = per_report(syl->stages.front().cfg.evolution);
+    if (!a.metrics.empty() && per && *per != p)
+      return fail("plot --metric: " + dir + " reports every " + std::to_string(static_cast<long>(p)) +
+                  " tournaments, the first run every " + std::to_string(static_cast<long>(*per)) +
+                  ": no common x axis");
+    per = p;
     if (a.group_by.empty()) {
       r.condition = dir;
     } else if (a.group_by == "preset") {
@@ -629,7 +667,15 @@ int cmd_plot_runs(const WatchArgs& a, std::string& svg, std::string& what) {
     return fail("plot: generational and steady-state runs have no common x axis (generations against evaluations)");
   const std::string title = a.group_by.empty() ? std::to_string(runs.size()) + " runs"
                                                : std::to_string(runs.size()) + " runs by " + a.group_by;
-  svg = compare_svg(runs, steady, title, a.width, a.height);
+  if (!a.metrics.empty()) {
+    std::vector<const std::vector<GenerationStats>*> all;
+    for (const PlottedRun& r : runs) all.push_back(&r.gens);
+    auto names = matched_metrics(all, a.metrics, "these runs");
+    if (!names) return fail(names.error());
+    svg = compare_metric_svg(runs, *names, *per, steady ? "tournaments" : "generation", title, a.width, a.height);
+  } else {
+    svg = compare_svg(runs, steady, title, a.width, a.height);
+  }
   what = std::to_string(runs.size()) + " runs";
   return 0;
 }
@@ -655,23 +701,8 @@ int cmd_plot(const WatchArgs& a) {
   if (a.metrics.empty()) {
     svg = fitness_svg(gens, title, a.width, a.height);
   } else {
-    // every recorded metric whose name contains one of --metric's, in the task's order
-    std::vector<std::string> names, known;
-    for (const auto& g : gens)
-      for (const MetricStat& m : g.metrics)
-        if (std::find(known.begin(), known.end(), m.name) == known.end()) known.push_back(m.name);
-    for (const std::string& k : known)
-      for (const std::string& want : a.metrics)
-        if (k.find(want) != std::string::npos) {
-          names.push_back(k);
-          break;
-        }
-    if (names.empty()) {
-      std::string list;
-      for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
-      return fail("--metric: no metric of " + dir + " matches \"" + a.metrics.front() + "\" (it has: " +
-                  (list.empty() ? std::string("none") : list) + ")");
-    }
+    auto names = matched_metrics({&gens}, a.metrics, dir);
+    if (!names) return fail(names.error());
     // a steady state's report intervals count tournaments
     auto text = (*store)->config_text();
     if (!text) return fail(text.error());
@@ -679,8 +710,7 @@ int cmd_plot(const WatchArgs& a) {
     if (!syl) return fail(syl.error());
     const EvolutionDef& e = syl->stages.front().cfg.evolution;
     const bool steady = e.algorithm == Algorithm::SteadyState;
-    const double per = steady ? static_cast<double>(e.report_every > 0 ? e.report_every : e.population) : 1.0;
-    svg = metric_svg(gens, names, per, steady ? "tournaments" : "generation", title, a.width, a.height);
+    svg = metric_svg(gens, *names, per_report(e), steady ? "tournaments" : "generation", title, a.width, a.height);
   }
   char best[64];
   std::snprintf(best, sizeof best, "%.6g", gens.back().best);
@@ -760,7 +790,8 @@ void add_watch_commands(CLI::App& app) {
   p->add_option("--metric", plot.metrics,
                 "Instead of fitness, the share of each generation's evaluations in which each task metric whose name "
                 "contains this was not 0 (repeatable; e.g. \"completed\": each level a task counts as completed); "
-                "a metric not always 0 or 1 is drawn as its mean over those evaluations");
+                "a metric not always 0 or 1 is drawn as its mean over those evaluations; several runs: each condition's "
+                "median with its interquartile band");
   p->callback([] { std::exit(cmd_plot(plot)); });
 }
 

@@ -41,4 +41,13 @@ std::string metric_svg(const std::vector<GenerationStats>& gens, const std::vect
                        double per_generation, const std::string& x_label, const std::string& title,
                        int width = 800, int height = 500);
 
+/// metric_svg for several runs: for each condition (as compare_svg) and each
+/// named metric, the median over its runs per report (share or mean, as
+/// metric_svg decides over every run), with the interquartile band when the
+/// condition has more than one run. x is the generation times
+/// `per_generation` (the median over the runs that have it).
+std::string compare_metric_svg(const std::vector<PlottedRun>& runs, const std::vector<std::string>& names,
+                               double per_generation, const std::string& x_label, const std::string& title,
+                               int width = 800, int height = 500);
+
 }  // namespace bx
