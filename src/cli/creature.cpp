@@ -184,7 +184,22 @@ Result<RunConfig> genotype_config(const Genotype& g, const std::string& file, co
     }
   }
   layers.insert(layers.end(), set.begin(), set.end());
-  auto cfg = read_run_config(text, source, layers);
+  // a config of stages (a staged preset's file): its last stage's, the one
+  // whose best such a run reports
+  bool staged = false;
+  try {
+    staged = toml::parse(text, source)["stage"].is_array_of_tables();
+  } catch (const toml::parse_error&) {
+    // read_run_config reports it with its position
+  }
+  Result<RunConfig> cfg = Error{""};
+  if (staged) {
+    auto syl = read_syllabus(text, source, layers);
+    if (!syl) return Error{syl.error()};
+    cfg = syl->stages.back().cfg;
+  } else {
+    cfg = read_run_config(text, source, layers);
+  }
   if (!cfg) return Error{cfg.error()};
   if (genome && cfg->dialect != genome->dialect)
     return Error{source + ": genome.dialect is " + std::string(to_string(cfg->dialect)) + ", the genome's is " +

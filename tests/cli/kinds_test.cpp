@@ -254,6 +254,14 @@ TEST_F(Kinds, AFloatGenotypeFileWithoutProvenanceNeedsAConfig) {
                        seed + " --json");
   ASSERT_EQ(s.code, 0) << s.err;
   EXPECT_EQ(json::parse(s.out)["fitness"].get<double>(), stored(run(), id));
+  // a config of stages (a staged preset's file, rivercrossing-small's): its
+  // last stage's, whose best such a run reports
+  const fs::path staged = dir / "staged.toml";
+  std::ofstream(staged) << "[genotype]\nkind = \"river\"\n[river]\nseconds = 2\n[[stage]]\nname = \"short\"\n"
+                           "[stage.river]\nseconds = 1\n[[stage]]\nname = \"long\"\nstart = \"population\"\n";
+  Outcome st = bestiary("simulate " + plain.string() + " --config " + staged.string());
+  ASSERT_EQ(st.code, 0) << st.err;
+  EXPECT_NE(st.out.find("simulated 2.00 s"), std::string::npos) << st.out;
   // a config of another creature kind, or genes its kind does not take: one line each
   const fs::path graph = dir / "graph.toml";
   std::ofstream(graph) << "[task]\nseconds = 2\n";
