@@ -121,9 +121,9 @@ TEST(RiverEval, ARandomControllerWalksTheGridOnRealPhysicsAndReportsItsMetrics) 
 // CFM a foot slips at CFM times its friction force, which in cell widths
 // goes as 1 / unit^2. creatures/river_walker.json, a 1 Hz walker evolved in
 // 0.1 m cells at 0.01 s (rivercrossing-small seed 1's best before the
-// default became 1 m), walks a minute 39% farther at 0.005 s than at 0.01 s
-// in 0.1 m cells of water's density; in the default 1 m cells it walks
-// farther still, and as far at 0.005 s and 0.0025 s as at 0.01 s.
+// default became 1 m), walks a minute over a quarter farther at 0.005 s than
+// at 0.01 s in 0.1 m cells of water's density; in the default 1 m cells as
+// far at 0.005 s and 0.0025 s as at 0.01 s.
 TEST(RiverEval, InTheDefaultCellsAnEvolvedGaitConvergesWithTheStepWhereInTenCentimetreCellsItDidNot) {
   std::ifstream in(std::string(BESTIARY_SOURCE_DIR) + "/creatures/river_walker.json");
   const FloatVector g(nlohmann::json::parse(in)["genes"].get<std::vector<double>>());
@@ -144,7 +144,6 @@ TEST(RiverEval, InTheDefaultCellsAnEvolvedGaitConvergesWithTheStepWhereInTenCent
   const double small_dt = travel(small, 1), small_half = travel(small, 2);
   EXPECT_GT(small_half / small_dt, 1.25) << small_dt << " " << small_half;
   const double at_dt = travel(QuadrupedDef{}, 1), half = travel(QuadrupedDef{}, 2), quarter = travel(QuadrupedDef{}, 4);
-  EXPECT_GT(at_dt, 1.5 * small_dt);
   EXPECT_NEAR(half / at_dt, 1, 0.1) << at_dt << " " << half;
   EXPECT_NEAR(quarter / at_dt, 1, 0.1) << at_dt << " " << quarter;
 }
