@@ -244,7 +244,8 @@ int Evolution::elite_count(int n) const {
 // least (fold_: task.trial_score); one whose score falls out of the elite
 // makes room for the next, evaluated in turn. Then the best, once it has
 // elite_evaluations, is evaluated until it has best_evaluations (all at
-// once); if it falls, the next best is, until the best has them.
+// once, or with best_evaluations_doubling in rounds that double its count);
+// if it falls, the next best is, until the best has them.
 // Returns the individuals born in earlier steps that were evaluated again;
 // those born in this step are updated in `born`.
 std::vector<Individual> Evolution::reevaluate_elite(EvolutionState& s, Evaluator& eval, long& failed,
@@ -285,8 +286,10 @@ std::vector<Individual> Evolution::reevaluate_elite(EvolutionState& s, Evaluator
     for (int k = 0; k < elite; ++k)
       if (s.population[order[k]].evaluations < evo_.elite_evaluations && !failed_retest(s.population[order[k]]))
         due.push_back({order[k], 1});
-    if (due.empty() && s.population[order[0]].evaluations < best_target && !failed_retest(s.population[order[0]]))
-      due.push_back({order[0], best_target - s.population[order[0]].evaluations});
+    if (due.empty() && s.population[order[0]].evaluations < best_target && !failed_retest(s.population[order[0]])) {
+      const int has = s.population[order[0]].evaluations, left = best_target - has;
+      due.push_back({order[0], evo_.best_evaluations_doubling ? std::min(left, std::max(1, has)) : left});
+    }
     if (due.empty()) break;
     std::vector<EvalJob> jobs;
     std::vector<std::pair<int, int>> keys;  // (member, evaluation) of each job

@@ -80,6 +80,13 @@ struct EvolutionDef {
   /// (issue 11). 0 or at most elite_evaluations: the best is evaluated as
   /// the rest of the elite.
   int best_evaluations = 0;
+  /// The best's further evaluations come in rounds that double its count (to
+  /// 2, 4, 8, ... up to best_evaluations), each followed by a new ranking, so
+  /// a creature whose first few evaluations were lucky drops out after a few
+  /// more instead of all of them: best_evaluations can be large where one
+  /// evaluation is noisy (a river level reached in a third of the layouts).
+  /// false: all at once.
+  bool best_evaluations_doubling = false;
   /// The elite's 2nd, 4th, ... evaluations step at half physics.dt
   /// (divided_step_config), so that with the least of them (task.trial_score =
   /// min) a gait that only the step makes does not keep its score (issue 11).

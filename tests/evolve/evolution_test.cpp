@@ -521,6 +521,43 @@ TEST_P(EliteEvaluations, TheBestIsEvaluatedUntilItHasBestEvaluations) {
   EXPECT_LT(luck16, 0.6 * luck4) << luck4;
 }
 
+// evolution.best_evaluations_doubling: the best's evaluations come in rounds
+// that double its count, each followed by a new ranking, so a candidate whose
+// first evaluations were lucky drops out after a few more: the best still has
+// best_evaluations and is as little lucky, for fewer evaluations than all at
+// once (the river's levels, where 20-60 evaluations of one candidate are a
+// minute's CPU).
+TEST_P(EliteEvaluations, DoublingRoundsGiveTheBestAsManyEvaluationsForFewer) {
+  auto ops = std::make_shared<FloatVectorOps>(FloatVectorDef{10, -1, 1, 0.1});
+  auto run = [&](bool doubling) {
+    EvolutionDef e = float_evolution(GetParam());
+    e.generations = 15;
+    e.evaluations = 450;
+    e.best_evaluations = 32;
+    e.best_evaluations_doubling = doubling;
+    Evolution evo(ops, e, 11, TrialScore::Mean);
+    NoisyTarget problem(0.3, 0.3);
+    EvolutionState s;
+    double luck = 0;
+    int steps = 0;
+    while (!evo.finished(s)) {
+      evo.step(s, problem);
+      const Individual& best = *std::max_element(s.population.begin(), s.population.end(),
+                                                 [](const Individual& a, const Individual& b) { return a.fitness < b.fitness; });
+      EXPECT_EQ(best.evaluations, 32);
+      luck += best.fitness - problem.exact(*best.genotype);
+      ++steps;
+    }
+    return std::pair{luck / steps, problem.evaluations};
+  };
+  auto [luck_once, cost_once] = run(false);
+  auto [luck_doubling, cost_doubling] = run(true);
+  EXPECT_LT(cost_doubling, cost_once);
+  EXPECT_LT(luck_doubling, luck_once + 0.02) << luck_once;
+  std::printf("all at once: luck %.3f for %ld evaluations; doubling: luck %.3f for %ld\n", luck_once, cost_once,
+              luck_doubling, cost_doubling);
+}
+
 INSTANTIATE_TEST_SUITE_P(Both, EliteEvaluations,
                          ::testing::Values(Algorithm::Generational, Algorithm::SteadyState),
                          [](const auto& info) {
