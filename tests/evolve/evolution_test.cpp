@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <functional>
 #include <cmath>
 #include <map>
 #include <tuple>
@@ -479,38 +480,50 @@ TEST_P(EliteEvaluations, IdleWorkersEvaluateAheadAndTheRunIsTheSameForAnyWidth) 
               wide.made, wide.evaluations);
 }
 
-TEST_P(EliteEvaluations, TheBestIsEvaluatedUntilItHasBestEvaluations) {
+// A run of 15 generations on the noisy problem with best_evaluations =
+// best_n (elite_evaluations = elite_n): `each` sees the state after every
+// step with the best first; returns the best's mean luck (its fitness over
+// its exact one) and the evaluations made.
+std::pair<double, long> best_luck(Algorithm algorithm, int elite_n, int best_n, bool doubling,
+                                  const std::function<void(std::vector<Individual>&, long, NoisyTarget&)>& each) {
   auto ops = std::make_shared<FloatVectorOps>(FloatVectorDef{10, -1, 1, 0.1});
+  EvolutionDef e = float_evolution(algorithm);
+  e.generations = 15;
+  e.evaluations = 450;
+  e.elite_evaluations = elite_n;
+  e.best_evaluations = best_n;
+  e.best_evaluations_doubling = doubling;
+  Evolution evo(ops, e, 11, TrialScore::Mean);
+  NoisyTarget problem(0.3, 0.3);
+  EvolutionState s;
+  double luck = 0;
+  int steps = 0;
+  while (!evo.finished(s)) {
+    evo.step(s, problem);
+    std::vector<Individual> sorted = s.population;
+    std::sort(sorted.begin(), sorted.end(), [](const Individual& a, const Individual& b) { return a.fitness > b.fitness; });
+    each(sorted, s.evaluations, problem);
+    luck += sorted[0].fitness - problem.exact(*sorted[0].genotype);
+    ++steps;
+  }
+  return {luck / steps, problem.evaluations};
+}
+
+TEST_P(EliteEvaluations, TheBestIsEvaluatedUntilItHasBestEvaluations) {
   auto run = [&](int best_n) {
-    EvolutionDef e = float_evolution(GetParam());
-    e.generations = 15;
-    e.evaluations = 450;
-    e.elite_evaluations = 4;
-    e.best_evaluations = best_n;
-    Evolution evo(ops, e, 11, TrialScore::Mean);
-    NoisyTarget problem(0.3, 0.3);
-    EvolutionState s;
-    double luck = 0;
-    int steps = 0;
-    while (!evo.finished(s)) {
-      evo.step(s, problem);
-      EXPECT_EQ(s.evaluations, problem.evaluations);
-      std::vector<Individual> sorted = s.population;
-      std::sort(sorted.begin(), sorted.end(),
-                [](const Individual& a, const Individual& b) { return a.fitness > b.fitness; });
-      const Individual& best = sorted[0];
-      EXPECT_EQ(best.evaluations, std::max(4, best_n));
-      for (int k = 1; k < 6; ++k) EXPECT_GE(sorted[k].evaluations, 4) << "elite " << k;
-      // its fitness the mean of its evaluations under repeat_seed(seed, 0..)
-      double mean = problem.exact(*best.genotype) + problem.noise(best.seed);
-      for (int j = 1; j < best.evaluations; ++j)
-        mean = fold_score(TrialScore::Mean, mean, j,
-                          problem.exact(*best.genotype) + problem.noise(repeat_seed(best.seed, j)));
-      EXPECT_EQ(best.fitness, mean);
-      luck += best.fitness - problem.exact(*best.genotype);
-      ++steps;
-    }
-    return std::pair{luck / steps, problem.evaluations};
+    return best_luck(GetParam(), 4, best_n, false,
+                     [&](std::vector<Individual>& sorted, long evaluations, NoisyTarget& problem) {
+                       EXPECT_EQ(evaluations, problem.evaluations);
+                       const Individual& best = sorted[0];
+                       EXPECT_EQ(best.evaluations, std::max(4, best_n));
+                       for (int k = 1; k < 6; ++k) EXPECT_GE(sorted[k].evaluations, 4) << "elite " << k;
+                       // its fitness the mean of its evaluations under repeat_seed(seed, 0..)
+                       double mean = problem.exact(*best.genotype) + problem.noise(best.seed);
+                       for (int j = 1; j < best.evaluations; ++j)
+                         mean = fold_score(TrialScore::Mean, mean, j,
+                                           problem.exact(*best.genotype) + problem.noise(repeat_seed(best.seed, j)));
+                       EXPECT_EQ(best.fitness, mean);
+                     });
   };
   auto [luck4, cost4] = run(0);
   auto [luck16, cost16] = run(16);
@@ -528,27 +541,10 @@ TEST_P(EliteEvaluations, TheBestIsEvaluatedUntilItHasBestEvaluations) {
 // once (the river's levels, where 20-60 evaluations of one candidate are a
 // minute's CPU).
 TEST_P(EliteEvaluations, DoublingRoundsGiveTheBestAsManyEvaluationsForFewer) {
-  auto ops = std::make_shared<FloatVectorOps>(FloatVectorDef{10, -1, 1, 0.1});
   auto run = [&](bool doubling) {
-    EvolutionDef e = float_evolution(GetParam());
-    e.generations = 15;
-    e.evaluations = 450;
-    e.best_evaluations = 32;
-    e.best_evaluations_doubling = doubling;
-    Evolution evo(ops, e, 11, TrialScore::Mean);
-    NoisyTarget problem(0.3, 0.3);
-    EvolutionState s;
-    double luck = 0;
-    int steps = 0;
-    while (!evo.finished(s)) {
-      evo.step(s, problem);
-      const Individual& best = *std::max_element(s.population.begin(), s.population.end(),
-                                                 [](const Individual& a, const Individual& b) { return a.fitness < b.fitness; });
-      EXPECT_EQ(best.evaluations, 32);
-      luck += best.fitness - problem.exact(*best.genotype);
-      ++steps;
-    }
-    return std::pair{luck / steps, problem.evaluations};
+    return best_luck(GetParam(), 1, 32, doubling, [](std::vector<Individual>& sorted, long, NoisyTarget&) {
+      EXPECT_EQ(sorted[0].evaluations, 32);
+    });
   };
   auto [luck_once, cost_once] = run(false);
   auto [luck_doubling, cost_doubling] = run(true);

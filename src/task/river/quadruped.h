@@ -33,7 +33,7 @@ namespace bx {
 /// torso 1 m square). What the size changes: under the paper's CFM the feet
 /// creep (ODE's friction rows carry the world's CFM; in cell widths the creep
 /// goes as 1 / unit^2), and at 0.1 m (water's density) that slip made evolved
-/// gaits depend on the step: their speed changed by 40-80% from 0.01 s to
+/// gaits depend on the step: their speed changed by up to 45% from 0.01 s to
 /// 0.005 s, where in 1 m cells the same controllers' speeds agree within 10%
 /// from 0.01 s to 0.0025 s (docs/rivercrossing.md, "Unit and density").
 struct QuadrupedDef {
