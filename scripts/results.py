@@ -306,7 +306,10 @@ def river_row(preset, seed, run_dir):
              f"{100 * travel(first):.1f} → {100 * travel(last):.1f}")
     # every stage's first generation is a population of its own (random, or the last stage's copied)
     tournaments = state['next_id'] - pop * max(1, len(stages(run_dir)))
-    return (f"| {preset} | {seed} | {tournaments} | {evals} | {best:.4g} | {start} | {cells} | {svg} |",
+    # the best where selection never looked (evolution.held_out_evaluations), if measured
+    h = con.execute("select value from run where key = 'held_out'").fetchone()
+    held = f"{json.loads(h[0])['fitness']:.4g} ({len(json.loads(h[0])['by_seed'])})" if h else "-"
+    return (f"| {preset} | {seed} | {tournaments} | {evals} | {best:.4g} | {held} | {start} | {cells} | {svg} |",
             shares, span)
 
 
@@ -316,9 +319,11 @@ def river_tables(rows):
            "the torso's mean travel (cm) per evaluation of the individuals born in them (their latest evaluation); "
            "approach: the mean, over those evaluations, of the levels' progress toward their resources (metric "
            "'approach': a completed level 1, the current one 1 - closest / start distance; runs made before it: -).",
-           "\n| preset | seed | tournaments | evaluations | best fitness | food | approach | travel (cm) | "
+           "Held out: the best's fitness in layouts no evaluation of the run used (evolution.held_out_evaluations; "
+           "how many in brackets), where its best fitness is the most of many means that selection kept.",
+           "\n| preset | seed | tournaments | evaluations | best fitness | held out | food | approach | travel (cm) | "
            + " | ".join(f"level {k}" for k in range(1, RIVER_LEVELS + 1)) + " | Fig. 5 curve |",
-           "|" + "---|" * (9 + RIVER_LEVELS)]
+           "|" + "---|" * (10 + RIVER_LEVELS)]
     out += [r[0] for r in rows]
     span = rows[0][2]
     out.append(f"\nTable 1 over these {len(rows)} runs (share of runs whose final {span} tournaments' evaluations "

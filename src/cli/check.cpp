@@ -52,7 +52,9 @@ int cmd_check(const CheckArgs& a) {
                  m.n_parts(), m.effectors.size(), static_cast<unsigned long long>(subject->seed));
   if (!a.json && !subject->settings.empty()) std::fprintf(stderr, "%s\n", subject->settings.c_str());
   // a run's elite: its other seeds against the score selection saw (mean or least)
-  CheckReport rep = check_creature(*creature, sim, subject->seed, subject->cfg.check, subject->repeats());
+  // (or, where its run measured it, against what it scored where selection never looked)
+  CheckReport rep = check_creature(*creature, sim, subject->seed, subject->cfg.check, subject->repeats(),
+                                   subject->scored_settings ? subject->held_out : std::nullopt);
   const EvalResult& s = rep.scored;
   const EvalDiagnostics& d = s.diagnostics;
 
@@ -63,13 +65,14 @@ int cmd_check(const CheckArgs& a) {
     out["fitness"] = s.fitness;
     out["scored_fitness"] = rep.scored_fitness;
     if (!rep.scored_by_seed.empty()) out["scored_by_seed"] = rep.scored_by_seed;
+    if (rep.held_out) out["held_out"] = {{"fitness", rep.held_out->fitness}, {"by_seed", rep.held_out->by_seed}};
     out["stored_fitness"] = subject->stored_fitness ? nlohmann::json(*subject->stored_fitness) : nlohmann::json(nullptr);
     out["failed"] = s.failed;
     out["failure"] = s.failure;
     for (const auto& v : rep.variants)
       out["variants"].push_back({{"name", v.name}, {"fitness", v.result.fitness}, {"ratio", v.ratio},
                                  {"gate", v.gate}, {"failed", v.result.failed}, {"failure", v.result.failure},
-                                 {"seed_fitness", v.seed_fitness}});
+                                 {"seed_fitness", v.seed_fitness}, {"slack", v.slack}});
     out["other_seeds"] = rep.other_seeds;  // the ratio, their median or mean:
     out["other_seeds_statistic"] = subject->cfg.check.other_seeds_statistic == SeedStatistic::Mean ? "mean" : "median";
     // ratios of the gain over doing nothing, where doing nothing scores
@@ -104,8 +107,12 @@ int cmd_check(const CheckArgs& a) {
     std::printf("  scored as the %s of %zu evaluations%s:", score_name(sim.trial_score), rep.scored_by_seed.size(),
                 halves.empty() ? "" : (" (" + halves + ")").c_str());
     for (double f : rep.scored_by_seed) std::printf(" %.4g", f);
-    std::printf(" = %.6g (other seeds' ratios are to this)\n", rep.scored_fitness);
+    std::printf(" = %.6g%s\n", rep.scored_fitness, rep.held_out ? "" : " (other seeds' ratios are to this)");
   }
+  if (rep.held_out)
+    std::printf("  held out: the %s of %zu evaluations under seeds its run never used = %.6g (other seeds' ratios "
+                "are to this: what selection saw overstates a creature kept for it)\n",
+                score_name(sim.trial_score), rep.held_out->by_seed.size(), rep.held_out->fitness);
   if (rep.basis.idle_scores)
     std::printf("  doing nothing (every joint held) scores %.6g: each ratio below is of the gain over it\n", rep.idle);
   int width = 0;  // the names in one column

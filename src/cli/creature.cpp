@@ -146,6 +146,9 @@ Result<Subject> from_run(const RunTarget& t, const CreatureFlags& f) {
   c.evaluations = ind->evaluations;
   c.individual = *ind;
   c.run_dir = t.dir;
+  auto held = (*store)->held_out();
+  if (!held) return Error{held.error()};
+  if (*held && (*held)->id == ind->id) c.held_out = **held;
   // --set keys that change no evaluation (check's gates) keep it as scored
   bool same = f.set.empty();
   if (!same) {
@@ -263,6 +266,19 @@ Result<Subject> from_genome(const std::string& path, const CreatureFlags& f) {
           return Error{path + ": provenance.evaluations: expected a whole number >= 1, got " +
                        prov["evaluations"].dump().substr(0, 40)};
         c.evaluations = static_cast<int>(prov["evaluations"].get<std::int64_t>());
+      }
+      if (prov.contains("held_out")) {
+        const json& h = prov["held_out"];
+        HeldOut held;
+        try {
+          held.by_seed = h.at("by_seed").get<std::vector<double>>();
+          held.fitness = h.at("fitness").get<double>();
+        } catch (const json::exception&) {
+          return Error{path + ": provenance.held_out: expected {\"fitness\": a number, \"by_seed\": numbers}, got " +
+                       h.dump().substr(0, 60)};
+        }
+        if (held.by_seed.empty()) return Error{path + ": provenance.held_out.by_seed: expected at least one number"};
+        if (genome_same) c.held_out = std::move(held);
       }
       if (c.scored_settings)
         c.settings = "as scored (" + scored_by + "): its run's config" +
@@ -394,6 +410,7 @@ json provenance_json(const Subject& c, const std::string& config_text) {
     p["fitness"] = c.individual->fitness;
     p["evaluations"] = c.individual->evaluations;
   }
+  if (c.held_out) p["held_out"] = {{"fitness", c.held_out->fitness}, {"by_seed", c.held_out->by_seed}};
   p["seed"] = std::to_string(c.seed);  // text: JSON numbers lose 64-bit integers in many readers
   p["genome_hash"] = fnv1a64_hex(genotype_text(*c.genotype));
   p["config_hash"] = fnv1a64_hex(config_text);

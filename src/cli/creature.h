@@ -24,6 +24,7 @@
 #include "eval/creature.h"
 #include "evolve/evolution.h"
 #include "io/config.h"
+#include "io/run_store.h"
 
 namespace CLI {
 class App;
@@ -57,6 +58,10 @@ struct Subject {
   /// under repeat_seed(seed, 0..n-1).
   int evaluations = 1;
   std::optional<Individual> individual; ///< a run's individual, as stored
+  /// Its run's held-out measure of it (evolution.held_out_evaluations: the
+  /// run's best, evaluated under seeds the run never used), when it has one;
+  /// from a genome file, as its provenance carries it (id 0).
+  std::optional<HeldOut> held_out;
   std::string run_dir;                  ///< its run, if any
   /// The trial (0-based, below task.trials) --trial chose to watch, whose
   /// replay and measures a command shows (evaluate_trial; the fitness stays

@@ -107,6 +107,9 @@ int finish(const std::string& dir, const Status& s) {
     } else if (!gens.empty()) {
       std::printf("best fitness %.6g (generation 0: %.6g)\n", gens.back().best, gens.front().best);
     }
+    if (auto h = (*store)->held_out(); h && *h)
+      std::printf("its best (individual %lld) held out: %.6g over %zu evaluations under seeds the run never used\n",
+                  static_cast<long long>((**h).id), (**h).fitness, (**h).by_seed.size());
     if (auto text = (*store)->config_text(); text)
       if (auto syl = read_syllabus(*text, run_db_path(dir)); syl) body = has_body(syl->stages.front().cfg.sim.creature);
   }
@@ -353,6 +356,10 @@ int cmd_best(const std::string& target, const CreatureFlags& flags, const std::s
   bool overall = fs::is_directory(target) && !flags.id && !flags.gen;
   std::fprintf(stderr, "%sindividual %lld of generation %d, fitness %.6g (%s)\n", overall ? "best so far: " : "",
                static_cast<long long>(ind.id), ind.generation, ind.fitness, ind.op.c_str());
+  if (c->held_out)
+    std::fprintf(stderr, "held out: %.6g, the %s of %zu evaluations under seeds its run never used "
+                 "(evolution.held_out_evaluations)\n",
+                 c->held_out->fitness, score_name(c->cfg.sim.trial_score), c->held_out->by_seed.size());
   // the genotype (a graph genome's file, or another kind's genotype file)
   // with where it came from: the run's config and the seed that scored it
   // travel with it, so `simulate/show/render/check FILE` replay that evaluation
@@ -479,7 +486,8 @@ void add_evolve_commands(CLI::App& app) {
       ->check(CLI::IsMember({"pool", "mpi"}));
   s->add_flag("--quiet", resume_quiet, "No progress output");
   s->add_option("--set", resume_set,
-                "Lengthen the run: evolution.generations=N (generational) or evolution.evaluations=N (steady state)");
+                "Lengthen the run: evolution.generations=N (generational) or evolution.evaluations=N (steady state); "
+                "or measure its best held out: evolution.held_out_evaluations=N");
   s->callback([sw] {
     resume_evaluator.workers_given = sw->count() > 0;
     std::exit(cmd_resume(resume_dir, resume_evaluator, resume_workers, resume_quiet, resume_set));

@@ -20,6 +20,16 @@ double mean(const std::vector<double>& v) {
   return v.empty() ? 0 : sum / static_cast<double>(v.size());
 }
 
+// the standard error of the mean of v (0 for fewer than two)
+double standard_error(const std::vector<double>& v) {
+  const std::size_t n = v.size();
+  if (n < 2) return 0;
+  const double m = mean(v);
+  double ss = 0;
+  for (double x : v) ss += (x - m) * (x - m);
+  return std::sqrt(ss / static_cast<double>(n - 1) / static_cast<double>(n));
+}
+
 double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   std::size_t n = v.size();
@@ -56,7 +66,7 @@ std::uint64_t check_seed(std::uint64_t seed, int k) {
 }
 
 CheckReport check_creature(const Creature& creature, const SimConfig& cfg, std::uint64_t seed, const CheckDef& def,
-                           const Repeats& repeats) {
+                           const Repeats& repeats, const std::optional<HeldOut>& held_out) {
   const CreatureModel& m = *creature.body;
   CheckReport rep;
   {
@@ -95,42 +105,68 @@ CheckReport check_creature(const Creature& creature, const SimConfig& cfg, std::
 
   // other physics seeds: their median, so one lucky or unlucky seed does
   // not decide, or their mean (a rare large score counts as a mean fitness counts it)
-  std::vector<double> seeds;
-  for (int k = 1; k <= def.other_seeds; ++k)
-    seeds.push_back(run("seed " + std::to_string(k + 1), cfg, check_seed(seed, k), rep.scored_fitness));
+  // (against the held-out measure where there is one: both are fresh worlds)
+  rep.held_out = held_out;
+  const double reference = held_out ? held_out->fitness : rep.scored_fitness;
+  std::vector<double> seeds, seed_fitness;
+  const std::size_t first_seed = rep.variants.size();
+  for (int k = 1; k <= def.other_seeds; ++k) {
+    seeds.push_back(run("seed " + std::to_string(k + 1), cfg, check_seed(seed, k), reference));
+    seed_fitness.push_back(rep.variants.back().result.fitness);
+  }
   const bool by_mean = def.other_seeds_statistic == SeedStatistic::Mean;
   const char* statistic = by_mean ? "mean" : "median";
-  if (!seeds.empty()) rep.other_seeds = by_mean ? mean(seeds) : median(seeds);
+  auto combine = [&](const std::vector<double>& v) { return by_mean ? mean(v) : median(v); };
+  // under the mean: two standard errors of the difference of the means of
+  // `a` and of `b` (each fitness), as a share of `of`'s gain over idle
+  auto slack = [&](const std::vector<double>& a, const std::vector<double>& b, double of) {
+    if (!by_mean || !(of - idle > 0)) return 0.0;
+    return 2 * std::hypot(standard_error(a), standard_error(b)) / (of - idle);
+  };
+  double seeds_slack = 0;
+  if (!seeds.empty()) {
+    rep.other_seeds = combine(seeds);
+    // against the held-out evaluations, or those that scored it (one alone: no spread to know)
+    seeds_slack = slack(seed_fitness, held_out ? held_out->by_seed : rep.scored_by_seed, reference);
+    for (std::size_t k = first_seed; k < rep.variants.size(); ++k) rep.variants[k].slack = seeds_slack;
+  }
 
   // the same creature under another config (a smaller step, a better solved
   // step, a slower motor, a slower brain); with converge_seeds > 1 each by its
-  // median over those seeds against the median at dt over them
+  // median (mean) over those seeds against the same at dt over them
   const int ks = std::max(1, def.converge_seeds);
   std::vector<double> at_dt{scored};
   for (int k = 1; k < ks; ++k)
-    at_dt.push_back(k <= def.other_seeds ? rep.variants[k - 1].result.fitness
+    at_dt.push_back(k <= def.other_seeds ? rep.variants[first_seed + k - 1].result.fitness
                                          : evaluate(creature, cfg, check_seed(seed, k)).fitness);
-  const double base = median(at_dt);
+  const double base = combine(at_dt);
   auto compare = [&](const std::string& name, const SimConfig& c) {
     if (ks == 1) return run(name, c, seed, scored);
-    CheckVariant v{name + " (median of " + std::to_string(ks) + " seeds)", evaluate(creature, c, seed), 0, {}, {}};
+    CheckVariant v{name + " (" + statistic + " of " + std::to_string(ks) + " seeds)", evaluate(creature, c, seed), 0,
+                   {}, {}};
     std::vector<double> f{v.result.fitness};
     for (int k = 1; k < ks; ++k) f.push_back(evaluate(creature, c, check_seed(seed, k)).fitness);
     v.seed_fitness = f;
-    v.result.fitness = median(f);
+    v.result.fitness = combine(f);
     v.ratio = ratio(v.result.fitness, base);
+    v.slack = slack(f, at_dt, base);
     rep.variants.push_back(v);
     return v.ratio;
   };
-  std::vector<std::pair<std::string, double>> converged;
-  for (int div : {2, 4}) {
-    const std::string name = "dt/" + std::to_string(div);
-    converged.push_back({name, compare(name, divided_step_config(cfg, div))});
-  }
+  struct Judged {
+    std::string name;
+    double ratio, slack;
+  };
+  auto judged = [&](const std::string& name, const SimConfig& c) {
+    const double r = compare(name, c);
+    return Judged{name, r, rep.variants.back().slack};
+  };
+  std::vector<Judged> converged;
+  for (int div : {2, 4}) converged.push_back(judged("dt/" + std::to_string(div), divided_step_config(cfg, div)));
   if (cfg.physics.solver == Solver::QuickStep) {  // the exact solver has no iterations to double
     SimConfig c = cfg;
     c.physics.solver_iterations *= 2;
-    converged.push_back({"2x iterations", compare("2x iterations", c)});
+    converged.push_back(judged("2x iterations", c));
   }
   // what a real actuator imposes: a motor that lags its command, a brain at
   // half its rate; a fitness earned by flipping signals at the brain's rate
@@ -142,8 +178,8 @@ CheckReport check_creature(const Creature& creature, const SimConfig& cfg, std::
     SimConfig c = cfg;
     c.motor.response_time += def.motor_lag;
     const std::string name = "motor lag +" + fixed(1000 * def.motor_lag) + " ms";
-    const double r = compare(name, c);
-    if (r < def.min_motor_lag)
+    const auto [_, r, sl] = judged(name, c);
+    if (r < def.min_motor_lag - sl)
       buzz.push_back("with its motors lagging " + fixed(1000 * def.motor_lag) + " ms more it keeps " + fixed(r) +
                      " < " + fixed(def.min_motor_lag));
   }
@@ -151,8 +187,8 @@ CheckReport check_creature(const Creature& creature, const SimConfig& cfg, std::
     SimConfig c = cfg;
     c.brain_hz /= 2;
     const std::string name = "brain at " + fixed(c.brain_hz) + " Hz";
-    const double r = compare(name, c);
-    if (r < def.min_half_rate)
+    const auto [_, r, sl] = judged(name, c);
+    if (r < def.min_half_rate - sl)
       buzz.push_back("with its brain at half its rate (" + fixed(c.brain_hz) + " Hz) it keeps " + fixed(r) + " < " +
                      fixed(def.min_half_rate));
   }
@@ -207,14 +243,17 @@ CheckReport check_creature(const Creature& creature, const SimConfig& cfg, std::
   // each variant's gate, in words, for the report
   for (CheckVariant& v : rep.variants) {
     const auto starts = [&](const char* p) { return v.name.rfind(p, 0) == 0; };
+    // a gate widened by the noise of the mean: "0.75 - 0.31"
+    const auto low = [&](double g) { return fixed(g) + (v.slack > 0 ? " - " + fixed(v.slack) : ""); };
+    const auto high = [&](double g) { return fixed(g) + (v.slack > 0 ? " + " + fixed(v.slack) : ""); };
     if (starts("seed "))
-      v.gate = std::string("their ") + statistic + " >= " + fixed(def.min_other_seeds);
+      v.gate = std::string("their ") + statistic + " >= " + low(def.min_other_seeds);
     else if (starts("dt/") || starts("2x iterations"))
-      v.gate = "in [" + fixed(def.min_converged) + ", " + fixed(def.max_converged) + "]";
+      v.gate = "in [" + low(def.min_converged) + ", " + high(def.max_converged) + "]";
     else if (starts("motor lag"))
-      v.gate = ">= " + fixed(def.min_motor_lag);
+      v.gate = ">= " + low(def.min_motor_lag);
     else if (starts("brain at"))
-      v.gate = ">= " + fixed(def.min_half_rate);
+      v.gate = ">= " + low(def.min_half_rate);
     else if (starts("held: doing nothing"))
       v.gate = "none: the idle score the ratios subtract";
     else if (starts("clamped"))
@@ -245,14 +284,17 @@ CheckReport check_creature(const Creature& creature, const SimConfig& cfg, std::
     rep.failures.push_back("the scored fitness " + fixed(std::min(scored, rep.scored_fitness)) + " is not positive");
     return rep;
   }
-  if (!seeds.empty() && rep.other_seeds < def.min_other_seeds)
+  // (under the mean, each gate less the noise of so few evaluations: "(mean, less 2 s.e. 0.31)")
+  const auto less = [](double sl) { return sl > 0 ? " less 2 s.e. " + fixed(sl) : std::string(); };
+  if (!seeds.empty() && rep.other_seeds < def.min_other_seeds - seeds_slack)
     rep.failures.push_back("other seeds keep " + fixed(rep.other_seeds) + " (" + statistic + ") < " +
-                           fixed(def.min_other_seeds));
-  for (const auto& [name, ratio] : converged) {
-    if (ratio < def.min_converged)
-      rep.failures.push_back(name + " keeps " + fixed(ratio) + " < " + fixed(def.min_converged));
-    else if (ratio > def.max_converged)
-      rep.failures.push_back(name + " rises to " + fixed(ratio) + " > " + fixed(def.max_converged) +
+                           fixed(def.min_other_seeds) + less(seeds_slack));
+  for (const Judged& c : converged) {
+    if (c.ratio < def.min_converged - c.slack)
+      rep.failures.push_back(c.name + " keeps " + fixed(c.ratio) + " < " + fixed(def.min_converged) + less(c.slack));
+    else if (c.ratio > def.max_converged + c.slack)
+      rep.failures.push_back(c.name + " rises to " + fixed(c.ratio) + " > " + fixed(def.max_converged) +
+                             (c.slack > 0 ? " plus 2 s.e. " + fixed(c.slack) : "") +
                              " (not converged: the fitness grows as the step shrinks)");
   }
   if (!buzz.empty()) {

@@ -196,6 +196,17 @@ struct Repeats {
   bool quarter_step = false;
 };
 
+/// The run's best evaluated, once its last stage ended, under seeds no
+/// evaluation of the run used (evolution.held_out_evaluations): what it
+/// scores where selection never looked. Stored in the run (RunStore::held_out,
+/// its metadata "held_out"); `check` compares other seeds with it.
+struct HeldOut {
+  std::int64_t id = 0;          ///< the individual: the run's best when it was measured
+  std::vector<double> by_seed;  ///< each evaluation's fitness, in seed order (held_out_seed)
+  double fitness = 0;           ///< their fold (task.trial_score), a failed one counted as evolution.failed_fitness
+  friend bool operator==(const HeldOut&, const HeldOut&) = default;
+};
+
 /// What a run divides the step by for evaluation k (0-based) of a creature:
 /// 1, 2 or 4, cycling through 1, 2 (half_step) and 4 (quarter_step); with
 /// half_step alone the 2nd, 4th, ... are at half the step.

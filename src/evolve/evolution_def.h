@@ -87,6 +87,14 @@ struct EvolutionDef {
   /// evaluation is noisy (a river level reached in a third of the layouts).
   /// false: all at once.
   bool best_evaluations_doubling = false;
+  /// Evaluations of the run's best, once its last stage ends, under seeds
+  /// that no evaluation of the run used (held_out_seed): an estimate of its
+  /// fitness that selection never saw. Selection keeps what scored well, so
+  /// the best's stored fitness (the most of many means) overstates what it
+  /// scores in a fresh world where one evaluation is noisy (a river level
+  /// reached in some layouts); `check` compares its other seeds with this.
+  /// Stored in the run (RunStore::held_out); 0: none.
+  int held_out_evaluations = 0;
   /// The elite's 2nd, 4th, ... evaluations step at half physics.dt
   /// (divided_step_config), so that with the least of them (task.trial_score =
   /// min) a gait that only the step makes does not keep its score (issue 11).

@@ -85,6 +85,12 @@ class RunStore {
   std::string meta(const std::string& key) const;
   /// Sets a metadata value.
   Status set_meta(const std::string& key, const std::string& value);
+  /// The held-out measure of the run's best, if one was stored; an error
+  /// names a malformed one.
+  Result<std::optional<HeldOut>> held_out() const;
+  /// Stores it (replacing an earlier one: the run was lengthened and has
+  /// another best).
+  Status set_held_out(const HeldOut& h);
 
   /// The run's master seed, as stored ("seed"); an error if it is missing or
   /// not a whole number.

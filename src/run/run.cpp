@@ -264,6 +264,11 @@ std::uint64_t retest_seed(std::uint64_t run_seed, int stage, int retest) {
   return stream_seed({run_seed, kRetest, static_cast<std::uint64_t>(stage), static_cast<std::uint64_t>(retest)});
 }
 
+std::uint64_t held_out_seed(std::uint64_t run_seed, int k) {
+  constexpr std::uint64_t kHeldOut = 0x484f;  // a stream purpose of its own
+  return stream_seed({run_seed, kHeldOut, static_cast<std::uint64_t>(k)});
+}
+
 namespace {
 
 // stage k's General ESP retests (StageDef::retest_tolerance): each leaf
@@ -330,6 +335,61 @@ Status check_run(const Syllabus& syl) {
   return Ok{};
 }
 
+namespace {
+
+// Whether a finished run still owes its best's held-out measure: its last
+// stage asks for one (evolution.held_out_evaluations) and none is stored
+// for its best as it now stands (a lengthened run may have another), or
+// one of another count.
+Result<bool> held_out_due(const RunStore& store, const EvolutionDef& last) {
+  if (last.held_out_evaluations <= 0) return false;
+  auto h = store.held_out();
+  if (!h) return Error{h.error()};
+  auto best = store.best_individual();
+  if (!best) return Error{best.error()};
+  return !*h || (*h)->id != best->id || static_cast<int>((*h)->by_seed.size()) != last.held_out_evaluations;
+}
+
+// The run's best evaluated under evolution.held_out_evaluations held-out
+// seeds on the last stage's task (row `task` of the evaluator's table), in
+// one batch, and stored; a line of what came of it to the log (and to the
+// user unless quiet).
+Status measure_held_out(const std::string& dir, RunStore& store, const StageDef& last, int task,
+                        std::uint64_t run_seed, Evaluator& evaluator, std::ostream& log, bool quiet) {
+  auto best = store.best_individual();
+  if (!best) return Error{run_db_path(dir) + ": " + best.error()};
+  const int n = last.cfg.evolution.held_out_evaluations;
+  if (!quiet) {
+    std::printf("held out: evaluating the best (individual %lld) under %d seeds no evaluation of the run used ...\n",
+                static_cast<long long>(best->id), n);
+    std::fflush(stdout);
+  }
+  std::vector<EvalJob> jobs;
+  for (int k = 0; k < n; ++k) jobs.push_back({best->genotype.get(), held_out_seed(run_seed, k), 1, task});
+  const std::vector<EvalOutcome> out = evaluator.evaluate(jobs);
+  HeldOut h;
+  h.id = best->id;
+  int failed = 0;
+  for (const EvalOutcome& o : out) {
+    const bool lost = !o.viable || o.result.failed;
+    failed += lost;
+    h.by_seed.push_back(lost ? last.cfg.evolution.failed_fitness : o.result.fitness);
+  }
+  h.fitness = fold_scores(last.cfg.sim.trial_score, h.by_seed);
+  if (Status s = store.set_held_out(h); !s) return Error{run_db_path(dir) + ": " + s.error()};
+  char line[320];
+  std::snprintf(line, sizeof line,
+                "held out: individual %lld, the %s of %d evaluations under seeds the run never used: %.6g "
+                "(its stored fitness, what selection saw: %.6g)%s",
+                static_cast<long long>(h.id), score_name(last.cfg.sim.trial_score), n, h.fitness, best->fitness,
+                failed ? (", " + std::to_string(failed) + " failed").c_str() : "");
+  log << line << std::endl;
+  if (!quiet) std::printf("%s\n", line);
+  return Ok{};
+}
+
+}  // namespace
+
 Result<RunProgress> run_progress(const std::string& dir) {
   auto run = open_run(dir);
   if (!run) return Error{run.error()};
@@ -343,6 +403,11 @@ Result<RunProgress> run_progress(const std::string& dir) {
   p.evaluations = at->state.evaluations;
   p.complete = at->stage.index + 1 == static_cast<int>(stages.size()) &&
                Evolution::finished(stages.back().cfg.evolution, at->state);
+  if (p.complete) {
+    auto due = held_out_due(*run->store, stages.back().cfg.evolution);
+    if (!due) return Error{due.error()};
+    p.complete = !*due;
+  }
   return p;
 }
 
@@ -367,14 +432,30 @@ Status extend_run(const std::string& dir, const std::vector<std::string>& overri
   auto lock = RunLock::take(dir);
   if (!lock) return Error{lock.error()};
   RunStore* store = run->store.get();
+  std::string extended;
+  for (const auto& o : overrides) extended += " --set " + o;
+  const std::string text = *store->config_text();
+  const std::string head = text.substr(0, text.find('\n'));
+  // a held-out measure of its best, asked for after the run (evolution.held_out_evaluations):
+  // changes no evaluation, so any run may take it, one of stages too
+  const std::string held_out_key = "evolution.held_out_evaluations=";
+  if (std::all_of(overrides.begin(), overrides.end(), [&](const std::string& o) { return o.rfind(held_out_key, 0) == 0; })) {
+    auto syl = read_syllabus(text, run_db_path(dir) + " (the run's config)", overrides);
+    if (!syl) return Error{syl.error()};
+    const std::string resolved = head + " (held out by resume" + extended + ")\n" +
+                                 (syl->staged() ? syllabus_to_toml(*syl) : config_to_toml(syl->stages.front().cfg));
+    if (Status s = store->set_meta("config", resolved); !s) return Error{run_db_path(dir) + ": " + s.error()};
+    return write_file_atomic(run_config_path(dir), resolved);
+  }
   if (run->syllabus.staged())
     return Error{dir + ": a run of several stages cannot be lengthened (yet): its stages' budgets are its syllabus'"};
   const RunConfig* old = &run->syllabus.stages.front().cfg;
   const bool generational = old->evolution.algorithm == Algorithm::Generational;
   const std::string allowed = generational ? "evolution.generations" : "evolution.evaluations";
   for (const auto& o : overrides)
-    if (o.rfind(allowed + "=", 0) != 0)
-      return Error{"--set " + o + ": resume can only lengthen a run (" + allowed + "=N); the rest of its config stays"};
+    if (o.rfind(allowed + "=", 0) != 0 && o.rfind(held_out_key, 0) != 0)
+      return Error{"--set " + o + ": resume can only lengthen a run (" + allowed + "=N) or measure its best held " +
+                   "out (" + held_out_key + "N); the rest of its config stays"};
   auto cfg = read_run_config(*store->config_text(), run_db_path(dir) + " (the run's config)", overrides);
   if (!cfg) return Error{cfg.error()};
   auto cp_r = store->checkpoint();
@@ -397,10 +478,6 @@ Status extend_run(const std::string& dir, const std::vector<std::string>& overri
                    ") does not end on a report interval (" + std::to_string(every) +
                    "), so a longer run would not continue it exactly"};
   }
-  std::string extended;
-  for (const auto& o : overrides) extended += " --set " + o;
-  std::string text = *store->config_text();
-  std::string head = text.substr(0, text.find('\n'));
   std::string resolved = head + " (lengthened by resume" + extended + ")\n" + config_to_toml(*cfg);
   if (Status s = store->set_meta("config", resolved); !s) return Error{run_db_path(dir) + ": " + s.error()};
   return write_file_atomic(run_config_path(dir), resolved);
@@ -492,7 +569,12 @@ Status drive_run(const std::string& dir, const RunOptions& opt) {
     state.population.push_back(std::move(*f));  // the founder, until the first generation replaces it
   }
   auto finished_stage = [&] { return Evolution::finished(stages[stage.index].cfg.evolution, state); };
-  if (stage.index + 1 == n_stages && finished_stage()) return Ok{};
+  auto finished_run = [&] { return stage.index + 1 == n_stages && finished_stage(); };
+  if (finished_run()) {
+    auto due = held_out_due(store, stages.back().cfg.evolution);
+    if (!due) return Error{due.error()};
+    if (!*due) return Ok{};
+  }
 
   // one evaluator for every stage: its task table holds each stage's config
   // and each General ESP retest's (task_table)
@@ -622,6 +704,11 @@ Status drive_run(const std::string& dir, const RunOptions& opt) {
     if (opt.stop_after > 0 && done >= opt.stop_after) break;
   }
   if (tty) std::printf("\n");
+  if (finished_run()) {
+    auto due = held_out_due(store, stages.back().cfg.evolution);
+    if (!due) return Error{due.error()};
+    if (*due) return measure_held_out(dir, store, stages.back(), n_stages - 1, run->seed, *evaluator, log, opt.quiet);
+  }
   return Ok{};
 }
 

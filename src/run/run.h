@@ -35,6 +35,8 @@ struct RunProgress {
   int generations_done = 0;   ///< generations stored (steady state: report intervals)
   int generations_total = 0;  ///< as configured
   long evaluations = 0;
+  /// every stage evolved and, when the last asks for it, its best's
+  /// held-out measure stored (evolution.held_out_evaluations)
   bool complete = false;
 };
 Result<RunProgress> run_progress(const std::string& dir);
@@ -78,6 +80,11 @@ Status check_run(const Syllabus& stages);
 /// runs in, for every child and for the skill's reference (drive_run: the
 /// creature that ended the skill's last stage, on that stage's task).
 std::uint64_t retest_seed(std::uint64_t run_seed, int stage, int retest);
+
+/// The seed of the k-th (from 0) held-out evaluation of a run's best
+/// (evolution.held_out_evaluations): of a stream that no trial, repeat,
+/// retest or check draws from, so no evaluation selection saw used it.
+std::uint64_t held_out_seed(std::uint64_t run_seed, int k);
 
 /// The seeds of `run --seeds`: "A-B" (A to B), "A,B,C" or one seed, each a
 /// whole number; an error names the text. At most 10,000 seeds, none twice.

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <vector>
@@ -33,6 +34,13 @@ double ratio(const nlohmann::json& j, const std::string& name) {
 nlohmann::json check_report(const std::string& args, int code) {
   Outcome r = bestiary("check " + args + " --json");
   EXPECT_EQ(r.code, code) << r.out << r.err;
+  return nlohmann::json::parse(r.out);
+}
+
+// the same, passed or failed (exit code 0 or 1)
+nlohmann::json check_report(const std::string& args) {
+  Outcome r = bestiary("check " + args + " --json");
+  EXPECT_TRUE(r.code == 0 || r.code == 1) << r.out << r.err;
   return nlohmann::json::parse(r.out);
 }
 
@@ -434,13 +442,31 @@ TEST(Check, TheOtherSeedsCombineByTheirMedianOrTheirMean) {
     by[statistic] = nlohmann::json::parse(r.out);
     EXPECT_EQ(by[statistic]["other_seeds_statistic"], statistic);
   }
-  std::vector<double> seeds;
+  std::vector<double> seeds, fitness;
   for (const auto& v : by["mean"]["variants"])
     if (v["name"].get<std::string>().rfind("seed ", 0) == 0) {
       seeds.push_back(v["ratio"].get<double>());
-      EXPECT_EQ(v["gate"], "their mean >= 0.75");
+      fitness.push_back(v["fitness"].get<double>());
     }
   ASSERT_EQ(seeds.size(), 4u);
+  // under the mean, the gate widens by two standard errors of the seeds'
+  // mean (the scored fitness is one evaluation: no spread of its own), as a
+  // share of the scored fitness; under the median it stays
+  double m = 0, ss = 0;
+  for (double f : fitness) m += f / 4;
+  for (double f : fitness) ss += (f - m) * (f - m);
+  const double slack = 2 * std::sqrt(ss / 3 / 4) / by["mean"]["fitness"].get<double>();
+  char gate[64];
+  std::snprintf(gate, sizeof gate, "their mean >= 0.75 - %.3g", slack);
+  for (const auto& v : by["mean"]["variants"])
+    if (v["name"].get<std::string>().rfind("seed ", 0) == 0) {
+      EXPECT_NEAR(v["slack"].get<double>(), slack, 1e-12);
+      EXPECT_EQ(v["gate"], gate);
+    }
+  for (const auto& v : by["median"]["variants"]) {
+    EXPECT_EQ(v["slack"].get<double>(), 0) << v["name"];
+    if (v["name"].get<std::string>().rfind("seed ", 0) == 0) EXPECT_EQ(v["gate"], "their median >= 0.75");
+  }
   double sum = 0;
   for (double x : seeds) sum += x;
   std::sort(seeds.begin(), seeds.end());
@@ -451,6 +477,62 @@ TEST(Check, TheOtherSeedsCombineByTheirMedianOrTheirMean) {
   Outcome bad = bestiary("check " + args + " --set check.other_seeds_statistic=mode");
   EXPECT_EQ(bad.code, 2);
   EXPECT_NE(bad.err.find("other_seeds_statistic"), std::string::npos) << bad.err;
+}
+
+// A run that measures its best held out (evolution.held_out_evaluations):
+// the run ends with it stored and said; `check` compares the other seeds
+// with it; a finished run measures it when resumed with the key; the same
+// held-out seeds whatever the count (the first three of five are the three),
+// and whatever the number of workers.
+TEST(Check, ARunsBestHeldOutIsWhatCheckComparesOtherSeedsWith) {
+  const fs::path base = fs::temp_directory_path() / ("bx_held_out_" + std::to_string(::getpid()));
+  fs::remove_all(base);
+  const std::string small =
+      " --set evolution.population=10 --set evolution.generations=2 --set task.trial_score=mean --quiet";
+  const fs::path with = base / "with", later = base / "later";
+  Outcome run = bestiary("run quick --out " + with.string() + small +
+                         " --set evolution.held_out_evaluations=3 --workers 0");
+  ASSERT_EQ(run.code, 0) << run.err;
+  EXPECT_NE(run.out.find(") held out: "), std::string::npos) << run.out;  // "its best (individual N) held out: F"
+  const std::string fast = " --set check.other_seeds=2 --set check.converge_seeds=1 --set check.motor_lag=0"
+                           " --set check.min_half_rate=0 --set check.min_sustained=0";
+  auto j = check_report(with.string() + fast);
+  ASSERT_TRUE(j.contains("held_out")) << j.dump();
+  const std::vector<double> by_seed = j["held_out"]["by_seed"].get<std::vector<double>>();
+  ASSERT_EQ(by_seed.size(), 3u);
+  const double held = j["held_out"]["fitness"].get<double>();
+  EXPECT_DOUBLE_EQ(held, (by_seed[0] + by_seed[1] + by_seed[2]) / 3);
+  EXPECT_NE(held, j["stored_fitness"].get<double>());  // other worlds than selection's
+  for (const auto& v : j["variants"])
+    if (v["name"].get<std::string>().rfind("seed ", 0) == 0 && held > 0)
+      EXPECT_DOUBLE_EQ(v["ratio"].get<double>(), v["fitness"].get<double>() / held) << v["name"];
+  Outcome best = bestiary("best " + with.string() + " --out " + (base / "best.json").string());
+  ASSERT_EQ(best.code, 0) << best.err;
+  EXPECT_NE(best.err.find("held out: "), std::string::npos) << best.err;
+  // the genome file carries it: its check compares with it too
+  auto f = check_report((base / "best.json").string() + fast);
+  EXPECT_EQ(f["held_out"], j["held_out"]);
+  // resumed, a finished run with its measure has nothing left to do
+  Outcome again = bestiary("resume " + with.string());
+  EXPECT_EQ(again.code, 0) << again.err;
+  EXPECT_NE(again.out.find("already complete"), std::string::npos) << again.out;
+
+  // the same run without it, measured afterwards with five, on two workers
+  ASSERT_EQ(bestiary("run quick --out " + later.string() + small + " --workers 2").code, 0);
+  EXPECT_FALSE(check_report(later.string() + fast).contains("held_out"));
+  Outcome measured = bestiary("resume " + later.string() + " --set evolution.held_out_evaluations=5 --workers 2");
+  ASSERT_EQ(measured.code, 0) << measured.err;
+  EXPECT_NE(measured.out.find("the mean of 5 evaluations under seeds the run never used"), std::string::npos)
+      << measured.out;
+  auto l = check_report(later.string() + fast);
+  const std::vector<double> five = l["held_out"]["by_seed"].get<std::vector<double>>();
+  ASSERT_EQ(five.size(), 5u);
+  EXPECT_EQ(std::vector<double>(five.begin(), five.begin() + 3), by_seed);
+  // a key that is not the budget's nor the measure's is refused
+  Outcome bad = bestiary("resume " + later.string() + " --set physics.dt=0.001");
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.err.find("evolution.held_out_evaluations=N"), std::string::npos) << bad.err;
+  fs::remove_all(base);
 }
 
 TEST(Check, BadInputIsOneLineAndExitCodeTwo) {
