@@ -74,7 +74,7 @@ int cmd_check(const CheckArgs& a) {
                                  {"gate", v.gate}, {"failed", v.result.failed}, {"failure", v.result.failure},
                                  {"seed_fitness", v.seed_fitness}, {"slack", v.slack}});
     out["other_seeds"] = rep.other_seeds;  // the ratio, their median or mean:
-    out["other_seeds_statistic"] = subject->cfg.check.other_seeds_statistic == SeedStatistic::Mean ? "mean" : "median";
+    out["other_seeds_statistic"] = statistic_name(subject->cfg.check.other_seeds_statistic);
     // ratios of the gain over doing nothing, where doing nothing scores
     out["idle"] = rep.basis.idle_scores ? nlohmann::json(rep.idle) : nlohmann::json(nullptr);
     out["posture"] = rep.basis.posture;
@@ -129,7 +129,7 @@ int cmd_check(const CheckArgs& a) {
   }
   if (subject->cfg.check.other_seeds > 0)
     std::printf("  other seeds: %s ratio %s\n",
-                subject->cfg.check.other_seeds_statistic == SeedStatistic::Mean ? "mean" : "median",
+                statistic_name(subject->cfg.check.other_seeds_statistic),
                 ratio_text(rep.other_seeds).c_str());
   else
     std::printf("  other seeds: none (check.other_seeds = 0)\n");

@@ -115,7 +115,7 @@ CheckReport check_creature(const Creature& creature, const SimConfig& cfg, std::
     seed_fitness.push_back(rep.variants.back().result.fitness);
   }
   const bool by_mean = def.other_seeds_statistic == SeedStatistic::Mean;
-  const char* statistic = by_mean ? "mean" : "median";
+  const char* statistic = statistic_name(def.other_seeds_statistic);
   auto combine = [&](const std::vector<double>& v) { return by_mean ? mean(v) : median(v); };
   // under the mean: two standard errors of the difference of the means of
   // `a` and of `b` (each fitness), as a share of `of`'s gain over idle

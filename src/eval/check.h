@@ -19,6 +19,8 @@ namespace bx {
 
 /// How a check combines its other seeds' ratios (CheckDef::other_seeds_statistic).
 enum class SeedStatistic { Median, Mean };
+/// Its name, as the config spells it: "median" or "mean".
+inline const char* statistic_name(SeedStatistic s) { return s == SeedStatistic::Mean ? "mean" : "median"; }
 
 /// The gates of a check, as fractions of the scored fitness (config section
 /// [check]). Defaults: issue 11's.
