@@ -230,8 +230,11 @@ def stage_rows(preset, seed, run_dir, staged, check_set=()):
             sys.exit(r.stderr)
         c = json.loads(r.stdout)
         verdict = "pass" if c["passed"] else "FAIL: " + "; ".join(c["failures"])
+        # their median or mean, against the held-out fitness where the run measured one
+        others = f"{c['other_seeds']:.2f} ({c['other_seeds_statistic']}"
+        others += f", of held out {c['held_out']['fitness']:.4g})" if "held_out" in c else ")"
         out.append(f"| {preset} | {seed} | {k + 1} {name} | {g1 - g0 + 1} | {b0:.4g} | {b1:.4g} | {best_id} | "
-                   f"{c['other_seeds']:.2f} | {verdict} |")
+                   f"{others} | {verdict} |")
     return out
 
 
@@ -541,7 +544,7 @@ def main():
             print("\n".join(flights))
     if syllabus:
         print("\n| preset | seed | stage | generations | best, first generation | best, last | its id "
-              "| other seeds (median) | check |")
+              "| other seeds | check |")
         print("|" + "---|" * 9)
         print("\n".join(syllabus))
     if rivers:
