@@ -69,6 +69,8 @@ std::string view_data_json(const std::vector<LabelledReplay>& replays,
                          {"parent1", id_or_null(m.parent1)}, {"parent2", id_or_null(m.parent2)},
                          {"operator", m.op}, {"replay_index", m.replay_index >= 0 ? json(m.replay_index) : json(nullptr)},
                          {"evaluations", m.evaluations}});
+      if (m.held_out_evaluations > 0)
+        members.back()["held_out"] = {{"fitness", m.held_out}, {"evaluations", m.held_out_evaluations}};
     }
     json r{{"name", run->name}, {"seed", run->seed}, {"dialect", run->dialect},
            {"algorithm", run->algorithm}, {"evaluation_score", run->evaluation_score},

@@ -40,6 +40,11 @@ struct RunMember {
   std::string op;        ///< the operator that made it
   int replay_index = -1; ///< its replay on the page, or -1 when it was not re-simulated
   int evaluations = 1;   ///< how many evaluations `fitness` folds (RunView::evaluation_score); its replay is the first
+  /// The run's held-out measure of it (evolution.held_out_evaluations: the
+  /// best, evaluated under seeds the run never used): their fold and how
+  /// many; held_out_evaluations 0: none.
+  double held_out = 0;
+  int held_out_evaluations = 0;
 };
 
 /// A stage of a run of several (io/syllabus.h): a node of the page's
@@ -89,7 +94,7 @@ struct RunView {
 /// [{"gen", "best", "mean", "median", "best_id", "evaluations", "rejected",
 /// "failed"}...], "members": [{"id", "gen", "fitness", "parent1", "parent2"
 /// (null when none), "operator", "replay_index" (null when none),
-/// "evaluations"}...], "best_id", "replay_cap", "stages"?: [{"name", "uses",
+/// "evaluations", "held_out"?: {"fitness", "evaluations"}}...], "best_id", "replay_cap", "stages"?: [{"name", "uses",
 /// "group", "first_gen" (null when not begun), "generations", "best" (null
 /// when not begun)}...], "watch"?: {"stamp", "every"}}}; "stages" only for a
 /// run of several, "watch" only for a watched one. docs/viewer.md

@@ -182,10 +182,17 @@ Result<RunPage> gather_run_page(const RunStore& store, const std::string& source
   }
   if (!replay_of.count(run.best_id))
     return Error{"the best, individual " + std::to_string(run.best_id) + ", cannot be developed"};
+  // the best's held-out measure, where the run made one
+  auto held = store.held_out();
+  if (!held) return Error{held.error()};
   for (const auto& [id, ind] : members) {
     auto r = replay_of.find(id);
     run.members.push_back({id, ind.generation, ind.fitness, ind.parent1, ind.parent2, ind.op,
                            r == replay_of.end() ? -1 : r->second, ind.evaluations});
+    if (*held && (*held)->id == id) {
+      run.members.back().held_out = (*held)->fitness;
+      run.members.back().held_out_evaluations = static_cast<int>((*held)->by_seed.size());
+    }
   }
   return page;
 }

@@ -512,6 +512,9 @@ TEST(Check, ARunsBestHeldOutIsWhatCheckComparesOtherSeedsWith) {
   // the genome file carries it: its check compares with it too
   auto f = check_report((base / "best.json").string() + fast);
   EXPECT_EQ(f["held_out"], j["held_out"]);
+  // the run page names it beside the best's stored fitness
+  ASSERT_EQ(bestiary("show " + with.string() + " --out " + (base / "view.html").string()).code, 0);
+  EXPECT_NE(bxtest::slurp(base / "view.html").find("\"held_out\":{\"evaluations\":3,\"fitness\":"), std::string::npos);
   // resumed, a finished run with its measure has nothing left to do
   Outcome again = bestiary("resume " + with.string());
   EXPECT_EQ(again.code, 0) << again.err;

@@ -251,6 +251,12 @@ export function parseRun(run, nReplays, path = 'run') {
     if (typeof m.operator !== 'string') fail(`${at}.operator`, 'expected a string', m.operator);
     // (pages written before elites were evaluated again have none: one evaluation)
     if (m.evaluations !== undefined) int(m.evaluations, `${at}.evaluations`, 1);
+    // the run's best measured where selection never looked (evolution.held_out_evaluations)
+    if (m.held_out !== undefined) {
+      obj(m.held_out, `${at}.held_out`);
+      num(m.held_out.fitness, `${at}.held_out.fitness`);
+      int(m.held_out.evaluations, `${at}.held_out.evaluations`, 1);
+    }
     if (m.replay_index !== null && int(m.replay_index, `${at}.replay_index`, 0) >= nReplays)
       fail(`${at}.replay_index`, `no such replay (the page has ${nReplays})`, m.replay_index);
   });

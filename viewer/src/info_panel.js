@@ -65,7 +65,7 @@ export function infoRows(entry) {
 
 /**
  * What a run says about `member` ({id, gen, fitness, parent1, parent2,
- * operator, evaluations?}) as [name, text] rows; `best` is the run's overall best's id,
+ * operator, evaluations?, held_out?: {fitness, evaluations}}) as [name, text] rows; `best` is the run's overall best's id,
  * `bestOf` the generations it was the best of (numbers, in order), `score` what
  * the stored fitness takes of several evaluations ('mean' or 'least') and
  * `halfStep` and `quarterStep` whether they cycled through the step, half of it
@@ -85,6 +85,9 @@ export function memberRows(member, best, bestOf, score = 'mean', halfStep = fals
   rows.push(['stored fitness', fitness(member.fitness) +
     (n > 1 ? ` (the ${score} of ${n} evaluations under fresh seeds${finer ? `, ${finer}` : ''}; ` +
       'the replay is the first)' : '')]);
+  if (member.held_out)
+    rows.push(['held out', `${fitness(member.held_out.fitness)} (the ${score} of ${member.held_out.evaluations} ` +
+      'evaluations under seeds the run never used: what it scores where selection never looked)']);
   return rows;
 }
 

@@ -116,6 +116,8 @@ test('bad page data is refused with the place of the fault', () => {
   assert.throws(spoilt((r) => (r.members[2].parent1 = 'x')), { message: /^run\.members\[2\]\.parent1: expected an id or null/ });
   assert.throws(spoilt((r) => (r.members[0].evaluations = 0)), { message: /^run\.members\[0\]\.evaluations: expected an integer >= 1/ });
   assert.throws(spoilt((r) => (r.evaluation_score = 'median')), { message: /^run\.evaluation_score: expected "mean" or "least", got "median"$/ });
+  assert.throws(spoilt((r) => (r.members[0].held_out = { fitness: 'x', evaluations: 3 })), { message: /^run\.members\[0\]\.held_out\.fitness: expected a number/ });
+  assert.throws(spoilt((r) => (r.members[0].held_out = { fitness: 1, evaluations: 0 })), { message: /^run\.members\[0\]\.held_out\.evaluations: / });
   assert.throws(spoilt((r) => (r.evaluation_half_step = 'yes')), { message: /^run\.evaluation_half_step: expected true or false, got "yes"$/ });
   assert.throws(spoilt((r) => (r.evaluation_quarter_step = 1)), { message: /^run\.evaluation_quarter_step: expected true or false, got 1$/ });
   // every replay is exactly one member's, every generation's best a member, the best replayed

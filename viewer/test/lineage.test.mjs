@@ -55,6 +55,11 @@ test('a member: its id, birth, parents, generations as the best and stored fitne
   assert.equal(finerStepText(4, false, true), 'evaluations 2 and 4 at a quarter of the step');
   assert.equal(Object.fromEntries(memberRows(membersById(run).get(20), run.best_id, [4], 'least', true, true))['stored fitness'],
     '5 (the least of 3 evaluations under fresh seeds, evaluation 2 at half the step, 3 at a quarter of it; the replay is the first)');
+  // the run's best measured where selection never looked (evolution.held_out_evaluations)
+  assert.equal(rows(20)['held out'], undefined);
+  const held = { ...membersById(run).get(20), held_out: { fitness: 3.5, evaluations: 100 } };
+  assert.equal(Object.fromEntries(memberRows(held, run.best_id, [4]))['held out'],
+    '3.5 (the mean of 100 evaluations under seeds the run never used: what it scores where selection never looked)');
   assert.equal(rows(3).parents, 'none');
   assert.equal(lineageText(membersById(run).get(12)), 'gen 2 · #12 · crossover with #3 · 3');
 });
