@@ -439,7 +439,8 @@ Status extend_run(const std::string& dir, const std::vector<std::string>& overri
   // a held-out measure of its best, asked for after the run (evolution.held_out_evaluations):
   // changes no evaluation, so any run may take it, one of stages too
   const std::string held_out_key = "evolution.held_out_evaluations=";
-  if (std::all_of(overrides.begin(), overrides.end(), [&](const std::string& o) { return o.rfind(held_out_key, 0) == 0; })) {
+  if (!overrides.empty() &&
+      std::all_of(overrides.begin(), overrides.end(), [&](const std::string& o) { return o.rfind(held_out_key, 0) == 0; })) {
     auto syl = read_syllabus(text, run_db_path(dir) + " (the run's config)", overrides);
     if (!syl) return Error{syl.error()};
     const std::string resolved = head + " (held out by resume" + extended + ")\n" +
