@@ -15,6 +15,7 @@
 #include "cli/creature.h"
 #include "core/files.h"
 #include "eval/check.h"
+#include "eval/records_json.h"
 #include "genome/json_text.h"
 #include "run/run.h"
 #include "io/config.h"
@@ -65,7 +66,7 @@ int cmd_check(const CheckArgs& a) {
     out["fitness"] = s.fitness;
     out["scored_fitness"] = rep.scored_fitness;
     if (!rep.scored_by_seed.empty()) out["scored_by_seed"] = rep.scored_by_seed;
-    if (rep.held_out) out["held_out"] = {{"fitness", rep.held_out->fitness}, {"by_seed", rep.held_out->by_seed}};
+    if (rep.held_out) out["held_out"] = held_out_to_json(*rep.held_out);
     out["stored_fitness"] = subject->stored_fitness ? nlohmann::json(*subject->stored_fitness) : nlohmann::json(nullptr);
     out["failed"] = s.failed;
     out["failure"] = s.failure;

@@ -14,6 +14,7 @@
 #include "core/files.h"
 #include "core/hash.h"
 #include "core/text.h"
+#include "eval/records_json.h"
 #include "run/run.h"
 #include "genome/dialect.h"
 #include "genome/float_vector.h"
@@ -268,17 +269,9 @@ Result<Subject> from_genome(const std::string& path, const CreatureFlags& f) {
         c.evaluations = static_cast<int>(prov["evaluations"].get<std::int64_t>());
       }
       if (prov.contains("held_out")) {
-        const json& h = prov["held_out"];
-        HeldOut held;
-        try {
-          held.by_seed = h.at("by_seed").get<std::vector<double>>();
-          held.fitness = h.at("fitness").get<double>();
-        } catch (const json::exception&) {
-          return Error{path + ": provenance.held_out: expected {\"fitness\": a number, \"by_seed\": numbers}, got " +
-                       h.dump().substr(0, 60)};
-        }
-        if (held.by_seed.empty()) return Error{path + ": provenance.held_out.by_seed: expected at least one number"};
-        if (genome_same) c.held_out = std::move(held);
+        auto held = held_out_from_json(prov["held_out"], path + ": provenance.held_out", false);
+        if (!held) return Error{held.error()};
+        if (genome_same) c.held_out = std::move(*held);
       }
       if (c.scored_settings)
         c.settings = "as scored (" + scored_by + "): its run's config" +
@@ -410,7 +403,7 @@ json provenance_json(const Subject& c, const std::string& config_text) {
     p["fitness"] = c.individual->fitness;
     p["evaluations"] = c.individual->evaluations;
   }
-  if (c.held_out) p["held_out"] = {{"fitness", c.held_out->fitness}, {"by_seed", c.held_out->by_seed}};
+  if (c.held_out) p["held_out"] = held_out_to_json(*c.held_out);
   p["seed"] = std::to_string(c.seed);  // text: JSON numbers lose 64-bit integers in many readers
   p["genome_hash"] = fnv1a64_hex(genotype_text(*c.genotype));
   p["config_hash"] = fnv1a64_hex(config_text);

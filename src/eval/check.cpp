@@ -108,12 +108,15 @@ CheckReport check_creature(const Creature& creature, const SimConfig& cfg, std::
   // (against the held-out measure where there is one: both are fresh worlds)
   rep.held_out = held_out;
   const double reference = held_out ? held_out->fitness : rep.scored_fitness;
-  std::vector<double> seeds, seed_fitness;
   const std::size_t first_seed = rep.variants.size();
-  for (int k = 1; k <= def.other_seeds; ++k) {
-    seeds.push_back(run("seed " + std::to_string(k + 1), cfg, check_seed(seed, k), reference));
-    seed_fitness.push_back(rep.variants.back().result.fitness);
-  }
+  for (int k = 1; k <= def.other_seeds; ++k) run("seed " + std::to_string(k + 1), cfg, check_seed(seed, k), reference);
+  // the other seeds' variants' ratios or fitnesses
+  auto of_seeds = [&](auto field) {
+    std::vector<double> v;
+    for (std::size_t k = first_seed; k < first_seed + static_cast<std::size_t>(def.other_seeds); ++k)
+      v.push_back(field(rep.variants[k]));
+    return v;
+  };
   const bool by_mean = def.other_seeds_statistic == SeedStatistic::Mean;
   const char* statistic = statistic_name(def.other_seeds_statistic);
   auto combine = [&](const std::vector<double>& v) { return by_mean ? mean(v) : median(v); };
@@ -124,10 +127,11 @@ CheckReport check_creature(const Creature& creature, const SimConfig& cfg, std::
     return 2 * std::hypot(standard_error(a), standard_error(b)) / (of - idle);
   };
   double seeds_slack = 0;
-  if (!seeds.empty()) {
-    rep.other_seeds = combine(seeds);
+  if (def.other_seeds > 0) {
+    rep.other_seeds = combine(of_seeds([](const CheckVariant& v) { return v.ratio; }));
     // against the held-out evaluations, or those that scored it (one alone: no spread to know)
-    seeds_slack = slack(seed_fitness, held_out ? held_out->by_seed : rep.scored_by_seed, reference);
+    seeds_slack = slack(of_seeds([](const CheckVariant& v) { return v.result.fitness; }),
+                        held_out ? held_out->by_seed : rep.scored_by_seed, reference);
     for (std::size_t k = first_seed; k < rep.variants.size(); ++k) rep.variants[k].slack = seeds_slack;
   }
 
@@ -153,13 +157,14 @@ CheckReport check_creature(const Creature& creature, const SimConfig& cfg, std::
     rep.variants.push_back(v);
     return v.ratio;
   };
+  // a variant as the gates read it: its name without "(mean of N seeds)", its ratio and slack
   struct Judged {
     std::string name;
     double ratio, slack;
   };
   auto judged = [&](const std::string& name, const SimConfig& c) {
-    const double r = compare(name, c);
-    return Judged{name, r, rep.variants.back().slack};
+    compare(name, c);
+    return Judged{name, rep.variants.back().ratio, rep.variants.back().slack};
   };
   std::vector<Judged> converged;
   for (int div : {2, 4}) converged.push_back(judged("dt/" + std::to_string(div), divided_step_config(cfg, div)));
@@ -286,7 +291,7 @@ CheckReport check_creature(const Creature& creature, const SimConfig& cfg, std::
   }
   // (under the mean, each gate less the noise of so few evaluations: "(mean, less 2 s.e. 0.31)")
   const auto less = [](double sl) { return sl > 0 ? " less 2 s.e. " + fixed(sl) : std::string(); };
-  if (!seeds.empty() && rep.other_seeds < def.min_other_seeds - seeds_slack)
+  if (def.other_seeds > 0 && rep.other_seeds < def.min_other_seeds - seeds_slack)
     rep.failures.push_back("other seeds keep " + fixed(rep.other_seeds) + " (" + statistic + ") < " +
                            fixed(def.min_other_seeds) + less(seeds_slack));
   for (const Judged& c : converged) {

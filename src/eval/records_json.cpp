@@ -179,4 +179,22 @@ Result<EvalOutcome> outcome_from_json(const json& j) {
   }
 }
 
+json held_out_to_json(const HeldOut& h) {
+  return json{{"id", h.id}, {"by_seed", h.by_seed}, {"fitness", h.fitness}};
+}
+
+Result<HeldOut> held_out_from_json(const json& j, const std::string& who, bool with_id) {
+  HeldOut h;
+  try {
+    if (with_id || j.contains("id")) h.id = j.at("id").get<std::int64_t>();
+    h.by_seed = j.at("by_seed").get<std::vector<double>>();
+    h.fitness = j.at("fitness").get<double>();
+  } catch (const json::exception&) {
+    return Error{who + ": expected {" + (with_id ? "\"id\": an individual, " : "") +
+                 "\"by_seed\": numbers, \"fitness\": a number}, got " + j.dump().substr(0, 60)};
+  }
+  if (h.by_seed.empty()) return Error{who + ".by_seed: expected at least one number"};
+  return h;
+}
+
 }  // namespace bx

@@ -10,6 +10,7 @@
 #include <optional>
 #include <nlohmann/json.hpp>
 
+#include "eval/records_json.h"
 #include "genome/genotype.h"
 
 namespace bx {
@@ -496,21 +497,15 @@ Result<std::optional<HeldOut>> RunStore::held_out() const {
   const std::string text = meta("held_out");
   if (text.empty()) return std::optional<HeldOut>{};
   const std::string who = path_ + ": the run's held_out";
-  try {
-    const json j = json::parse(text);
-    HeldOut h;
-    h.id = j.at("id").get<std::int64_t>();
-    h.by_seed = j.at("by_seed").get<std::vector<double>>();
-    h.fitness = j.at("fitness").get<double>();
-    if (h.by_seed.empty()) return Error{who + ": no evaluations"};
-    return std::optional<HeldOut>{std::move(h)};
-  } catch (const json::exception&) {
-    return Error{who + ": expected {\"id\", \"by_seed\", \"fitness\"}, got " + text.substr(0, 60)};
-  }
+  const json j = json::parse(text, nullptr, false);
+  if (j.is_discarded()) return Error{who + ": not JSON: " + text.substr(0, 60)};
+  auto h = held_out_from_json(j, who, true);
+  if (!h) return Error{h.error()};
+  return std::optional<HeldOut>{std::move(*h)};
 }
 
 Status RunStore::set_held_out(const HeldOut& h) {
-  return set_meta("held_out", json{{"id", h.id}, {"by_seed", h.by_seed}, {"fitness", h.fitness}}.dump());
+  return set_meta("held_out", held_out_to_json(h).dump());
 }
 
 Status RunStore::write_generation(const GenerationStats& st, const std::vector<Individual>& born,
