@@ -471,15 +471,20 @@ std::vector<Individual> migrate(std::vector<Individual>& population, int islands
 }
 
 // Evaluates the population members `members` (tournament_evaluates = all),
-// each afresh under the seed of its next evaluation: `fresh` gets each one's
-// fitness in this evaluation, its own fitness folds it in, and `evaluated`
-// gets it as it then stands.
+// each afresh under the seed of its next evaluation and at the step that
+// evaluation takes (repeat_step_divisor: with elite_half_step its 2nd, 4th,
+// ... at dt/2, as the elite's and the best's repeats, so `simulate` and
+// `check` reproduce a fitness of any count): `fresh` gets each one's fitness
+// in this evaluation, its own fitness folds it in, and `evaluated` gets it as
+// it then stands.
 void Evolution::tournaments(EvolutionState& s, Evaluator& eval, std::vector<int> members, std::vector<double>& fresh,
                             long& failed, MetricTally& tally, std::vector<Individual>& evaluated) const {
+  const Repeats repeats = elite_repeats(evo_, 0);  // which evaluations step finer
   std::vector<EvalJob> jobs;
   for (int i : members) {
     const Individual& ind = s.population[i];
-    jobs.push_back({ind.genotype.get(), repeat_seed(ind.seed, ind.evaluations), 1, task_});
+    jobs.push_back({ind.genotype.get(), repeat_seed(ind.seed, ind.evaluations),
+                    repeat_step_divisor(repeats, ind.evaluations), task_});
   }
   std::vector<EvalOutcome> out = eval.evaluate(jobs);
   fresh.assign(s.population.size(), 0.0);

@@ -98,6 +98,11 @@ struct EvolutionDef {
   /// The elite's 2nd, 4th, ... evaluations step at half physics.dt
   /// (divided_step_config), so that with the least of them (task.trial_score =
   /// min) a gait that only the step makes does not keep its score (issue 11).
+  /// So do the best's (best_evaluations) and, with tournament_evaluates = all,
+  /// every creature's 2nd, 4th, ... tournament evaluation: selection then
+  /// ranks behaviour at two steps, and a score that only one step gives (a
+  /// river walker's step-made turn, docs/physics.md cause 32) is half lost.
+  /// (The held-out evaluations stay at dt: `check` varies the step itself.)
   bool elite_half_step = false;
   /// With it, the elite's evaluations cycle through physics.dt, dt/2 (when
   /// elite_half_step) and dt/4 (repeat_step_divisor): a score the step makes

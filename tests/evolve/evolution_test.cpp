@@ -571,6 +571,7 @@ class Tally : public Evaluator {
     std::vector<EvalOutcome> out = noisy_.evaluate(jobs);
     for (std::size_t i = 0; i < jobs.size(); ++i) {
       seeds.push_back({jobs[i].genotype, jobs[i].seed});
+      divisors.push_back(jobs[i].step_divisor);
       // a task's 0/1 and counted metrics, from the seed
       out[i].result.metrics = {{"odd seed", static_cast<double>(jobs[i].seed & 1)}, {"twice", 2}};
     }
@@ -579,6 +580,7 @@ class Tally : public Evaluator {
   int workers() const override { return 1; }
   NoisyTarget noisy_{0.3, 0.2};
   std::vector<std::pair<const Genotype*, std::uint64_t>> seeds;
+  std::vector<int> divisors;  // each job's step_divisor
 };
 
 TEST(TournamentEvaluatesAll, EachTournamentEvaluatesItsThreeAfreshAndAChildWaitsForItsFirst) {
@@ -639,6 +641,53 @@ TEST(TournamentEvaluatesAll, EachTournamentEvaluatesItsThreeAfreshAndAChildWaits
   // the stats are over evaluated members only, and it still learns
   EXPECT_LT(stats.front().best, 0.7);
   EXPECT_GT(stats.back().best, 0.85) << "from " << stats.front().best;
+}
+
+// evolution.elite_half_step with tournament_evaluates = all: a creature's 2nd,
+// 4th, ... tournament evaluations step at half physics.dt (as the elite's and
+// the best's repeats do), so its fitness is a mean over both steps, and
+// `simulate` reproduces it by the same cycle (repeat_step_divisor)
+TEST(TournamentEvaluatesAll, WithTheHalfStepACreaturesEvenEvaluationsStepAtHalfTheStep) {
+  auto ops = std::make_shared<FloatVectorOps>(FloatVectorDef{10, -1, 1, 0.1});
+  for (bool half_step : {false, true}) {
+    EvolutionDef e = float_evolution(Algorithm::SteadyState);
+    e.tournament_evaluates = TournamentEvaluates::All;
+    e.elite_half_step = half_step;
+    e.evaluations = 600;
+    e.batch = 5;
+    e.report_every = 150;
+    e.best_evaluations = 6;
+    Evolution evo(ops, e, 11);
+    Tally problem;
+    problem.noisy_ = NoisyTarget(0.3, 0.2, 0.25);  // a score 0.25 lower at dt/2
+    EvolutionState s;
+    std::map<std::int64_t, Individual> latest;
+    while (!evo.finished(s)) {
+      GenerationResult r = *evo.step(s, problem);
+      for (const auto& ind : r.born) latest[ind.id] = ind;
+      for (const auto& ind : r.reevaluated) latest[ind.id] = ind;
+    }
+    const Repeats steps{1, 0, half_step, false};
+    long finer = 0;
+    for (int d : problem.divisors) finer += d == 2;
+    if (!half_step) {
+      EXPECT_EQ(finer, 0);
+    } else {  // every creature's 2nd, 4th, ...: about half of all
+      EXPECT_GT(finer, static_cast<long>(problem.divisors.size()) / 4);
+      EXPECT_LT(finer, static_cast<long>(problem.divisors.size()) * 3 / 4);
+    }
+    long two_or_more = 0;
+    for (const auto& [id, ind] : latest) {
+      two_or_more += ind.evaluations >= 2;
+      double mean = 0;
+      for (int k = 0; k < ind.evaluations; ++k)
+        mean = fold_score(TrialScore::Mean, mean, k,
+                          problem.noisy_.exact(*ind.genotype) + (problem.noisy_.noise(repeat_seed(ind.seed, k)) -
+                                                                 problem.noisy_.step_loss(repeat_step_divisor(steps, k))));
+      EXPECT_EQ(ind.fitness, mean) << id << (half_step ? " with the half step" : "");
+    }
+    EXPECT_GT(two_or_more, 50);
+  }
 }
 
 TEST(TournamentEvaluatesAll, TheThreeCompeteOnTheirFreshEvaluationsNotTheirMeans) {
