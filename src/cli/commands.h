@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 
 #include "core/result.h"
 
@@ -40,6 +41,11 @@ void set_program(const char* argv0);
 /// A validator for a flag that takes a whole number in [lo, hi]; its error
 /// says so in those words.
 CLI::Validator whole_number(long long lo, unsigned long long hi);
+
+/// The name and text of a config: a file at `arg`, or else the preset of
+/// that name (`bestiary presets`); an error names both and suggests a preset.
+/// `run` takes it, and every `--config`.
+Result<std::pair<std::string, std::string>> config_source(const std::string& arg);
 
 /// Makes the folder of an output file (so a bad path fails before any work);
 /// errors name `flag`.

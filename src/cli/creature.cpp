@@ -298,9 +298,9 @@ Result<Subject> from_genome(const std::string& path, const CreatureFlags& f) {
     return Error{path + ": a " + std::string(c.genotype->kind()) +
                  " genotype without provenance: give --config, a config whose genotype.kind develops it"};
   if (!f.config.empty()) {
-    auto t = read_file(f.config);
-    if (!t) return Error{t.error()};
-    cfg_text = *t;
+    auto t = config_source(f.config);
+    if (!t) return Error{"--config: " + t.error()};
+    cfg_text = t->second;
     source = f.config;
   }
   auto cfg = genotype_config(*c.genotype, path, cfg_text, source, f.set);
@@ -370,7 +370,7 @@ void add_creature_options(CLI::App* cmd, std::string& target, CreatureFlags& f) 
       ->required();
   cmd->add_option("--id", f.id, "A run's individual (as RUN_DIR:ID)")->check(whole_number(0, INT64_MAX));
   cmd->add_option("--gen", f.gen, "The best of a run's generation (as RUN_DIR:gen=G)")->check(whole_number(0, INT32_MAX));
-  cmd->add_option("--config", f.config, "Config for a genome file, overlaid on its dialect's defaults");
+  cmd->add_option("--config", f.config, "Config (a file or a preset name) for a genome file, overlaid on its dialect's defaults");
   cmd->add_option("--seed", f.seed, "Evaluation seed for a genome file (default 1, or its provenance's)")
       ->check(whole_number(0, UINT64_MAX));
   cmd->add_option("--set", f.set, "Override one config key: section.key=value (repeatable)");

@@ -52,19 +52,6 @@ void catch_interrupts(const std::string& dir) {
 
 int default_workers() { return std::max(1u, std::thread::hardware_concurrency()); }
 
-// the text of a config file, or of a preset by that name
-Result<std::pair<std::string, std::string>> config_source(const std::string& arg) {
-  if (fs::exists(arg)) {
-    auto text = read_file(arg);
-    if (!text) return Error{text.error()};
-    return std::pair{fs::path(arg).stem().string(), *text};
-  }
-  if (const Preset* p = find_preset(arg)) return std::pair{p->name, p->text};
-  std::vector<std::string> names;
-  for (const auto& p : presets()) names.push_back(p.name);
-  return Error{arg + ": no such config file, and no preset of that name" + did_you_mean(arg, names) + " (`" +
-               program() + " presets` lists them)"};
-}
 
 std::string timestamp() {
   std::time_t t = std::time(nullptr);
@@ -517,6 +504,19 @@ void add_evolve_commands(CLI::App& app) {
 
   auto* p = app.add_subcommand("presets", "List the presets");
   p->callback([] { std::exit(cmd_presets()); });
+}
+
+Result<std::pair<std::string, std::string>> config_source(const std::string& arg) {
+  if (fs::exists(arg)) {
+    auto text = read_file(arg);
+    if (!text) return Error{text.error()};
+    return std::pair{fs::path(arg).stem().string(), *text};
+  }
+  if (const Preset* p = find_preset(arg)) return std::pair{p->name, p->text};
+  std::vector<std::string> names;
+  for (const auto& p : presets()) names.push_back(p.name);
+  return Error{arg + ": no such config file, and no preset of that name" + did_you_mean(arg, names) + " (`" +
+               program() + " presets` lists them)"};
 }
 
 }  // namespace bx

@@ -19,6 +19,7 @@
 #include "genome/json_text.h"
 #include "io/config.h"
 #include "io/replay_file.h"
+#include "io/syllabus.h"
 #include "task/throwing.h"
 
 namespace bx {
@@ -257,13 +258,18 @@ int cmd_config(const std::string& dialect, bool dialect_given, const std::string
   }
   // a config file's own dialect and creature kind give the defaults, as a run
   // reads it, unless a dialect is named here
-  auto text = read_file(config_file);
-  if (!text) return fail(text.error());
+  auto text = config_source(config_file);
+  if (!text) return fail("--config: " + text.error());
   std::vector<std::string> sets;
   if (dialect_given) sets.push_back("genome.dialect=\"" + dialect + "\"");
-  auto cfg = read_run_config(*text, config_file, sets);
-  if (!cfg) return fail(cfg.error());
-  std::printf("%s", config_to_toml(cfg->sim).c_str());
+  // a config of stages: each stage's keys as a run stores them (config.toml)
+  auto syl = read_syllabus(text->second, config_file, sets);
+  if (!syl) return fail(syl.error());
+  if (syl->staged()) {
+    std::printf("%s", syllabus_to_toml(*syl).c_str());
+    return 0;
+  }
+  std::printf("%s", config_to_toml(syl->stages.front().cfg.sim).c_str());
   return 0;
 }
 
@@ -284,7 +290,7 @@ void add_simulate_commands(CLI::App& app) {
   auto* c = app.add_subcommand("config", "Print the effective config (TOML) of a dialect");
   static CLI::Option* dialect_opt =
       c->add_option("dialect", dialect, "sims1994, miconi2006, chaumont2007 or lessin2015 (with --config: that file's own)");
-  c->add_option("--config", cfg_file, "TOML config overlaid on its dialect's (and creature kind's) defaults");
+  c->add_option("--config", cfg_file, "TOML config (a file or a preset name) overlaid on its dialect's (and creature kind's) defaults; a config of stages prints every stage as a run stores it");
   c->add_flag("--reference", reference, "Print every key of every dialect as a Markdown table");
   c->callback([] { std::exit(cmd_config(dialect, dialect_opt->count() > 0, cfg_file, reference)); });
 }

@@ -257,11 +257,27 @@ TEST_F(Kinds, AFloatGenotypeFileWithoutProvenanceNeedsAConfig) {
   // a config of stages (a staged preset's file, rivercrossing-small's): its
   // last stage's, whose best such a run reports
   const fs::path staged = dir / "staged.toml";
-  std::ofstream(staged) << "[genotype]\nkind = \"river\"\n[river]\nseconds = 2\n[[stage]]\nname = \"short\"\n"
-                           "[stage.river]\nseconds = 1\n[[stage]]\nname = \"long\"\nstart = \"population\"\n";
+  std::ofstream(staged) << "[genotype]\nkind = \"river\"\n[river]\nseconds = 2\n[[stage]]\nname = 'short'\n"
+                           "[stage.river]\nseconds = 1\n[[stage]]\nname = 'long'\nstart = \"population\"\n";
   Outcome st = bestiary("simulate " + plain.string() + " --config " + staged.string());
   ASSERT_EQ(st.code, 0) << st.err;
   EXPECT_NE(st.out.find("simulated 2.00 s"), std::string::npos) << st.out;
+  // `config` of it prints each stage as a run stores it
+  Outcome sc = bestiary("config --config " + staged.string());
+  ASSERT_EQ(sc.code, 0) << sc.err;
+  EXPECT_NE(sc.out.find("[[stage]]\nname = 'short'"), std::string::npos) << sc.out;
+  EXPECT_NE(sc.out.find("[[stage]]\nname = 'long'"), std::string::npos) << sc.out;
+  // a preset's name is a config wherever a config is taken, as `run` takes it
+  Outcome pc = bestiary("config --config rivercrossing-small");
+  ASSERT_EQ(pc.code, 0) << pc.err;
+  EXPECT_NE(pc.out.find("name = 'levels'"), std::string::npos) << pc.out;
+  Outcome ps = bestiary("simulate " + plain.string() + " --config rivercrossing-small --set river.seconds=1");
+  ASSERT_EQ(ps.code, 0) << ps.err;
+  EXPECT_NE(ps.out.find("simulated 1.00 s"), std::string::npos) << ps.out;
+  Outcome none = bestiary("config --config rivercrossing-smal");
+  EXPECT_EQ(none.code, 2);
+  EXPECT_EQ(none.err, "bestiary: --config: rivercrossing-smal: no such config file, and no preset of that name "
+                      "(did you mean \"rivercrossing-small\"?) (`" BESTIARY_BINARY " presets` lists them)\n");
   // a config of another creature kind, or genes its kind does not take: one line each
   const fs::path graph = dir / "graph.toml";
   std::ofstream(graph) << "[task]\nseconds = 2\n";
