@@ -212,7 +212,9 @@ TEST(Check, WhereDoingNothingScoresTheRatiosAreOfTheGainOverIt) {
   // each variant says the gate it is judged by
   EXPECT_EQ(j["variants"][0]["gate"], "none: the idle score the ratios subtract");
   for (const auto& v : j["variants"])
-    if (v["name"] == "dt/2") EXPECT_EQ(v["gate"], "in [0.75, 1.25]");
+    if (v["name"] == "dt/2") {
+      EXPECT_EQ(v["gate"], "in [0.75, 1.25]");
+    }
   ASSERT_EQ(j["failures"].size(), 1u) << j.dump();
   EXPECT_NE(j["failures"][0].get<std::string>().find("is no more than doing nothing's 0.5 (every joint held)"),
             std::string::npos)
@@ -465,7 +467,9 @@ TEST(Check, TheOtherSeedsCombineByTheirMedianOrTheirMean) {
     }
   for (const auto& v : by["median"]["variants"]) {
     EXPECT_EQ(v["slack"].get<double>(), 0) << v["name"];
-    if (v["name"].get<std::string>().rfind("seed ", 0) == 0) EXPECT_EQ(v["gate"], "their median >= 0.75");
+    if (v["name"].get<std::string>().rfind("seed ", 0) == 0) {
+      EXPECT_EQ(v["gate"], "their median >= 0.75");
+    }
   }
   double sum = 0;
   for (double x : seeds) sum += x;
@@ -504,8 +508,9 @@ TEST(Check, ARunsBestHeldOutIsWhatCheckComparesOtherSeedsWith) {
   EXPECT_DOUBLE_EQ(held, (by_seed[0] + by_seed[1] + by_seed[2]) / 3);
   EXPECT_NE(held, j["stored_fitness"].get<double>());  // other worlds than selection's
   for (const auto& v : j["variants"])
-    if (v["name"].get<std::string>().rfind("seed ", 0) == 0 && held > 0)
+    if (v["name"].get<std::string>().rfind("seed ", 0) == 0 && held > 0) {
       EXPECT_DOUBLE_EQ(v["ratio"].get<double>(), v["fitness"].get<double>() / held) << v["name"];
+    }
   Outcome best = bestiary("best " + with.string() + " --out " + (base / "best.json").string());
   ASSERT_EQ(best.code, 0) << best.err;
   EXPECT_NE(best.err.find("held out: "), std::string::npos) << best.err;

@@ -188,7 +188,9 @@ TEST(ReplayFile, ACatapultsSceneNamesItsProjectileAndMarksItsRelease) {
       from = true;
       EXPECT_NEAR(m["t"].get<double>(), *w.res.marker("release"), 1e-6);
     }
-    if (m["name"] == "scored to") EXPECT_GT(m["t"].get<double>(), *w.res.marker("release"));
+    if (m["name"] == "scored to") {
+      EXPECT_GT(m["t"].get<double>(), *w.res.marker("release"));
+    }
   }
   EXPECT_TRUE(release) << rec;
   EXPECT_TRUE(from) << rec;
