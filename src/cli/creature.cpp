@@ -299,7 +299,7 @@ Result<Subject> from_genome(const std::string& path, const CreatureFlags& f) {
                  " genotype without provenance: give --config, a config whose genotype.kind develops it"};
   if (!f.config.empty()) {
     auto t = config_source(f.config);
-    if (!t) return Error{"--config: " + t.error()};
+    if (!t) return Error{t.error()};
     cfg_text = t->second;
     source = f.config;
   }

@@ -507,7 +507,8 @@ void add_evolve_commands(CLI::App& app) {
 }
 
 Result<std::pair<std::string, std::string>> config_source(const std::string& arg) {
-  if (fs::exists(arg)) {
+  // a path (a folder in it, or a .toml name) is a file, and its error says why it cannot be read
+  if (fs::exists(arg) || arg.find('/') != std::string::npos || fs::path(arg).extension() == ".toml") {
     auto text = read_file(arg);
     if (!text) return Error{text.error()};
     return std::pair{fs::path(arg).stem().string(), *text};

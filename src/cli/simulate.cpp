@@ -259,7 +259,7 @@ int cmd_config(const std::string& dialect, bool dialect_given, const std::string
   // a config file's own dialect and creature kind give the defaults, as a run
   // reads it, unless a dialect is named here
   auto text = config_source(config_file);
-  if (!text) return fail("--config: " + text.error());
+  if (!text) return fail(text.error());
   std::vector<std::string> sets;
   if (dialect_given) sets.push_back("genome.dialect=\"" + dialect + "\"");
   // a config of stages: each stage's keys as a run stores them (config.toml)

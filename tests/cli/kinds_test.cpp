@@ -276,7 +276,7 @@ TEST_F(Kinds, AFloatGenotypeFileWithoutProvenanceNeedsAConfig) {
   EXPECT_NE(ps.out.find("simulated 1.00 s"), std::string::npos) << ps.out;
   Outcome none = bestiary("config --config rivercrossing-smal");
   EXPECT_EQ(none.code, 2);
-  EXPECT_EQ(none.err, "bestiary: --config: rivercrossing-smal: no such config file, and no preset of that name "
+  EXPECT_EQ(none.err, "bestiary: rivercrossing-smal: no such config file, and no preset of that name "
                       "(did you mean \"rivercrossing-small\"?) (`" BESTIARY_BINARY " presets` lists them)\n");
   // a config of another creature kind, or genes its kind does not take: one line each
   const fs::path graph = dir / "graph.toml";
