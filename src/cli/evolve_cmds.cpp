@@ -52,7 +52,6 @@ void catch_interrupts(const std::string& dir) {
 
 int default_workers() { return std::max(1u, std::thread::hardware_concurrency()); }
 
-
 std::string timestamp() {
   std::time_t t = std::time(nullptr);
   char buf[32];

@@ -583,13 +583,20 @@ class Tally : public Evaluator {
   std::vector<int> divisors;  // each job's step_divisor
 };
 
-TEST(TournamentEvaluatesAll, EachTournamentEvaluatesItsThreeAfreshAndAChildWaitsForItsFirst) {
-  auto ops = std::make_shared<FloatVectorOps>(FloatVectorDef{10, -1, 1, 0.1});
+// the steady state with tournament_evaluates = all, `tournaments` of them in
+// batches of 5, a report every 150
+EvolutionDef all_tournaments(long tournaments) {
   EvolutionDef e = float_evolution(Algorithm::SteadyState);
   e.tournament_evaluates = TournamentEvaluates::All;
-  e.evaluations = 1500;
+  e.evaluations = tournaments;
   e.batch = 5;
   e.report_every = 150;
+  return e;
+}
+
+TEST(TournamentEvaluatesAll, EachTournamentEvaluatesItsThreeAfreshAndAChildWaitsForItsFirst) {
+  auto ops = std::make_shared<FloatVectorOps>(FloatVectorDef{10, -1, 1, 0.1});
+  const EvolutionDef e = all_tournaments(1500);
   Evolution evo(ops, e, 11);
   Tally problem;
   EvolutionState s;
@@ -650,12 +657,8 @@ TEST(TournamentEvaluatesAll, EachTournamentEvaluatesItsThreeAfreshAndAChildWaits
 TEST(TournamentEvaluatesAll, WithTheHalfStepACreaturesEvenEvaluationsStepAtHalfTheStep) {
   auto ops = std::make_shared<FloatVectorOps>(FloatVectorDef{10, -1, 1, 0.1});
   for (bool half_step : {false, true}) {
-    EvolutionDef e = float_evolution(Algorithm::SteadyState);
-    e.tournament_evaluates = TournamentEvaluates::All;
+    EvolutionDef e = all_tournaments(600);
     e.elite_half_step = half_step;
-    e.evaluations = 600;
-    e.batch = 5;
-    e.report_every = 150;
     e.best_evaluations = 6;
     Evolution evo(ops, e, 11);
     Tally problem;
