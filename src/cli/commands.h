@@ -21,8 +21,14 @@ void add_simulate_commands(CLI::App& app);
 /// `run`, `resume`, `verify`, `best` and `presets` (src/cli/evolve_cmds.cpp).
 void add_evolve_commands(CLI::App& app);
 
-/// `show` and `render` (src/cli/watch.cpp).
-void add_watch_commands(CLI::App& app);
+/// `show` (src/cli/show.cpp).
+void add_show_command(CLI::App& app);
+
+/// `render` (src/cli/render.cpp).
+void add_render_command(CLI::App& app);
+
+/// `plot` (src/cli/plot.cpp).
+void add_plot_command(CLI::App& app);
 
 /// `check` (src/cli/check.cpp).
 void add_check_command(CLI::App& app);

@@ -74,7 +74,9 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string(bx::bestiary_version()) + " (" + bx::bestiary_git() + ")");
   bx::add_simulate_commands(app);
   bx::add_evolve_commands(app);
-  bx::add_watch_commands(app);
+  bx::add_show_command(app);
+  bx::add_render_command(app);
+  bx::add_plot_command(app);
   bx::add_check_command(app);
   bx::add_crosscheck_command(app);
   // a command that is not one: name it, and the nearest, before CLI11 does in its words

@@ -12,7 +12,6 @@
 
 namespace bx {
 
-/// A number as printf's %g prints it, for messages.
 /// The shortest text that reads back as the same double (std::to_chars).
 inline std::string shortest_number(double v) {
   char buf[32];
@@ -20,10 +19,19 @@ inline std::string shortest_number(double v) {
   return std::string(buf, r.ptr);
 }
 
+/// A number as printf's %g prints it, for messages.
 inline std::string g_number(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%g", v);
   return buf;
+}
+
+/// `s` with the ASCII letters A-Z lowered (file extensions, keywords); other
+/// bytes, UTF-8 included, as they are.
+inline std::string ascii_lower(std::string s) {
+  for (char& c : s)
+    if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+  return s;
 }
 
 /// Levenshtein distance (insertions, deletions, substitutions).
