@@ -27,6 +27,11 @@ std::optional<std::string> find_program(const std::string& name) {
   return std::nullopt;
 }
 
+std::optional<std::string> find_chromium() {
+  auto chromium = find_program("/usr/bin/chromium");
+  return chromium ? chromium : find_program("chromium");
+}
+
 Ended run_program(const std::vector<std::string>& argv, const std::function<void(const std::string&)>& on_line) {
   std::vector<char*> args;
   for (const auto& s : argv) args.push_back(const_cast<char*>(s.c_str()));

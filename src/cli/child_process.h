@@ -13,6 +13,10 @@ namespace bx {
 /// An executable file named `name` on PATH (or `name` itself if it has a '/').
 std::optional<std::string> find_program(const std::string& name);
 
+/// Debian's Chromium: /usr/bin/chromium, else `chromium` on PATH (render and
+/// plot's PNG run it headless).
+std::optional<std::string> find_chromium();
+
 /// How a child program ended: its exit code (-1 if it could not start or died
 /// of a signal) and the last non-empty line it wrote on stderr, its own
 /// explanation of a failure.

@@ -38,6 +38,7 @@ struct PlotArgs {
   std::string group_by;                ///< "preset" or a config key: runs of one value are one condition
 };
 
+// The value of `key` ("section.key") in a run's resolved config text (every
 // key, as config_to_toml writes it: "[section]" lines, then "key = value").
 Result<std::string> config_value(const std::string& text, const std::string& key) {
   const std::size_t dot = key.find('.');
@@ -54,8 +55,6 @@ Result<std::string> config_value(const std::string& text, const std::string& key
   }
   return Error{"--group-by: no config key \"" + key + "\" (see `bestiary config --reference`)"};
 }
-
-int write_plot(const PlotArgs& a, const std::string& ext, const std::string& svg, const std::string& what);
 
 // Every recorded metric of `runs` whose name contains one of `wants`, in the
 // task's order; an error names what they have when none does.
@@ -141,6 +140,35 @@ int cmd_plot_runs(const PlotArgs& a, std::string& svg, std::string& what) {
   return 0;
 }
 
+// the chart to --out: SVG as it is, PNG through headless Chromium
+int write_plot(const PlotArgs& a, const std::string& ext, const std::string& svg, const std::string& what) {
+  if (Status s = make_parent_dir("--out", a.out); !s) return fail(s.error());
+  if (ext == ".svg") {
+    if (Status s = write_file_atomic(a.out, svg); !s) return fail(s.error());
+  } else {
+    auto chromium = find_chromium();
+    if (!chromium) return fail("plot: chromium not found for PNG output (Debian package chromium; or use .svg)");
+    fs::path tmp = fs::temp_directory_path() / ("bestiary-plot-" + std::to_string(::getpid()));
+    fs::create_directories(tmp);
+    if (Status s = write_file_atomic((tmp / "plot.svg").string(), svg); !s) return fail(s.error());
+    std::string png = a.out + ".tmp.png";
+    Ended end = run_program({*chromium, "--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
+                     "--disable-background-networking", "--disable-component-update", "--disable-sync",
+                     "--hide-scrollbars", "--user-data-dir=" + (tmp / "profile").string(),
+                     "--window-size=" + std::to_string(a.width) + "," + std::to_string(a.height),
+                     "--screenshot=" + png, "file://" + (tmp / "plot.svg").string()},
+                    [](const std::string&) {});
+    fs::remove_all(tmp);
+    if (end.code != 0 || !fs::exists(png)) {
+      fs::remove(png);
+      return fail("plot: chromium failed to render the PNG: " + end.last_err);
+    }
+    fs::rename(png, a.out);
+  }
+  std::printf("%s -> %s\n", what.c_str(), a.out.c_str());
+  return 0;
+}
+
 int cmd_plot(const PlotArgs& a) {
   const std::string& dir = a.run_dir;
   std::string ext = ascii_lower(fs::path(a.out).extension().string());
@@ -178,35 +206,6 @@ int cmd_plot(const PlotArgs& a) {
   return write_plot(a, ext, svg, dir + ": " + std::to_string(gens.size()) + " generations, best " + best);
 }
 
-// the chart to --out: SVG as it is, PNG through headless Chromium
-int write_plot(const PlotArgs& a, const std::string& ext, const std::string& svg, const std::string& what) {
-  if (Status s = make_parent_dir("--out", a.out); !s) return fail(s.error());
-  if (ext == ".svg") {
-    if (Status s = write_file_atomic(a.out, svg); !s) return fail(s.error());
-  } else {
-    auto chromium = find_program("/usr/bin/chromium");
-    if (!chromium) chromium = find_program("chromium");
-    if (!chromium) return fail("plot: chromium not found for PNG output (Debian package chromium; or use .svg)");
-    fs::path tmp = fs::temp_directory_path() / ("bestiary-plot-" + std::to_string(::getpid()));
-    fs::create_directories(tmp);
-    if (Status s = write_file_atomic((tmp / "plot.svg").string(), svg); !s) return fail(s.error());
-    std::string png = a.out + ".tmp.png";
-    Ended end = run_program({*chromium, "--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
-                     "--disable-background-networking", "--disable-component-update", "--disable-sync",
-                     "--hide-scrollbars", "--user-data-dir=" + (tmp / "profile").string(),
-                     "--window-size=" + std::to_string(a.width) + "," + std::to_string(a.height),
-                     "--screenshot=" + png, "file://" + (tmp / "plot.svg").string()},
-                    [](const std::string&) {});
-    fs::remove_all(tmp);
-    if (end.code != 0 || !fs::exists(png)) {
-      fs::remove(png);
-      return fail("plot: chromium failed to render the PNG: " + end.last_err);
-    }
-    fs::rename(png, a.out);
-  }
-  std::printf("%s -> %s\n", what.c_str(), a.out.c_str());
-  return 0;
-}
 
 }  // namespace
 

@@ -60,8 +60,7 @@ Result<Tools> find_tools() {
     chromium = find_program(env_chromium);
     if (!chromium) return Error{std::string("BESTIARY_CHROMIUM: no such program: ") + env_chromium};
   } else {
-    chromium = find_program("/usr/bin/chromium");
-    if (!chromium) chromium = find_program("chromium");
+    chromium = find_chromium();
     if (!chromium)
       return Error{"render: chromium not found (Debian package chromium, or set BESTIARY_CHROMIUM)"};
   }
