@@ -84,6 +84,7 @@ int cmd_check(const CheckArgs& a) {
     out["effector_hz"] = d.effector_hz;
     out["brain_hz"] = sim.brain_hz;
     out["buzzer"] = rep.buzzer;
+    out["open_loop"] = rep.open_loop;
     if (rep.sustained >= 0)
       out["sustained"] = {{"ratio", rep.sustained}, {"first_third", rep.sustained_first}, {"last_third", rep.sustained_last}};
     out["max_joint_gap"] = d.max_joint_gap;

@@ -133,6 +133,17 @@ CheckReport check_creature(const Creature& creature, const SimConfig& cfg, std::
     seeds_slack = slack(of_seeds([](const CheckVariant& v) { return v.result.fitness; }),
                         held_out ? held_out->by_seed : rep.scored_by_seed, reference);
     for (std::size_t k = first_seed; k < rep.variants.size(); ++k) rep.variants[k].slack = seeds_slack;
+    // the same signals under every seed: an open loop
+    const EvalDiagnostics& own = rep.scored.diagnostics;
+    rep.open_loop = !own.effector_mean.empty();
+    for (std::size_t k = first_seed; k < rep.variants.size(); ++k) {
+      const EvalDiagnostics& d = rep.variants[k].result.diagnostics;
+      rep.open_loop = rep.open_loop && d.effector_mean == own.effector_mean && d.effector_sd == own.effector_sd;
+    }
+    if (rep.open_loop)
+      rep.notes.push_back("open loop: under all " + std::to_string(def.other_seeds) +
+                          " other seeds its effector signals are the scored run's, bit for bit: nothing the seeds "
+                          "change (where they draw its world, what it meets there) reaches its controller");
   }
 
   // the same creature under another config (a smaller step, a better solved

@@ -136,6 +136,13 @@ struct CheckReport {
   double idle = 0;
   /// The creature earns its fitness by buzzing: the lag or the half rate took it.
   bool buzzer = false;
+  /// Every other seed's evaluation drove its effectors with the same signals
+  /// as the scored one, bit for bit (each effector's mean and spread over the
+  /// run): nothing the seeds change reaches its controller. Where a seed draws
+  /// the world the creature meets (a river layout, a light's heading), it
+  /// does not sense it: an open loop, whose path is its gait's alone. Not a
+  /// gate (a walker on flat ground has nothing to sense), a note.
+  bool open_loop = false;
   std::vector<std::string> failures;  ///< each gate that failed, with its figures; empty: passed
   /// What the figures say of the motion beside the gates, e.g. that it is
   /// mostly passive (a fall: held joints keep more than half of it).

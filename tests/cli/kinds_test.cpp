@@ -189,6 +189,32 @@ TEST_F(Kinds, CheckReEvaluatesTheCreatureAsScored) {
   }
 }
 
+// A controller whose decision network is silent sets every iota to 0: its
+// landscape is flat whatever the layout, so its signals are the same under
+// every seed, and check names it open loop; one whose DN raises the
+// resource's iota reads each layout's landscape, and is not.
+TEST_F(Kinds, CheckNamesAControllerThatSensesNothingOfItsLayoutOpenLoop) {
+  const fs::path file = dir / "open_loop.json";
+  best_file(file);
+  json genome = json::parse(slurp(file));
+  constexpr int kDecisionGenes = 4 * 6 + 5 * 4;  // the DN's weights lead the genome
+  for (double dn : {0.0, 1.0}) {
+    for (int g = 0; g < kDecisionGenes; ++g) genome["genes"][g] = dn;
+    std::ofstream(file) << genome.dump();
+    Outcome c = bestiary("check " + file.string() + " --set check.other_seeds=3 --json");
+    ASSERT_TRUE(c.code == 0 || c.code == 1) << c.out << c.err;
+    const json j = json::parse(c.out);
+    const std::string notes = j["notes"].dump();
+    if (dn == 0) {
+      EXPECT_TRUE(j["open_loop"].get<bool>()) << c.out;
+      EXPECT_NE(notes.find("open loop: under all 3 other seeds"), std::string::npos) << notes;
+    } else {
+      EXPECT_FALSE(j["open_loop"].get<bool>()) << c.out;
+      EXPECT_EQ(notes.find("open loop"), std::string::npos) << notes;
+    }
+  }
+}
+
 TEST_F(Kinds, ShowWritesTheRunsPageAndPlotItsCurves) {
   const fs::path page = dir / "view.html";
   Outcome s = bestiary("show " + run().string() + " --out " + page.string());
