@@ -27,9 +27,16 @@ std::optional<std::string> find_program(const std::string& name) {
   return std::nullopt;
 }
 
-std::optional<std::string> find_chromium() {
+Result<std::string> find_chromium(const std::string& who, const std::string& install) {
+  const char* env = std::getenv("BESTIARY_CHROMIUM");
+  if (env && *env) {
+    if (auto chromium = find_program(env)) return *chromium;
+    return Error{std::string("BESTIARY_CHROMIUM: no such program: ") + env};
+  }
   auto chromium = find_program("/usr/bin/chromium");
-  return chromium ? chromium : find_program("chromium");
+  if (!chromium) chromium = find_program("chromium");
+  if (!chromium) return Error{who + ": chromium not found (" + install + ")"};
+  return *chromium;
 }
 
 Ended run_program(const std::vector<std::string>& argv, const std::function<void(const std::string&)>& on_line) {

@@ -8,14 +8,18 @@
 #include <string>
 #include <vector>
 
+#include "core/result.h"
+
 namespace bx {
 
 /// An executable file named `name` on PATH (or `name` itself if it has a '/').
 std::optional<std::string> find_program(const std::string& name);
 
-/// Debian's Chromium: /usr/bin/chromium, else `chromium` on PATH (render and
-/// plot's PNG run it headless).
-std::optional<std::string> find_chromium();
+/// The Chromium that render and plot's PNG run headless: $BESTIARY_CHROMIUM
+/// when set, else Debian's (/usr/bin/chromium, else `chromium` on PATH); an
+/// error, `who` first, naming a BESTIARY_CHROMIUM that is no program or
+/// saying how to get one (`install` a hint to add).
+Result<std::string> find_chromium(const std::string& who, const std::string& install);
 
 /// How a child program ended: its exit code (-1 if it could not start or died
 /// of a signal) and the last non-empty line it wrote on stderr, its own

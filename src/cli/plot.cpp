@@ -146,8 +146,8 @@ int write_plot(const PlotArgs& a, const std::string& ext, const std::string& svg
   if (ext == ".svg") {
     if (Status s = write_file_atomic(a.out, svg); !s) return fail(s.error());
   } else {
-    auto chromium = find_chromium();
-    if (!chromium) return fail("plot: chromium not found for PNG output (Debian package chromium; or use .svg)");
+    auto chromium = find_chromium("plot", "for PNG output: Debian package chromium, or set BESTIARY_CHROMIUM; or use .svg");
+    if (!chromium) return fail(chromium.error());
     fs::path tmp = fs::temp_directory_path() / ("bestiary-plot-" + std::to_string(::getpid()));
     fs::create_directories(tmp);
     if (Status s = write_file_atomic((tmp / "plot.svg").string(), svg); !s) return fail(s.error());

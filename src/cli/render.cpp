@@ -43,7 +43,7 @@ struct Tools {
 
 // The viewer folder holds render.mjs and node_modules (npm ci); the build
 // records the source tree's (BESTIARY_VIEWER_DIR), the environment variable
-// of the same name overrides it. Chromium: $BESTIARY_CHROMIUM, else Debian's.
+// of the same name overrides it. Chromium: find_chromium's.
 Result<Tools> find_tools() {
   Tools t;
   const char* env_dir = std::getenv("BESTIARY_VIEWER_DIR");
@@ -54,16 +54,8 @@ Result<Tools> find_tools() {
                  " (run ./scripts/setup, or set BESTIARY_VIEWER_DIR to a viewer/ folder after `npm ci`)"};
   auto node = find_program("node");
   if (!node) return Error{"render: node is not on PATH (Debian package nodejs; ./scripts/setup installs it)"};
-  const char* env_chromium = std::getenv("BESTIARY_CHROMIUM");
-  std::optional<std::string> chromium;
-  if (env_chromium && *env_chromium) {
-    chromium = find_program(env_chromium);
-    if (!chromium) return Error{std::string("BESTIARY_CHROMIUM: no such program: ") + env_chromium};
-  } else {
-    chromium = find_chromium();
-    if (!chromium)
-      return Error{"render: chromium not found (Debian package chromium, or set BESTIARY_CHROMIUM)"};
-  }
+  auto chromium = find_chromium("render", "Debian package chromium, or set BESTIARY_CHROMIUM");
+  if (!chromium) return Error{chromium.error()};
   auto ffmpeg = find_program("ffmpeg");
   if (!ffmpeg) return Error{"render: ffmpeg is not on PATH (Debian package ffmpeg)"};
   t.node = *node;

@@ -122,6 +122,13 @@ TEST_F(RunCli, KilledMidRunAndResumedEndsExactlyAsUninterrupted) {
   Outcome bad = bestiary("plot " + killed.string() + " --out " + (dir / "fit.jpg").string());
   EXPECT_EQ(bad.code, 2);
   EXPECT_EQ(bad.err, "bestiary: --out: expected a .svg or .png file, got \"" + (dir / "fit.jpg").string() + "\"\n");
+  // the browser BESTIARY_CHROMIUM names, as for render: one that is not there is named, and no file
+  const fs::path none = dir / "no-chromium", unmade = dir / "unmade.png";
+  Outcome missing = bxtest::run_command("BESTIARY_CHROMIUM=" + none.string() + " " + BESTIARY_BINARY + " plot " +
+                                        killed.string() + " --out " + unmade.string());
+  EXPECT_EQ(missing.code, 2);
+  EXPECT_EQ(missing.err, "bestiary: BESTIARY_CHROMIUM: no such program: " + none.string() + "\n");
+  EXPECT_FALSE(fs::exists(unmade));
   double stored = std::stod(fit.substr(0, fit.find('|')));  // sqlite prints 15 digits
   EXPECT_NEAR(std::stod(s.out.substr(j + 10)), stored, 1e-13 * std::abs(stored));
 }
