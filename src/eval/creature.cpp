@@ -48,6 +48,7 @@ std::vector<SimField> river_fields() {
       {"river", "sweeps", SimField::Int, 0, 100000, {}, [](SimConfig& c) -> void* { return &c.river.brain.landscape.sweeps; }, "river crossing: shunting model iterations from zero (eq. 3)"},
       {"river", "max_activity", SimField::Real, 1e-6, 1e6, {}, [](SimConfig& c) -> void* { return &c.river.brain.landscape.max_activity; }, "river crossing: maxI, the shunting model's cap"},
       {"river", "iota_scale", SimField::Real, 1e-6, 1e6, {}, [](SimConfig& c) -> void* { return &c.river.brain.landscape.iota_scale; }, "river crossing: a cell's input is its kind's iota (-1, 0, 1) times this"},
+      {"river", "resource_iota", SimField::Choice, 0, 0, {"decided", "shown"}, [](SimConfig& c) -> void* { return &c.river.brain.resource_iota; }, "river crossing: who sets the resource's (and food's) iota: the decision network (decided, the paper's), or 1 always (shown: a bootstrap, ours)"},
       {"river", "gene_range", SimField::Real, 1e-6, 1e6, {}, [](SimConfig& c) -> void* { return &c.river.gene_range; }, "river crossing: every weight stays in [-gene_range, gene_range]"},
       {"river", "gene_sigma", SimField::Real, 0, 1e6, {}, [](SimConfig& c) -> void* { return &c.river.gene_sigma; }, "river crossing: a mutated weight moves by N(0, gene_sigma)"},
       {"motif", "w0", SimField::Triple, -1e6, 1e6, {}, motif_row(0), "river crossing's CTRNN motif: weights into neuron 0 from neurons 0, 1, 2 (eq. 5)"},

@@ -21,7 +21,8 @@ RiverBrain::RiverBrain(const RiverBrainModel& m)
       sm_(m.def.landscape),
       pn_(m.weights.pn_input_hidden, m.weights.pn_hidden_output),
       pg_(m.motif, m.weights.pg_input, m.weights.pg_motor),
-      grid_(sm_.values().size(), river_cell::kGrass) {}
+      grid_(sm_.values().size(), river_cell::kGrass),
+      show_resource_(m.def.resource_iota == ResourceIota::Shown) {}
 
 bool RiverBrain::decide(int cell, bool carrying) {
   // the DN is a function of these two inputs: the same ones, the same decision
@@ -29,10 +30,11 @@ bool RiverBrain::decide(int cell, bool carrying) {
   decided_ = true;
   cell_ = cell;
   carrying_ = carrying;
-  const std::array<int, river_cell::kCount> before = dn_.decision().iota;
-  const Decision& now = dn_.decide(cell, carrying);
-  if (now.iota == before) return false;
-  sm_.shape(grid_, now.iota);
+  std::array<int, river_cell::kCount> iota = dn_.decide(cell, carrying).iota;
+  if (show_resource_) iota[river_cell::kResource] = 1;
+  if (iota == iota_) return false;
+  iota_ = iota;
+  sm_.shape(grid_, iota_);
   return true;
 }
 
@@ -40,7 +42,7 @@ bool RiverBrain::set_grid(std::span<const int> cells) {
   assert(cells.size() == grid_.size());
   if (std::equal(cells.begin(), cells.end(), grid_.begin())) return false;
   std::copy(cells.begin(), cells.end(), grid_.begin());
-  sm_.shape(grid_, dn_.decision().iota);
+  sm_.shape(grid_, iota_);
   return true;
 }
 

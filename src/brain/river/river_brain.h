@@ -22,9 +22,21 @@
 namespace bx {
 
 /// The controller's constants: layer sizes and the shunting model's.
+/// Who sets the resource's iota (config river.resource_iota).
+enum class ResourceIota {
+  Decided,  ///< the decision network, as every other iota (the paper)
+  /// 1 whatever the decision network decides (food, passed as the resource,
+  /// too): the landscape always shows the resource, so a walker cannot
+  /// escape its senses by a flat landscape (no sensor flagged: one constant
+  /// drive). Ours, a bootstrap (docs/rivercrossing.md, "What evolves on one
+  /// machine").
+  Shown,
+};
+
 struct RiverBrainDef {
   RiverShape shape;
   ShuntingDef landscape;
+  ResourceIota resource_iota = ResourceIota::Decided;
   friend bool operator==(const RiverBrainDef&, const RiverBrainDef&) = default;
 };
 
@@ -54,7 +66,9 @@ class RiverBrain {
   /// Runs the DN on the code of the cell the agent stands on (river_cell)
   /// and whether it carries a stone (unless both are the last call's: the
   /// same inputs give the same decision); when the iotas change, recomputes
-  /// the landscape. Returns whether the iotas changed.
+  /// the landscape. Returns whether the iotas changed. (Under
+  /// ResourceIota::Shown the landscape's resource iota is 1 whatever the
+  /// decision says.)
   bool decide(int cell, bool carrying);
   /// The grid: a river_cell code per cell, row-major (cell (i, j) at
   /// j * width + i); the caller passes food as kResource. When it differs
@@ -87,6 +101,10 @@ class RiverBrain {
   PhysicalNetwork pn_;
   PatternGenerator pg_;
   std::vector<int> grid_;
+  // the iotas the landscape was last shaped with: the decision's, or under
+  // ResourceIota::Shown with the resource's 1
+  bool show_resource_;
+  std::array<int, river_cell::kCount> iota_{};
   // the DN's last inputs (decide() runs it again only when they change)
   bool decided_ = false;
   int cell_ = 0;

@@ -124,6 +124,30 @@ TEST(RiverBrain, LandscapeFollowsTheLastGridAndDecision) {
   for (double x : b.landscape().values()) EXPECT_EQ(x, 0);
 }
 
+// river.resource_iota = "shown": the resource's iota is 1 whatever the DN
+// decides, so a DN that decides nothing still leaves it in the landscape;
+// the other iotas stay the DN's.
+TEST(RiverBrain, AShownResourceStaysInTheLandscapeWhateverTheDecision) {
+  std::vector<double> silent = stone_genes();
+  std::fill(silent.begin(), silent.begin() + 44, 0.0);  // every iota and the action 0
+  RiverBrainDef def;
+  def.resource_iota = ResourceIota::Shown;
+  Result<RiverBrainModel> shown = make_river_brain_model(def, some_motif(), silent);
+  ASSERT_TRUE(shown.ok()) << shown.error();
+  RiverBrain b(*shown), paper(model(silent));
+  for (RiverBrain* brain : {&b, &paper}) {
+    brain->set_grid(resource_at(15, 10));
+    brain->decide(river_cell::kGrass, false);
+  }
+  EXPECT_EQ(b.decision(), Decision{});  // the DN decided nothing
+  EXPECT_EQ(b.landscape().at(15, 10), 15);
+  EXPECT_GT(b.landscape().at(5, 10), 0);
+  for (double x : paper.landscape().values()) EXPECT_EQ(x, 0);
+  // the resource moves: the peak moves with it
+  EXPECT_TRUE(b.set_grid(resource_at(3, 4)));
+  EXPECT_EQ(b.landscape().at(3, 4), 15);
+}
+
 TEST(RiverBrain, SensorOnTheSourceReadsOneAndIsFlagged) {
   RiverBrain b(model(stone_genes()));
   b.set_grid(resource_at(15, 10));
