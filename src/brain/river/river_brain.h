@@ -21,7 +21,6 @@
 
 namespace bx {
 
-/// The controller's constants: layer sizes and the shunting model's.
 /// Who sets the resource's iota (config river.resource_iota).
 enum class ResourceIota {
   Decided,  ///< the decision network, as every other iota (the paper)
@@ -33,6 +32,8 @@ enum class ResourceIota {
   Shown,
 };
 
+/// The controller's constants: layer sizes, the shunting model's, and who
+/// sets the resource's iota.
 struct RiverBrainDef {
   RiverShape shape;
   ShuntingDef landscape;
@@ -101,9 +102,9 @@ class RiverBrain {
   PhysicalNetwork pn_;
   PatternGenerator pg_;
   std::vector<int> grid_;
+  bool show_resource_;  // ResourceIota::Shown
   // the iotas the landscape was last shaped with: the decision's, or under
   // ResourceIota::Shown with the resource's 1
-  bool show_resource_;
   std::array<int, river_cell::kCount> iota_{};
   // the DN's last inputs (decide() runs it again only when they change)
   bool decided_ = false;
