@@ -4,7 +4,7 @@
     scripts/steering.py REPLAY...
 
 Each REPLAY is a river evaluation's replay (`bestiary simulate F.json --seed S
---replay R.json`), best one per seed under a random start heading
+--replay R.json`), one per seed, under a random start heading
 (`--set task.start_yaw_jitter=180`). From each: the torso's start heading (its
 first pose's turn about the vertical), the bearing from its start to the
 resource's cell (the replay's grid), and its direction of travel (start to
